@@ -1,0 +1,12 @@
+// Subcommands of the multicpg CLI. Each register_* adds one subcommand whose callback does the
+// work; errors are thrown as BadInput (exit 2) or RuntimeFailure (exit 1) and reported by main.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace multicpg::apps {
+
+void register_gait(CLI::App& app);
+void register_cpg(CLI::App& app);
+
+}  // namespace multicpg::apps

@@ -1,0 +1,39 @@
+// Linear maps from pre-motor signals to motor commands m in [-1, 1] (SPEC §4, reference §4.4),
+// and the constant posture of a disabled leg.
+#pragma once
+
+#include "neural/motor_neurons.h"
+#include "robot/morphology.h"
+
+namespace multicpg::neural {
+
+// Maps [from_lo, from_hi] linearly onto [to_lo, to_hi].
+struct LinearMap {
+  double from_lo, from_hi, to_lo, to_hi;
+  double operator()(double v) const {
+    return (v - from_lo) / (from_hi - from_lo) * (to_hi - to_lo) + to_lo;
+  }
+};
+
+// One leg's commands, m in [-1, 1]: + = forward (TC), elevation (CTr), extension (FTi).
+struct MotorCommands {
+  double tc = 0.0;
+  double ctr = 0.0;
+  double fti = 0.0;
+};
+
+// Maps of one leg (reference §4.4 table).
+struct LegMotorMap {
+  LinearMap tc, ctr, fti;
+  MotorCommands operator()(const MotorNeuronOutputs& pre) const {
+    return {tc(pre.tc), ctr(pre.ctr), fti(pre.fti)};
+  }
+};
+
+// The TC window depends on the robot and the leg design; CTr and FTi windows are shared.
+LegMotorMap leg_motor_map(robot::RobotKind kind, robot::LegType type);
+
+// A disabled leg holds TC 0, CTr 0.7, FTi -0.7 (SPEC §4).
+inline constexpr MotorCommands kDisabledPosture{0.0, 0.7, -0.7};
+
+}  // namespace multicpg::neural

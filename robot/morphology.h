@@ -1,0 +1,51 @@
+// Leg layout of the three robots (SPEC §0): names, sides and positions front to hind.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace multicpg::robot {
+
+enum class RobotKind { hexapod, quadruped, octopod };
+enum class Side { right, left };
+// Which AMOSII leg design a leg uses; decides its TC window and limit (reference §4.4, §6).
+enum class LegType { front, middle, hind };
+// Joints of a leg, in the order used everywhere (SPEC §0).
+enum class Joint { TC, CTr, FTi };
+inline constexpr std::size_t kJointsPerLeg = 3;
+inline constexpr std::array<Joint, kJointsPerLeg> kJoints{Joint::TC, Joint::CTr, Joint::FTi};
+
+struct Leg {
+  std::string name;  // R1..Rn, L1..Ln
+  Side side;
+  int position;  // 0 = front
+  LegType type;
+};
+
+// What a robot's leg layout is. Legs are ordered R1..Rn then L1..Ln; legs[0] = R1 is the master.
+struct Morphology {
+  RobotKind kind;
+  std::string name;
+  int legs_per_side;
+  std::vector<Leg> legs;
+
+  std::size_t size() const { return legs.size(); }
+};
+
+const Morphology& morphology(RobotKind kind);
+
+std::string_view to_string(RobotKind kind);
+std::string_view to_string(Joint joint);
+
+// Parsers for user input; each throws BadInput with one line naming what is wrong.
+RobotKind parse_robot(std::string_view name);
+std::size_t leg_index(const Morphology& morph, std::string_view name);
+// "R1,R3" -> sorted unique indices; empty string -> empty list.
+std::vector<std::size_t> parse_leg_list(const Morphology& morph, std::string_view list);
+// "R1,L2" from indices, in leg order.
+std::string leg_list_name(const Morphology& morph, const std::vector<std::size_t>& legs);
+
+}  // namespace multicpg::robot

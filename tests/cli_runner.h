@@ -1,0 +1,23 @@
+// Runs the real multicpg binary for end-to-end tests.
+#pragma once
+
+#include <string>
+
+namespace multicpg::testing {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+// Runs `multicpg <args>` through the shell (args are shell words) and captures both streams.
+CliResult run_cli(const std::string& args);
+
+// A fresh empty directory under the system temp dir, removed by the caller if wanted.
+std::string make_temp_dir(const std::string& prefix);
+
+// Lines of `text` without the trailing empty line.
+int count_lines(const std::string& text);
+
+}  // namespace multicpg::testing
