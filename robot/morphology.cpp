@@ -19,7 +19,8 @@ Morphology make(RobotKind kind, std::string name, int per_side) {
   Morphology m{kind, std::move(name), per_side, {}};
   for (Side side : {Side::right, Side::left}) {
     for (int pos = 0; pos < per_side; ++pos) {
-      std::string leg_name = (side == Side::right ? "R" : "L") + std::to_string(pos + 1);
+      std::string leg_name(1, side == Side::right ? 'R' : 'L');
+      leg_name += std::to_string(pos + 1);
       m.legs.push_back(Leg{leg_name, side, pos, leg_type(kind, pos, per_side)});
     }
   }
@@ -70,7 +71,10 @@ std::size_t leg_index(const Morphology& morph, std::string_view name) {
     if (morph.legs[i].name == name) return i;
   }
   std::string names;
-  for (const Leg& leg : morph.legs) names += (names.empty() ? "" : " ") + leg.name;
+  for (const Leg& leg : morph.legs) {
+    if (!names.empty()) names += ' ';
+    names += leg.name;
+  }
   throw BadInput("the " + morph.name + " has no leg '" + std::string(name) + "' (legs: " + names +
                  ")");
 }
@@ -93,7 +97,10 @@ std::vector<std::size_t> parse_leg_list(const Morphology& morph, std::string_vie
 
 std::string leg_list_name(const Morphology& morph, const std::vector<std::size_t>& legs) {
   std::string out;
-  for (std::size_t i : legs) out += (out.empty() ? "" : ",") + morph.legs[i].name;
+  for (std::size_t i : legs) {
+    if (!out.empty()) out += ',';
+    out += morph.legs[i].name;
+  }
   return out;
 }
 

@@ -1,0 +1,166 @@
+// multicpg walk: walk a simulated robot with given CPG periods and disabled legs, and report the
+// distance, speed and heading deviation per window (issue 3, SPEC §6-§7).
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "apps/commands.h"
+#include "apps/options.h"
+#include "apps/sim_flags.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "sim/record_csv.h"
+#include "sim/walk.h"
+
+namespace multicpg::apps {
+namespace {
+
+// Default run: three 400-step windows.
+constexpr long kDefaultSteps = 3 * sim::kDefaultWindow;
+
+struct WalkOptions {
+  std::string robot = "hexapod";
+  std::string periods = "4";
+  std::string disable;
+  long disable_at = 0;
+  long settle = 0;
+  long steps = kDefaultSteps;
+  long window = sim::kDefaultWindow;
+  SimFlags sim;
+  std::string csv;
+  bool json = false;
+};
+
+struct Run {
+  const robot::Morphology* morph;
+  sim::WalkSpec spec;
+  double control_dt;
+  double physics_dt;
+};
+
+nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
+  const robot::Morphology& morph = *run.morph;
+  nlohmann::json periods = nlohmann::json::object();
+  for (std::size_t i = 0; i < morph.size(); ++i) periods[morph.legs[i].name] = run.spec.periods[i];
+  nlohmann::json disabled = nlohmann::json::array();
+  for (std::size_t leg : run.spec.disabled) disabled.push_back(morph.legs[leg].name);
+  return {{"robot", morph.name},
+          {"periods", periods},
+          {"disabled", disabled},
+          {"disable_at", run.spec.disable_at},
+          {"settle", run.spec.settle},
+          {"steps", run.spec.steps},
+          {"window", run.spec.window},
+          {"control_dt_s", run.control_dt},
+          {"physics_dt_s", run.physics_dt},
+          {"duration_s", result.duration_s},
+          {"distance_m", result.distance_m},
+          {"forward_m", result.forward_m},
+          {"lateral_m", result.lateral_m},
+          {"speed_m_s", result.speed_m_s},
+          {"window_deviations_deg", result.window_deviations_deg},
+          {"final_yaw_deg", result.final_yaw_deg}};
+}
+
+void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) {
+  const robot::Morphology& morph = *run.morph;
+  const sim::WalkSpec& s = run.spec;
+  out << std::fixed << std::setprecision(3) << morph.name << ": " << s.steps << " steps measured ("
+      << r.duration_s << " s simulated)";
+  if (s.settle > 0) out << " after " << s.settle << " settling steps";
+  out << "; control step " << run.control_dt << " s, physics step " << std::setprecision(6)
+      << run.physics_dt << " s\n";
+  out << "periods: ";
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    out << (i == 0 ? "" : "  ") << morph.legs[i].name << " " << s.periods[i];
+  }
+  out << "\ndisabled: ";
+  if (s.disabled.empty()) {
+    out << "none\n";
+  } else {
+    out << robot::leg_list_name(morph, s.disabled) << " from step " << s.disable_at << "\n";
+  }
+  out << std::setprecision(3) << "distance " << r.distance_m << " m (forward " << r.forward_m
+      << " m, lateral " << r.lateral_m << " m), speed " << std::setprecision(2)
+      << 100.0 * r.speed_m_s << " cm/s\n";
+  out << "yaw deviation per " << s.window << "-step window (deg, + = left turn):\n";
+  if (r.window_deviations_deg.empty()) out << "  (no complete window)\n";
+  for (std::size_t w = 0; w < r.window_deviations_deg.size(); ++w) {
+    const long first = s.settle + static_cast<long>(w) * s.window;
+    out << "  steps " << std::setw(6) << first << "-" << std::left << std::setw(6)
+        << first + s.window << std::right << std::setw(9) << r.window_deviations_deg[w] << "\n";
+  }
+  out << "final yaw " << r.final_yaw_deg << " deg\n";
+}
+
+void run_walk(const WalkOptions& o) {
+  const robot::RobotKind kind = robot::parse_robot(o.robot);
+  const robot::Morphology& morph = robot::morphology(kind);
+  Run run{&morph, {}, 0.0, 0.0};
+  sim::WalkSpec& spec = run.spec;
+  spec.periods = parse_periods(morph, o.periods);
+  spec.disabled = robot::parse_leg_list(morph, o.disable);
+  if (spec.disabled.size() == morph.size()) {
+    throw BadInput("--disable: cannot disable every leg of the " + morph.name);
+  }
+  require_positive(o.steps, "--steps");
+  require_positive(o.window, "--window");
+  if (o.settle < 0) throw BadInput("--settle must not be negative");
+  spec.disable_at = o.disable_at;
+  spec.settle = o.settle;
+  spec.steps = o.steps;
+  spec.window = o.window;
+  spec.record = !o.csv.empty();
+  const sim::SimOptions sim_opts = sim_options(o.sim);
+  std::optional<AtomicFile> csv;
+  if (!o.csv.empty()) csv.emplace(o.csv);
+
+  const sim::SimModel model = sim::make_sim_model(kind, sim_opts);
+  run.control_dt = model.control_dt;
+  run.physics_dt = model.physics_dt;
+  const sim::WalkResult result = sim::walk(model, spec);
+  if (csv) {
+    sim::write_record_csv(csv->stream(), *run.morph, result.record);
+    csv->commit();
+  }
+  if (o.json) {
+    std::cout << to_json(run, result).dump(2) << "\n";
+  } else {
+    print_summary(std::cout, run, result);
+  }
+}
+
+}  // namespace
+
+void register_walk(CLI::App& app) {
+  auto opts = std::make_shared<WalkOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "walk", "walk a simulated robot; print distance, speed and yaw deviation per window");
+  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--periods", opts->periods,
+                  "CPG period of every leg (1, 4, 5, 6, 8, 9), or per leg: R1=5,R2=4,... "
+                  "(unnamed legs 4)")
+      ->capture_default_str();
+  cmd->add_option("--disable", opts->disable, "legs that fail, e.g. R1,R3");
+  cmd->add_option("--disable-at", opts->disable_at,
+                  "controller step (from 0, settling included) at which they fail")
+      ->capture_default_str();
+  cmd->add_option("--settle", opts->settle,
+                  "steps walked before measuring (delay lines fill after 126 steps for the "
+                  "hexapod; p = 4 CPGs lock after about 740)")
+      ->capture_default_str();
+  cmd->add_option("--steps", opts->steps, "controller steps measured")->capture_default_str();
+  cmd->add_option("--window", opts->window, "steps per yaw-deviation window (SPEC §6)")
+      ->capture_default_str();
+  add_sim_flags(*cmd, opts->sim);
+  cmd->add_option("--csv", opts->csv,
+                  "write every step: trunk position and yaw, each joint's command, target and "
+                  "actual angle, each foot's contact");
+  cmd->add_flag("--json", opts->json, "print one JSON object instead of the summary");
+  cmd->callback([opts] { run_walk(*opts); });
+}
+
+}  // namespace multicpg::apps

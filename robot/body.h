@@ -1,0 +1,93 @@
+// The physical description of each robot (SPEC §7, reference §6): trunk boxes, leg roots,
+// segment capsules, masses, servos, feet and materials. One description per morphology; the MJCF
+// (robot/mjcf.h) and the simulation (sim/) are made from it.
+//
+// Frame: x forward, y left, z up; origin at the trunk centre of the hexapod (reference §6.1).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "robot/morphology.h"
+
+namespace multicpg::robot {
+
+// A box of the trunk. trunk[0] is the root body (free joint); trunk[1], if any, is the front
+// box hinged to it by the backbone.
+struct TrunkBox {
+  std::string name;
+  double x_centre;  // m, in the trunk frame
+  double length;    // m, along x
+  double mass;      // kg, without the shoulders fixed to it
+};
+
+// An lpzrobots capsule: radius and cylinder length (caps not included), and its mass.
+struct Capsule {
+  double radius;  // m
+  double length;  // m
+  double mass;    // kg
+};
+
+// The segments of one leg, trunk outward (reference §6.1 "Segments"). The shoulder is rigidly
+// fixed to the trunk; the foot slides along the tibia on a spring.
+struct LegSegments {
+  Capsule shoulder, coxa, femur, tibia, foot;
+};
+
+// A compliant velocity servo (reference §6.1 "Servos"): commanded velocity
+// gain * (target - angle), capped at max_velocity; torque capped at
+// power * tanh(|2 error / (max - min)| + damp).
+struct ServoSpec {
+  double max_velocity;  // rad/s
+  double gain;          // 1/s
+  double power;         // N m
+  double damp;          // added to the tanh argument
+  double armature;      // kg m^2, rotor inertia reflected through the gearbox (docs/robots.md)
+  // N m s/rad: the velocity loop's torque per unit velocity error, power / max_velocity (a DC
+  // motor's stall torque over its no-load speed; sim/servo.h, docs/robots.md).
+  double loop_gain;
+};
+
+// The sprung foot (reference §6.1 "Foot spring"): a slider along the tibia, pushed outward
+// against its stop by a preloaded spring.
+struct FootSpring {
+  double stiffness;       // N/m
+  double damping;         // N s/m
+  double travel;          // m, from the outer stop inward
+  double preload_length;  // m, spring compression at the outer stop (force = stiffness * this)
+};
+
+// Where a leg hangs on the trunk.
+struct LegMount {
+  std::size_t trunk_part;  // index into RobotBody::trunk
+  double x;                // m, leg root in the trunk frame
+  double side;             // +1 left (leg points +y), -1 right
+};
+
+struct RobotBody {
+  Morphology morphology;
+  double trunk_width;   // m
+  double trunk_height;  // m
+  std::vector<TrunkBox> trunk;
+  std::size_t yaw_part;   // trunk box carrying the orientation (yaw) sensor: the front one
+  double backbone_x;      // m, hinge between trunk[0] and trunk[1] (only with two boxes)
+  double backbone_limit;  // rad, +- range of the backbone hinge
+  ServoSpec backbone_servo;
+  double leg_root_y;             // m, |y| of every leg root (the trunk side)
+  double leg_root_z;             // m, z of every leg root (the trunk top)
+  std::vector<LegMount> mounts;  // one per leg, in morphology order
+  LegSegments segments;
+  ServoSpec tc_servo, ctr_servo, fti_servo;
+  FootSpring foot;
+  double contact_sensor_radius;  // m, foot contact sensor sphere
+  double friction;               // Coulomb friction of every robot-ground pair
+};
+
+// The description of a robot: the hexapod AMOSII v2 (reference §6.1), the quadruped AmosFour
+// (§6.2) or the octopod (the hexapod's leg design, four legs a side).
+const RobotBody& robot_body(RobotKind kind);
+
+// Sum of every part's mass, kg.
+double total_mass(const RobotBody& body);
+
+}  // namespace multicpg::robot

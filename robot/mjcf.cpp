@@ -1,0 +1,271 @@
+#include "robot/mjcf.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "robot/joint_map.h"
+
+namespace multicpg::robot {
+namespace {
+
+// --- World and contact (reference §6.1 "World", "Materials"; docs/robots.md) ---
+// Semi-implicit Euler, MuJoCo's default (SPEC §7): converged at the default physics step
+// (docs/robots.md); contacts keep MuJoCo's default softness and friction impedance.
+constexpr const char* kIntegrator = "Euler";
+// Elliptic friction cones: with mu = 2.4 the pyramidal approximation does not hold the feet (the
+// hexapod does not advance; docs/robots.md).
+constexpr const char* kCone = "elliptic";
+// Torsional and rolling friction: MuJoCo's defaults (they only act with condim > 3, unused).
+constexpr double kTorsionalFriction = 0.005;
+constexpr double kRollingFriction = 0.0001;
+// Collision classes: the world (ground, walls) collides with the robot, the robot's parts not
+// with each other (their TC windows keep neighbouring legs apart; docs/robots.md).
+constexpr int kWorldClass = 1;
+constexpr int kRobotClass = 2;
+// Start clearance between the lowest foot and the ground, so the robot settles onto its feet.
+constexpr double kStartClearance = 0.001;  // m
+// Corridor walls (paper §5): tall and thick enough to stop the trunk and legs.
+constexpr double kWallHeight = 0.3;      // m
+constexpr double kWallThickness = 0.02;  // m
+
+struct Vec3 {
+  double x, y, z;
+};
+
+// Distance from the FTi joint to the centre of the foot capsule at its outer stop: the tibia
+// cylinder, both tibia caps and the spring travel, less the foot radius (lpzrobots AmosII).
+double foot_centre_distance(const RobotBody& body) {
+  const LegSegments& s = body.segments;
+  return s.tibia.length + 2.0 * s.tibia.radius + body.foot.travel - s.foot.radius;
+}
+
+class Writer {
+ public:
+  void line(int depth, const std::string& text) {
+    out_ << std::string(2 * static_cast<std::size_t>(depth), ' ') << text << "\n";
+  }
+
+  std::string str() const { return out_.str(); }
+
+ private:
+  std::ostringstream out_;
+};
+
+std::string num(double v) {
+  std::ostringstream s;
+  s << std::setprecision(12) << v;
+  return s.str();
+}
+
+std::string vec(const Vec3& v) {
+  return num(v.x) + " " + num(v.y) + " " + num(v.z);
+}
+
+std::string capsule(const std::string& name, const Vec3& from, const Vec3& to, const Capsule& c) {
+  return "<geom name=\"" + name + "\" type=\"capsule\" fromto=\"" + vec(from) + " " + vec(to) +
+         "\" size=\"" + num(c.radius) + "\" mass=\"" + num(c.mass) + "\"/>";
+}
+
+std::string hinge(const std::string& name, const Vec3& axis, const AngleRange& range,
+                  const ServoSpec& servo) {
+  return "<joint name=\"" + name + "\" type=\"hinge\" axis=\"" + vec(axis) + "\" range=\"" +
+         num(range.lo) + " " + num(range.hi) + "\" armature=\"" + num(servo.armature) + "\"/>";
+}
+
+// The joints of the MJCF in document order, for the keyframe.
+struct Emitted {
+  std::vector<double> qpos;
+  std::vector<std::pair<std::string, const ServoSpec*>> servos;  // actuated joints
+  std::vector<std::string> feet;
+};
+
+// One leg, from its shoulder (a geom of the trunk body) to its foot. `origin_x` is where the
+// frame of the trunk part it hangs on sits in the trunk frame.
+void write_leg(Writer& w, int depth, const RobotBody& body, std::size_t index, double origin_x,
+               const LegAngles& start, Emitted& emitted) {
+  const Leg& leg = body.morphology.legs[index];
+  const LegMount& mount = body.mounts[index];
+  const LegSegments& seg = body.segments;
+  const double s = mount.side;  // the leg points along s * y
+  const std::string& n = leg.name;
+  const Vec3 root{mount.x - origin_x, s * body.leg_root_y, body.leg_root_z};
+  const Vec3 tc{root.x, root.y + s * seg.shoulder.length, root.z};
+
+  // Axes chosen so positive angles are forward (TC), elevation (CTr), extension (FTi) on both
+  // sides (joint_map.h): for a right leg (s = -1) forward is +z rotation, up is -x rotation.
+  const Vec3 tc_axis{0.0, 0.0, -s};
+  const Vec3 lift_axis{s, 0.0, 0.0};
+
+  w.line(depth, capsule(n + "_shoulder", root, tc, seg.shoulder));
+  w.line(depth, "<body name=\"" + n + "_coxa\" pos=\"" + vec(tc) + "\">");
+  w.line(depth + 1, hinge(n + "_TC", tc_axis, joint_limits(leg.type, Joint::TC), body.tc_servo));
+  w.line(depth + 1, capsule(n + "_coxa", {0, 0, 0}, {0, s * seg.coxa.length, 0}, seg.coxa));
+  w.line(depth + 1, "<body name=\"" + n + "_femur\" pos=\"0 " + num(s * seg.coxa.length) + " 0\">");
+  w.line(depth + 2,
+         hinge(n + "_CTr", lift_axis, joint_limits(leg.type, Joint::CTr), body.ctr_servo));
+  w.line(depth + 2, capsule(n + "_femur", {0, 0, 0}, {0, s * seg.femur.length, 0}, seg.femur));
+  w.line(depth + 2,
+         "<body name=\"" + n + "_tibia\" pos=\"0 " + num(s * seg.femur.length) + " 0\">");
+  w.line(depth + 3,
+         hinge(n + "_FTi", lift_axis, joint_limits(leg.type, Joint::FTi), body.fti_servo));
+  w.line(depth + 3, capsule(n + "_tibia", {0, 0, 0}, {0, s * seg.tibia.length, 0}, seg.tibia));
+
+  // Foot: slides inward along the tibia (positive = compressed), pushed out against its stop
+  // by a spring preloaded by preload_length (reference §6.1 "Foot spring").
+  const double half = seg.foot.length / 2.0;
+  w.line(depth + 3,
+         "<body name=\"" + n + "_foot\" pos=\"0 " + num(s * foot_centre_distance(body)) + " 0\">");
+  w.line(depth + 4, "<joint name=\"" + n + "_foot_spring\" type=\"slide\" axis=\"0 " + num(-s) +
+                        " 0\" range=\"0 " + num(body.foot.travel) + "\" stiffness=\"" +
+                        num(body.foot.stiffness) + "\" springref=\"" +
+                        num(-body.foot.preload_length) + "\" damping=\"" + num(body.foot.damping) +
+                        "\"/>");
+  w.line(depth + 4, capsule(n + "_foot", {0, -s * half, 0}, {0, s * half, 0}, seg.foot));
+  // Contact sensor sphere around the foot's outer cap (reference §6.1 "Foot contact sensor").
+  w.line(depth + 4, "<site name=\"" + n + "_foot\" type=\"sphere\" pos=\"0 " + num(s * half) +
+                        " 0\" size=\"" + num(body.contact_sensor_radius) + "\"/>");
+  w.line(depth + 3, "</body>");
+  w.line(depth + 2, "</body>");
+  w.line(depth + 1, "</body>");
+  w.line(depth, "</body>");
+
+  emitted.qpos.insert(emitted.qpos.end(), {start[0], start[1], start[2], 0.0});
+  emitted.servos.emplace_back(n + "_TC", &body.tc_servo);
+  emitted.servos.emplace_back(n + "_CTr", &body.ctr_servo);
+  emitted.servos.emplace_back(n + "_FTi", &body.fti_servo);
+  emitted.feet.push_back(n + "_foot");
+}
+
+void write_legs_of(Writer& w, int depth, const RobotBody& body, std::size_t part,
+                   const MjcfOptions& options, Emitted& emitted) {
+  const double origin_x = part == 0 ? 0.0 : body.backbone_x;
+  for (std::size_t i = 0; i < body.mounts.size(); ++i) {
+    if (body.mounts[i].trunk_part == part) {
+      write_leg(w, depth, body, i, origin_x, options.start_pose.at(i), emitted);
+    }
+  }
+}
+
+std::string trunk_box(const RobotBody& body, const TrunkBox& box, double origin_x) {
+  return "<geom name=\"" + box.name + "\" type=\"box\" pos=\"" + num(box.x_centre - origin_x) +
+         " 0 0\" size=\"" + num(box.length / 2) + " " + num(body.trunk_width / 2) + " " +
+         num(body.trunk_height / 2) + "\" mass=\"" + num(box.mass) + "\"/>";
+}
+
+void write_walls(Writer& w, const Scene& scene) {
+  const double half_len = scene.tunnel_length / 2.0;
+  for (double side : {1.0, -1.0}) {
+    const Vec3 pos{half_len, side * (scene.tunnel_width + kWallThickness) / 2.0, kWallHeight / 2.0};
+    w.line(2, "<geom name=\"" + std::string(side > 0 ? "wall_left" : "wall_right") +
+                  "\" class=\"world\" type=\"box\" pos=\"" + vec(pos) + "\" size=\"" +
+                  num(half_len) + " " + num(kWallThickness / 2.0) + " " + num(kWallHeight / 2.0) +
+                  "\" material=\"wall\"/>");
+  }
+}
+
+}  // namespace
+
+double stand_height(const RobotBody& body, const std::vector<LegAngles>& pose) {
+  const LegSegments& s = body.segments;
+  const double tibia_reach = foot_centre_distance(body) + s.foot.length / 2.0;
+  double deepest = 0.0;
+  for (const LegAngles& a : pose) {
+    const double ctr = a[1];
+    const double fti = a[2];
+    // Depth of the foot's outer cap below the CTr joint, plus its radius.
+    const double depth =
+        -(s.femur.length * std::sin(ctr) + tibia_reach * std::sin(ctr + fti)) + s.foot.radius;
+    deepest = std::max(deepest, depth);
+  }
+  return deepest - body.leg_root_z + kStartClearance;
+}
+
+std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
+  const Morphology& morph = body.morphology;
+  Writer w;
+  Emitted emitted;
+  w.line(0, "<mujoco model=\"multicpg-" + morph.name + "\">");
+  w.line(1, "<!-- Generated by multicpg from robot/body.cpp (SPEC §7, reference §6). -->");
+  w.line(1, "<compiler angle=\"radian\"/>");
+  w.line(1, "<option timestep=\"" + num(options.physics_dt) + "\" integrator=\"" + kIntegrator +
+                "\" cone=\"" + kCone + "\"/>");
+  w.line(1, "<asset>");
+  w.line(2,
+         "<texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\".35 .4 .45\" "
+         "rgb2=\".25 .3 .35\" width=\"256\" height=\"256\"/>");
+  w.line(2, "<material name=\"grid\" texture=\"grid\" texrepeat=\"10 10\"/>");
+  w.line(2, "<material name=\"wall\" rgba=\".6 .55 .5 .5\"/>");
+  w.line(1, "</asset>");
+  w.line(1, "<default>");
+  const std::string friction =
+      num(body.friction) + " " + num(kTorsionalFriction) + " " + num(kRollingFriction);
+  w.line(2, "<geom contype=\"" + std::to_string(kRobotClass) + "\" conaffinity=\"" +
+                std::to_string(kWorldClass) + "\" friction=\"" + friction + "\"/>");
+  w.line(2, "<joint limited=\"true\"/>");
+  w.line(2, "<default class=\"world\">");
+  w.line(3, "<geom contype=\"" + std::to_string(kWorldClass) + "\" conaffinity=\"" +
+                std::to_string(kRobotClass) + "\"/>");
+  w.line(2, "</default>");
+  w.line(1, "</default>");
+
+  w.line(1, "<worldbody>");
+  w.line(2, "<light name=\"sun\" pos=\"0 0 3\" dir=\"0 0 -1\" directional=\"true\"/>");
+  w.line(2,
+         "<geom name=\"ground\" class=\"world\" type=\"plane\" size=\"0 0 1\" "
+         "material=\"grid\"/>");
+  if (options.scene.tunnel) write_walls(w, options.scene);
+
+  const double z0 = stand_height(body, options.start_pose);
+  emitted.qpos = {0.0, 0.0, z0, 1.0, 0.0, 0.0, 0.0};
+  w.line(2, "<body name=\"" + body.trunk[0].name + "\" pos=\"0 0 " + num(z0) + "\">");
+  w.line(3, "<freejoint name=\"root\"/>");
+  w.line(3, trunk_box(body, body.trunk[0], 0.0));
+  write_legs_of(w, 3, body, 0, options, emitted);
+  if (body.trunk.size() > 1) {
+    const TrunkBox& front = body.trunk[1];
+    w.line(3, "<body name=\"" + front.name + "\" pos=\"" + num(body.backbone_x) + " 0 0\">");
+    // Backbone: pitch hinge held at 0 by its servo (reference §6.1 "Trunk").
+    w.line(4, hinge("backbone", {0, 1, 0}, {-body.backbone_limit, body.backbone_limit},
+                    body.backbone_servo));
+    emitted.qpos.push_back(0.0);
+    emitted.servos.emplace_back("backbone", &body.backbone_servo);
+    w.line(4, trunk_box(body, front, body.backbone_x));
+    write_legs_of(w, 4, body, 1, options, emitted);
+    w.line(3, "</body>");
+  }
+  w.line(2, "</body>");
+  w.line(1, "</worldbody>");
+
+  // One torque actuator per servo; sim/servo.h computes its torque every physics step, never
+  // more than the servo's power.
+  w.line(1, "<actuator>");
+  for (const auto& [joint, servo] : emitted.servos) {
+    w.line(2, "<motor name=\"" + joint + "\" joint=\"" + joint +
+                  "\" ctrllimited=\"true\" ctrlrange=\"" + num(-servo->power) + " " +
+                  num(servo->power) + "\"/>");
+  }
+  w.line(1, "</actuator>");
+
+  w.line(1, "<sensor>");
+  for (const std::string& foot : emitted.feet) {
+    w.line(2, "<touch name=\"" + foot + "\" site=\"" + foot + "\"/>");
+  }
+  w.line(2, "<framequat name=\"yaw\" objtype=\"xbody\" objname=\"" +
+                body.trunk[body.yaw_part].name + "\"/>");
+  w.line(1, "</sensor>");
+
+  std::string qpos;
+  for (double q : emitted.qpos) {
+    if (!qpos.empty()) qpos += ' ';
+    qpos += num(q);
+  }
+  w.line(1, "<keyframe>");
+  w.line(2, "<key name=\"start\" qpos=\"" + qpos + "\"/>");
+  w.line(1, "</keyframe>");
+  w.line(0, "</mujoco>");
+  return w.str();
+}
+
+}  // namespace multicpg::robot

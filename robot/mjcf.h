@@ -1,0 +1,44 @@
+// MJCF text of a robot on flat ground (SPEC §7), made from its RobotBody. The file is plain
+// MuJoCo 2.2 MJCF: it loads in MuJoCo's own tools (mujoco-testxml, mujoco-simulate).
+//
+// Names, so that tools can find a leg's parts: bodies and geoms "trunk", "front_trunk",
+// "<leg>_coxa", "<leg>_femur", "<leg>_tibia", "<leg>_foot" (geoms also "<leg>_shoulder");
+// joints "root", "backbone", "<leg>_TC", "<leg>_CTr", "<leg>_FTi", "<leg>_foot_spring";
+// torque actuators "<joint>" (the servo law is sim/servo.h); sites and touch sensors
+// "<leg>_foot"; orientation sensor "yaw" on the front trunk; keyframe "start".
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "robot/body.h"
+
+namespace multicpg::robot {
+
+// The world around the robot. The corridor of paper §5 (SPEC §8) is two walls parallel to x,
+// from x = 0 (the robot starts at its entrance) to x = tunnel_length, tunnel_width apart.
+struct Scene {
+  bool tunnel = false;
+  double tunnel_length = 3.0;  // m
+  double tunnel_width = 1.2;   // m
+};
+
+// TC, CTr, FTi angles of one leg (rad, joint_map.h convention).
+using LegAngles = std::array<double, kJointsPerLeg>;
+
+struct MjcfOptions {
+  double physics_dt = 0.005;  // s, MuJoCo timestep
+  Scene scene;
+  std::vector<LegAngles> start_pose;  // one per leg: the "start" keyframe's joint angles
+};
+
+// Height of the trunk origin that puts the lowest foot of `pose` on the ground (m). The TC axis
+// is vertical and the coxa horizontal, so only CTr and FTi decide how far a foot reaches down.
+double stand_height(const RobotBody& body, const std::vector<LegAngles>& pose);
+
+// The MJCF document. The "start" keyframe stands the robot at the origin facing +x in
+// options.start_pose, feet on the ground.
+std::string make_mjcf(const RobotBody& body, const MjcfOptions& options);
+
+}  // namespace multicpg::robot

@@ -1,0 +1,308 @@
+#include "sim/sim.h"
+
+#include <cmath>
+#include <cstring>
+#include <mutex>
+#include <numbers>
+#include <sstream>
+
+#include "common/errors.h"
+#include "robot/joint_map.h"
+
+namespace multicpg::sim {
+namespace {
+
+using robot::Joint;
+using robot::LegAngles;
+
+// MuJoCo reports instability through mjData's warning counters, which sim_step checks; its
+// default handler would also print to stdout and append to MUJOCO_LOG.TXT. Keep the last message
+// of this thread for the error instead.
+thread_local std::string last_warning;
+
+void keep_warning(const char* message) {
+  last_warning = message;
+}
+
+void install_warning_handler() {
+  static std::once_flag once;
+  std::call_once(once, [] { mju_user_warning = keep_warning; });
+}
+
+const char* warning_name(int warning) {
+  switch (warning) {
+    case mjWARN_INERTIA:
+      return "singular inertia";
+    case mjWARN_CONTACTFULL:
+      return "contact buffer full";
+    case mjWARN_CNSTRFULL:
+      return "constraint buffer full";
+    case mjWARN_VGEOMFULL:
+      return "visual geom buffer full";
+    case mjWARN_BADQPOS:
+      return "bad qpos";
+    case mjWARN_BADQVEL:
+      return "bad qvel";
+    case mjWARN_BADQACC:
+      return "bad qacc";
+    case mjWARN_BADCTRL:
+      return "bad ctrl";
+    default:
+      break;
+  }
+  return "warning";
+}
+
+// The start pose: every leg in mid-stance (SPEC §4 windows): TC and FTi at the centre of their
+// windows (pre-motor signal 0), CTr fully depressed (-1, the stance value of reference §4.2).
+std::vector<LegAngles> start_pose(const neural::ControllerModel& controller) {
+  std::vector<LegAngles> pose;
+  const robot::Morphology& morph = controller.morphology;
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    const neural::MotorCommands m = controller.legs[i].map({0.0, -1.0, 0.0});
+    const robot::LegType type = morph.legs[i].type;
+    pose.push_back({robot::joint_angle(type, Joint::TC, m.tc),
+                    robot::joint_angle(type, Joint::CTr, m.ctr),
+                    robot::joint_angle(type, Joint::FTi, m.fti)});
+  }
+  return pose;
+}
+
+robot::MjcfOptions mjcf_options(const SimOptions& options, double physics_dt,
+                                const std::vector<LegAngles>& pose) {
+  robot::MjcfOptions o;
+  o.physics_dt = physics_dt;
+  o.scene = options.scene;
+  o.start_pose = pose;
+  return o;
+}
+
+double resolved_physics_dt(const SimOptions& options) {
+  return options.physics_dt == 0.0 ? default_physics_dt(options.control_dt) : options.physics_dt;
+}
+
+// Compiles MJCF text through MuJoCo's virtual file system. The XML parser is not documented as
+// thread-safe, so loads are serialised.
+mjModel* compile(const std::string& xml) {
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  constexpr const char* kFile = "multicpg.xml";
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0) {
+    throw RuntimeFailure("MuJoCo: cannot make the in-memory model file");
+  }
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), kFile)], xml.data(), xml.size());
+  std::array<char, 1000> error{};
+  mjModel* m = mj_loadXML(kFile, vfs.get(), error.data(), static_cast<int>(error.size()));
+  mj_deleteVFS(vfs.get());
+  if (m == nullptr) throw RuntimeFailure(std::string("MuJoCo rejected the model: ") + error.data());
+  return m;
+}
+
+int id_of(const mjModel* m, mjtObj type, const std::string& name) {
+  const int id = mj_name2id(m, type, name.c_str());
+  if (id < 0) throw RuntimeFailure("MuJoCo model has no '" + name + "'");
+  return id;
+}
+
+JointSlot joint_slot(const mjModel* m, const std::string& joint, robot::ServoSpec spec, double gain,
+                     const robot::AngleRange& range) {
+  const int j = id_of(m, mjOBJ_JOINT, joint);
+  JointSlot slot;
+  slot.qpos = m->jnt_qposadr[j];
+  slot.dof = m->jnt_dofadr[j];
+  slot.actuator = id_of(m, mjOBJ_ACTUATOR, joint);
+  spec.gain = gain;
+  slot.servo = {spec, range.hi - range.lo};
+  return slot;
+}
+
+void drive(const SimModel& model, mjData* d, const JointSlot& slot, double target) {
+  d->ctrl[slot.actuator] =
+      servo_torque(slot.servo, target, d->qpos[slot.qpos], d->qvel[slot.dof], model.physics_dt);
+}
+
+[[noreturn]] void unstable(const SimState& state, double time, const std::string& why) {
+  std::ostringstream msg;
+  msg << "physics became unstable at step " << state.step << " (t = " << time << " s): " << why;
+  throw RuntimeFailure(msg.str());
+}
+
+void check_physics(const SimModel& model, const SimState& state, double previous_time) {
+  const mjModel* m = model.mj.get();
+  const mjData* d = state.data.get();
+  for (int w = 0; w < mjNWARNING; ++w) {
+    if (d->warning[w].number != state.warnings[w]) {
+      unstable(state, previous_time,
+               std::string("MuJoCo warning '") + warning_name(w) + "': " + last_warning);
+    }
+  }
+  // MuJoCo resets the state (time back to 0) when it meets a bad number.
+  if (!(d->time > previous_time)) unstable(state, previous_time, "MuJoCo reset the simulation");
+  for (int i = 0; i < m->nq; ++i) {
+    if (!std::isfinite(d->qpos[i])) {
+      unstable(state, previous_time, "qpos[" + std::to_string(i) + "] not finite");
+    }
+  }
+  for (int i = 0; i < m->nv; ++i) {
+    if (!std::isfinite(d->qvel[i])) {
+      unstable(state, previous_time, "qvel[" + std::to_string(i) + "] not finite");
+    }
+  }
+}
+
+}  // namespace
+
+double default_physics_dt(double control_dt) {
+  if (!(control_dt > 0.0)) throw BadInput("--control-dt must be positive");
+  // Tolerance so that 0.037 / 0.004625 = 8 exactly is not rounded up to 9.
+  const double n = std::ceil(control_dt / kMaxDefaultPhysicsDt - kStepRatioTolerance);
+  return control_dt / n;
+}
+
+int physics_substeps(double control_dt, double physics_dt) {
+  if (!(control_dt > 0.0)) throw BadInput("--control-dt must be positive");
+  if (!(physics_dt > 0.0)) throw BadInput("--physics-dt must be positive");
+  const double ratio = control_dt / physics_dt;
+  const double whole = std::round(ratio);
+  if (whole < 1.0 || std::abs(ratio - whole) > kStepRatioTolerance * ratio) {
+    std::ostringstream msg;
+    msg << "--control-dt " << control_dt << " is not a whole multiple of --physics-dt "
+        << physics_dt << " (ratio " << ratio << ")";
+    throw BadInput(msg.str());
+  }
+  return static_cast<int>(whole);
+}
+
+std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
+  const double physics_dt = resolved_physics_dt(options);
+  physics_substeps(options.control_dt, physics_dt);
+  const neural::ControllerModel controller =
+      neural::make_controller_model(kind, options.controller);
+  return robot::make_mjcf(robot::robot_body(kind),
+                          mjcf_options(options, physics_dt, start_pose(controller)));
+}
+
+SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
+  install_warning_handler();
+  SimModel model{kind,
+                 &robot::robot_body(kind),
+                 neural::make_controller_model(kind, options.controller),
+                 {},
+                 options.scene,
+                 {},
+                 nullptr,
+                 options.control_dt,
+                 resolved_physics_dt(options),
+                 0,
+                 {},
+                 {}};
+  model.substeps = physics_substeps(model.control_dt, model.physics_dt);
+  if (options.servo_gain < 0.0) throw BadInput("--servo-gain must not be negative");
+  model.start_pose = start_pose(model.controller);
+  model.xml =
+      robot::make_mjcf(*model.body, mjcf_options(options, model.physics_dt, model.start_pose));
+  model.mj.reset(compile(model.xml));
+  const mjModel* m = model.mj.get();
+
+  const robot::RobotBody& body = *model.body;
+  const auto gain = [&](const robot::ServoSpec& spec) {
+    return options.servo_gain > 0.0 ? options.servo_gain
+                                    : spec.gain * kReferenceControlDt / model.control_dt;
+  };
+  for (const robot::Leg& leg : body.morphology.legs) {
+    LegSlots slots{leg.type, {}, -1};
+    const std::array<const robot::ServoSpec*, robot::kJointsPerLeg> specs{
+        &body.tc_servo, &body.ctr_servo, &body.fti_servo};
+    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
+      const Joint joint = robot::kJoints[j];
+      slots.joints[j] =
+          joint_slot(m, leg.name + "_" + std::string(robot::to_string(joint)), *specs[j],
+                     gain(*specs[j]), robot::joint_limits(leg.type, joint));
+    }
+    slots.touch = m->sensor_adr[id_of(m, mjOBJ_SENSOR, leg.name + "_foot")];
+    model.legs.push_back(slots);
+  }
+  if (body.trunk.size() > 1) {
+    model.backbone.push_back(joint_slot(m, "backbone", body.backbone_servo,
+                                        gain(body.backbone_servo),
+                                        {-body.backbone_limit, body.backbone_limit}));
+  }
+  model.root_qpos = m->jnt_qposadr[id_of(m, mjOBJ_JOINT, "root")];
+  model.yaw_sensor = m->sensor_adr[id_of(m, mjOBJ_SENSOR, "yaw")];
+  model.start_key = id_of(m, mjOBJ_KEY, "start");
+  return model;
+}
+
+SimState make_sim_state(const SimModel& model, int period) {
+  const mjModel* m = model.mj.get();
+  SimState state;
+  state.data.reset(mj_makeData(m));
+  if (!state.data) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
+  mj_resetDataKeyframe(m, state.data.get(), model.start_key);
+  mj_forward(m, state.data.get());  // sensors and contacts of the start pose
+  for (int w = 0; w < mjNWARNING; ++w) state.warnings[w] = state.data->warning[w].number;
+  state.controller = neural::make_controller_state(model.controller, period);
+  state.targets = model.start_pose;
+  return state;
+}
+
+void sim_step(const SimModel& model, SimState& state) {
+  neural::controller_step(model.controller, state.controller);
+  for (std::size_t i = 0; i < model.legs.size(); ++i) {
+    const neural::MotorCommands& c = state.controller.legs[i].command;
+    const robot::LegType type = model.legs[i].type;
+    state.targets[i] = {robot::joint_angle(type, Joint::TC, c.tc),
+                        robot::joint_angle(type, Joint::CTr, c.ctr),
+                        robot::joint_angle(type, Joint::FTi, c.fti)};
+  }
+  const mjModel* m = model.mj.get();
+  mjData* d = state.data.get();
+  for (int s = 0; s < model.substeps; ++s) {
+    for (std::size_t i = 0; i < model.legs.size(); ++i) {
+      for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
+        drive(model, d, model.legs[i].joints[j], state.targets[i][j]);
+      }
+    }
+    for (const JointSlot& slot : model.backbone) drive(model, d, slot, 0.0);  // held at 0
+    const double previous_time = d->time;
+    mj_step(m, d);
+    check_physics(model, state, previous_time);
+  }
+  ++state.step;
+}
+
+Position trunk_position(const SimModel& model, const SimState& state) {
+  const double* q = state.data->qpos + model.root_qpos;
+  return {q[0], q[1], q[2]};
+}
+
+double trunk_yaw_deg(const SimModel& model, const SimState& state) {
+  // Yaw of the front trunk's frame: heading of its x axis in the ground plane.
+  const double* q = state.data->sensordata + model.yaw_sensor;  // w x y z
+  const double yaw =
+      std::atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
+  return wrap_degrees(yaw * 180.0 / std::numbers::pi);
+}
+
+double joint_angle(const SimModel& model, const SimState& state, std::size_t leg, Joint joint) {
+  return state.data->qpos[model.legs[leg].joints[static_cast<std::size_t>(joint)].qpos];
+}
+
+double foot_force(const SimModel& model, const SimState& state, std::size_t leg) {
+  return state.data->sensordata[model.legs[leg].touch];
+}
+
+bool foot_contact(const SimModel& model, const SimState& state, std::size_t leg) {
+  return foot_force(model, state, leg) > kContactThresholdN;
+}
+
+double wrap_degrees(double deg) {
+  double w = std::fmod(deg, 360.0);
+  if (w <= -180.0) w += 360.0;
+  if (w > 180.0) w -= 360.0;
+  return w;
+}
+
+}  // namespace multicpg::sim

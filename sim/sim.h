@@ -1,0 +1,133 @@
+// The simulated robot: a MuJoCo model driven by the neural controller (SPEC §7, issue 3).
+//
+// SimModel is what the simulation is (the mjModel, index tables, time steps, the controller's
+// model): immutable after make_sim_model and shareable read-only by any number of threads.
+// SimState is what one run is doing (mjData, controller state, step counter); each thread owns
+// its own. Same model, same inputs -> bit-identical trajectories.
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "neural/controller.h"
+#include "robot/body.h"
+#include "robot/mjcf.h"
+#include "sim/servo.h"
+
+namespace multicpg::sim {
+
+// One controller step of simulated time: 0.037 s, the paper's 27 Hz (SPEC §0).
+inline constexpr double kDefaultControlDt = 0.037;
+// Largest default physics step (SPEC §7).
+inline constexpr double kMaxDefaultPhysicsDt = 0.005;
+// How close control_dt / physics_dt must be to a whole number (relative).
+inline constexpr double kStepRatioTolerance = 1e-6;
+// A foot touches the ground when its touch sensor reads more than this normal force.
+inline constexpr double kContactThresholdN = 0.5;
+// The controller step of the reference simulation (reference §7), at which its servo gain
+// K = maxVel / 2 was set.
+inline constexpr double kReferenceControlDt = 0.1;
+
+// The largest physics step <= kMaxDefaultPhysicsDt that divides control_dt exactly
+// (0.037 s -> 0.037 / 8 = 0.004625 s).
+double default_physics_dt(double control_dt);
+
+// Physics steps per controller step. Throws BadInput unless both steps are positive and
+// control_dt / physics_dt is a whole number within kStepRatioTolerance.
+int physics_substeps(double control_dt, double physics_dt);
+
+struct SimOptions {
+  double control_dt = kDefaultControlDt;  // s
+  double physics_dt = 0.0;                // s; 0 = default_physics_dt(control_dt)
+  // Servo gain K (1/s). 0 = the reference's K scaled by kReferenceControlDt / control_dt, so a
+  // servo closes the same share of its error per controller step as in the reference
+  // (14.15 1/s at 0.037 s; docs/robots.md).
+  double servo_gain = 0.0;
+  robot::Scene scene;
+  neural::ControllerParams controller;
+};
+
+// Where one servo's joint lives in the mjModel.
+struct JointSlot {
+  int qpos = -1;
+  int dof = -1;
+  int actuator = -1;
+  ServoModel servo{};
+};
+
+struct LegSlots {
+  robot::LegType type;
+  std::array<JointSlot, robot::kJointsPerLeg> joints;  // TC, CTr, FTi
+  int touch = -1;  // sensordata address of the foot's touch sensor
+};
+
+struct MjModelDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+};
+struct MjDataDeleter {
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+
+struct SimModel {
+  robot::RobotKind kind;
+  const robot::RobotBody* body;
+  neural::ControllerModel controller;
+  std::vector<robot::LegAngles> start_pose;  // joint angles of the "start" keyframe
+  robot::Scene scene;
+  std::string xml;  // the MJCF the mjModel was compiled from
+  std::unique_ptr<mjModel, MjModelDeleter> mj;
+  double control_dt;
+  double physics_dt;
+  int substeps;  // physics steps per controller step
+  std::vector<LegSlots> legs;
+  std::vector<JointSlot> backbone;  // the backbone servo, if the robot has one
+  int root_qpos = -1;               // free joint: x y z, then quaternion
+  int yaw_sensor = -1;              // sensordata address of the front trunk's quaternion
+  int start_key = -1;
+};
+
+// Builds the MJCF from robot::robot_body(kind), compiles it and indexes it. Throws BadInput for
+// bad time steps or servo gain, RuntimeFailure if MuJoCo rejects the model.
+SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options = {});
+
+// The MJCF make_sim_model compiles (what `multicpg model` prints).
+std::string model_xml(robot::RobotKind kind, const SimOptions& options = {});
+
+struct SimState {
+  std::unique_ptr<mjData, MjDataDeleter> data;
+  neural::ControllerState controller;
+  std::vector<robot::LegAngles> targets;   // joint targets of the current controller step, rad
+  long step = 0;                           // controller steps done
+  std::array<int, mjNWARNING> warnings{};  // MuJoCo warning counts already seen
+};
+
+// The robot standing in its start pose at the origin, facing +x, every CPG at `period` and
+// synchronised (neural::make_controller_state).
+SimState make_sim_state(const SimModel& model, int period = 4);
+
+// One controller step: neural::controller_step, joint targets (robot::joint_angle), then
+// model.substeps physics steps, each setting every servo's torque (sim/servo.h) before mj_step.
+// Throws RuntimeFailure naming the step if the physics becomes unstable (a NaN or infinite state,
+// a MuJoCo warning such as a bad acceleration, or MuJoCo resetting the state).
+void sim_step(const SimModel& model, SimState& state);
+
+// Readings. Positions and joint angles are of the current state; the yaw and touch sensors are
+// as MuJoCo last evaluated them, at the start of the last physics step (one physics step old).
+struct Position {
+  double x, y, z;  // m
+};
+Position trunk_position(const SimModel& model, const SimState& state);
+double trunk_yaw_deg(const SimModel& model, const SimState& state);  // (-180, 180]
+double joint_angle(const SimModel& model, const SimState& state, std::size_t leg,
+                   robot::Joint joint);
+double foot_force(const SimModel& model, const SimState& state, std::size_t leg);  // N
+bool foot_contact(const SimModel& model, const SimState& state, std::size_t leg);
+
+// Wraps an angle in degrees to (-180, 180] (SPEC §6).
+double wrap_degrees(double deg);
+
+}  // namespace multicpg::sim

@@ -1,0 +1,132 @@
+// The real multicpg binary: walk's summary, --json and --csv, and its bad-input handling.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/cli_runner.h"
+
+namespace {
+
+using multicpg::testing::count_lines;
+using multicpg::testing::make_temp_dir;
+using multicpg::testing::run_cli;
+
+std::string read(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+std::string first_line(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
+
+// Bad input: exit code 2 and exactly one line on stderr naming the problem.
+void expect_bad_input(const std::string& args, const std::string& must_mention) {
+  const auto r = run_cli(args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
+  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
+}
+
+TEST(CliWalk, BadInput) {
+  expect_bad_input("walk --robot spider", "spider");
+  expect_bad_input("walk --robot quadruped --disable R3", "R3");
+  expect_bad_input("walk --robot hexapod --disable R4", "R4");
+  expect_bad_input("walk --periods 7", "1, 4, 5, 6, 8, 9");
+  expect_bad_input("walk --periods 2", "1, 4, 5, 6, 8, 9");
+  expect_bad_input("walk --periods R1=3", "1, 4, 5, 6, 8, 9");
+  expect_bad_input("walk --robot quadruped --periods R3=5", "R3");
+  expect_bad_input("walk --robot quadruped --disable R1,R2,L1,L2", "every leg");
+  expect_bad_input("walk --disable R1,R2,R3,L1,L2,L3", "every leg");
+  expect_bad_input("walk --control-dt 0", "--control-dt");
+  expect_bad_input("walk --control-dt -0.037", "--control-dt");
+  expect_bad_input("walk --physics-dt 0", "--physics-dt");
+  expect_bad_input("walk --physics-dt -0.001", "--physics-dt");
+  expect_bad_input("walk --physics-dt 0.005", "whole multiple");
+  expect_bad_input("walk --control-dt 0.037 --physics-dt 0.0037001", "whole multiple");
+  expect_bad_input("walk --control-dt 0.001 --physics-dt 0.002", "whole multiple");
+  expect_bad_input("walk --steps 0", "--steps");
+  expect_bad_input("walk --steps -5", "--steps");
+  expect_bad_input("walk --window 0", "--window");
+  expect_bad_input("walk --settle -1", "--settle");
+  expect_bad_input("walk --disable R1 --disable-at -1", "--disable-at");
+  expect_bad_input("walk --disable R1 --disable-at 10 --steps 10", "--disable-at");
+  expect_bad_input("walk --steps ten", "steps");
+  expect_bad_input("model --robot spider", "spider");
+  expect_bad_input("model --physics-dt 0.005", "whole multiple");
+}
+
+TEST(CliWalk, UnwritableCsvFailsBeforeTheRun) {
+  const auto r = run_cli("walk --steps 100000 --csv /nonexistent-dir/x.csv");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+}
+
+TEST(CliWalk, PhysicsBlowUpIsARuntimeFailure) {
+  const auto r = run_cli("walk --steps 50 --physics-dt 0.037");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("unstable at step"), std::string::npos) << r.err;
+}
+
+TEST(CliWalk, SummaryNamesTheRun) {
+  const auto r = run_cli("walk --steps 40 --window 20 --disable L2 --periods R1=4,L3=5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("hexapod"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("R1 4  R2 4  R3 4  L1 4  L2 4  L3 5"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("disabled: L2 from step 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("speed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("steps      0-20"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("steps     20-40"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("final yaw"), std::string::npos) << r.out;
+}
+
+TEST(CliWalk, JsonHasTheMeasurements) {
+  const auto r = run_cli("walk --robot quadruped --steps 60 --window 20 --settle 10 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"distance_m", "speed_m_s", "window_deviations_deg", "final_yaw_deg",
+                          "forward_m", "lateral_m", "periods", "disabled", "physics_dt_s"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["window_deviations_deg"].size(), 3u);
+  EXPECT_EQ(j["robot"], "quadruped");
+  EXPECT_EQ(j["periods"]["L2"], 4);
+  EXPECT_DOUBLE_EQ(j["physics_dt_s"].get<double>(), 0.037 / 8);
+  EXPECT_NEAR(j["speed_m_s"].get<double>(), j["distance_m"].get<double>() / (60 * 0.037), 1e-12);
+}
+
+TEST(CliWalk, CsvHasEveryStepAndColumn) {
+  const std::string dir = make_temp_dir("walk-");
+  const auto r = run_cli("walk --robot quadruped --steps 30 --settle 5 --csv " + dir + "/w.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = read(dir + "/w.csv");
+  std::string header = "step,time_s,x_m,y_m,z_m,yaw_deg";
+  for (const char* leg : {"R1", "R2", "L1", "L2"}) {
+    for (const char* joint : {"TC", "CTr", "FTi"}) {
+      const std::string n = std::string(leg) + "_" + joint;
+      for (const char* column : {"_command", "_target_rad", "_actual_rad"})
+        header += "," + n + column;
+    }
+    header += ',';
+    header += leg;
+    header += "_contact";
+  }
+  EXPECT_EQ(first_line(csv), header);
+  EXPECT_EQ(count_lines(csv), 1 + 36);  // header, then the start and 35 steps
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliWalk, ExplicitPhysicsStepThatDivides) {
+  const auto r = run_cli("walk --steps 20 --physics-dt 0.0037 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(r.out)["physics_dt_s"].get<double>(), 0.0037);
+}
+
+}  // namespace
