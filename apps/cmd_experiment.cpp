@@ -1,0 +1,128 @@
+// multicpg experiment table|beta|results: the paper's learning experiments on every core
+// (SPEC §8; paper Figs. 11, 13, 14) and the page that sets them beside the paper.
+#include <iostream>
+#include <optional>
+
+#include "apps/commands.h"
+#include "apps/learning_options.h"
+#include "apps/options.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/learning_experiments.h"
+#include "experiments/results_page.h"
+#include "experiments/scenarios.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct ExperimentOptions {
+  std::string robot = "hexapod";
+  int runs = experiments::kScenarioRuns;
+  std::optional<int> jobs;  // empty = every core
+  std::string out;
+  LearningFlags learning;
+  SimFlags sim;
+};
+
+experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
+  if (o.runs < 1) throw BadInput("--runs must be at least 1, got " + std::to_string(o.runs));
+  if (o.jobs && *o.jobs < 1) {
+    throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
+  }
+
+  experiments::ExperimentSpec spec;
+  spec.kind = kind;
+  spec.runs = o.runs;
+  spec.seed = o.learning.seed;
+  spec.jobs = o.jobs.value_or(0);
+  spec.out = o.out;
+  // Every leg set is overwritten per task; the validation needs one working leg set.
+  spec.base = compensation_options(o.learning, robot::morphology(kind), {0}, 0);
+  spec.sim = sim_options(o.sim);
+  ensure_writable_dir(spec.out);
+  return spec;
+}
+
+void print_table(const experiments::ExperimentTable& t, const std::string& out) {
+  std::cout << (t.experiment == "beta" ? experiments::beta_table_markdown(t.rows)
+                                       : experiments::scenario_table_markdown(t.rows))
+            << "\nwrote " << out << "/{table.csv,table.md,summary.json} and " << out
+            << "/runs/\n";
+}
+
+void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with_beta) {
+  o.runs = default_runs;
+  cmd.add_option("--runs", o.runs, "learning runs per scenario")->capture_default_str();
+  cmd.add_option("--out", o.out, "directory for the runs and tables (resumes what is there)")
+      ->required();
+  cmd.add_option("--jobs", o.jobs, "parallel runs (default: every core)");
+  add_learning_flags(cmd, o.learning, with_beta);
+  add_sim_flags(cmd, o.sim);
+}
+
+}  // namespace
+
+void register_experiment(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("experiment", "the paper's learning experiments (SPEC §8)");
+  cmd->require_subcommand(1);
+
+  auto table = std::make_shared<ExperimentOptions>();
+  CLI::App* t = cmd->add_subcommand(
+      "table", "every malfunction scenario, N learning runs each (paper Figs. 11, 13)");
+  t->add_option("--robot", table->robot, "hexapod (24 scenarios) or quadruped (4)")
+      ->capture_default_str();
+  add_common(*t, *table, experiments::kScenarioRuns, true);
+  t->callback([table] {
+    const robot::RobotKind kind = robot::parse_robot(table->robot);
+    if (kind == robot::RobotKind::octopod) {
+      throw BadInput("--robot: the paper has scenario tables for the hexapod and quadruped only");
+    }
+    print_table(experiments::run_scenario_table(spec_of(*table, kind)), table->out);
+  });
+
+  auto beta = std::make_shared<ExperimentOptions>();
+  CLI::App* b = cmd->add_subcommand(
+      "beta", "R1+R2 disabled, N runs per beta in 0, 0.1, 0.3, 0.5, 1, 5, 10 (paper Fig. 14)");
+  add_common(*b, *beta, experiments::kBetaRuns, false);
+  b->callback([beta] {
+    print_table(experiments::run_beta_study(spec_of(*beta, robot::RobotKind::hexapod),
+                                            experiments::kBetaStudyValues),
+                beta->out);
+  });
+
+  struct ResultsOptions {
+    std::string hexapod, quadruped, beta, out;
+  };
+  auto results = std::make_shared<ResultsOptions>();
+  CLI::App* r = cmd->add_subcommand(
+      "results", "write the results page (docs/results.md) from experiment directories");
+  r->add_option("--hexapod", results->hexapod, "directory of `experiment table --robot hexapod`");
+  r->add_option("--quadruped", results->quadruped,
+                "directory of `experiment table --robot quadruped`");
+  r->add_option("--beta", results->beta, "directory of `experiment beta`");
+  r->add_option("--out", results->out, "the Markdown file to write")->required();
+  r->callback([results] {
+    experiments::ResultsInputs in;
+    in.command = "multicpg experiment results";
+    if (!results->hexapod.empty()) {
+      in.hexapod = experiments::read_experiment(results->hexapod);
+      in.command += " --hexapod " + results->hexapod;
+    }
+    if (!results->quadruped.empty()) {
+      in.quadruped = experiments::read_experiment(results->quadruped);
+      in.command += " --quadruped " + results->quadruped;
+    }
+    if (!results->beta.empty()) {
+      in.beta = experiments::read_experiment(results->beta);
+      in.command += " --beta " + results->beta;
+    }
+    if (!in.hexapod && !in.quadruped && !in.beta) {
+      throw BadInput("name at least one of --hexapod, --quadruped, --beta");
+    }
+    in.command += " --out " + results->out;
+    write_file_atomic(results->out, experiments::results_markdown(in));
+    std::cout << "wrote " << results->out << "\n";
+  });
+}
+
+}  // namespace multicpg::apps

@@ -1,0 +1,152 @@
+// multicpg learn: a leg fails and the robot learns leg periods that walk straight again
+// (paper §3-§4, Fig. 8; SPEC §5-§6).
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "apps/commands.h"
+#include "apps/learning_options.h"
+#include "apps/options.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/learning_run.h"
+#include "sim/record_csv.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct LearnOptions {
+  std::string robot = "hexapod";
+  std::string disable;
+  long disable_at = 0;
+  LearningFlags learning;
+  SimFlags sim;
+  bool json = false;
+  std::string out;
+};
+
+std::string period_cells(const std::vector<int>& periods, const std::vector<std::size_t>& disabled) {
+  std::ostringstream row;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    const bool off = std::find(disabled.begin(), disabled.end(), i) != disabled.end();
+    row << std::setw(4) << (std::to_string(periods[i]) + (off ? "x" : ""));
+  }
+  return row.str();
+}
+
+// The trace as the paper's Fig. 8: trial, periods (x = disabled), deviation, kept or rejected.
+void print_trace(std::ostream& out, const robot::Morphology& morph,
+                 const experiments::LearningRun& run, const std::vector<std::size_t>& disabled) {
+  const learning::LearningResult& r = run.result;
+  out << "trial";
+  for (const robot::Leg& leg : morph.legs) out << std::setw(4) << leg.name;
+  out << "  deviation  decision\n";
+  std::vector<int> start(morph.size(), learning::kStartPeriod);
+  out << std::setw(5) << 0 << period_cells(start, disabled) << std::fixed
+      << std::setprecision(2) << std::setw(10) << r.initial_deviation_deg << "°  ";
+  if (r.detection_step) {
+    out << "deviation detected at step " << *r.detection_step << ": CPGs desynchronised\n";
+  } else {
+    out << "no window deviated more than the threshold\n";
+  }
+  for (const learning::TrialRecord& t : r.trace) {
+    out << std::setw(5) << t.trial << period_cells(t.periods, disabled) << std::setw(10)
+        << t.deviation_deg << "°  " << (t.accepted ? "kept" : "rejected");
+    if (t.acceptance_probability < 1.0) {
+      out << " (P = " << std::setprecision(3) << std::scientific << t.acceptance_probability
+          << std::fixed << std::setprecision(2) << ")";
+    }
+    out << "\n";
+  }
+}
+
+std::string trace_csv(const robot::Morphology& morph, const learning::LearningResult& r) {
+  std::ostringstream f;
+  f << "trial";
+  for (const robot::Leg& leg : morph.legs) f << "," << leg.name;
+  f << ",deviation_deg,accepted,acceptance_probability\n";
+  f.precision(10);
+  for (const learning::TrialRecord& t : r.trace) {
+    f << t.trial;
+    for (int p : t.periods) f << "," << p;
+    f << "," << t.deviation_deg << "," << (t.accepted ? 1 : 0) << "," << t.acceptance_probability
+      << "\n";
+  }
+  return f.str();
+}
+
+void run_learn(const LearnOptions& o) {
+  const robot::RobotKind kind = robot::parse_robot(o.robot);
+  const robot::Morphology& morph = robot::morphology(kind);
+  if (o.disable_at < 0) throw BadInput("--disable-at must not be negative");
+  const learning::CompensationOptions options = compensation_options(
+      o.learning, morph, robot::parse_leg_list(morph, o.disable), o.disable_at);
+  if (!o.out.empty()) ensure_writable_dir(o.out);
+  const sim::SimModel model = sim::make_sim_model(kind, sim_options(o.sim));
+
+  const experiments::LearningRun run =
+      experiments::run_learning(model, options, /*record=*/!o.out.empty());
+  const learning::LearningResult& r = run.result;
+  nlohmann::json json = learning::to_json(r, morph, options.disabled);
+  json["robot"] = morph.name;
+  json["seed"] = o.learning.seed;
+  json["beta"] = o.learning.beta;
+  json["threshold_deg"] = o.learning.threshold;
+  json["window_steps"] = o.learning.window;
+  json["disable_at"] = o.disable_at;
+
+  if (!o.out.empty()) {
+    const std::filesystem::path dir(o.out);
+    write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
+    write_file_atomic(dir / "trace.csv", trace_csv(morph, r));
+    AtomicFile steps(dir / "steps.csv");
+    sim::write_record_csv(steps.stream(), morph, run.record);
+    steps.commit();
+  }
+  if (o.json) {
+    std::cout << json.dump(2) << "\n";
+    return;
+  }
+  std::cout << morph.name << ", disabled " << robot::leg_list_name(morph, options.disabled)
+            << " at step " << o.disable_at << ", beta " << o.learning.beta << ", threshold "
+            << o.learning.threshold << "°, window " << options.window_steps << ", settle "
+            << r.settle_steps << ", seed " << o.learning.seed << "\n\n";
+  print_trace(std::cout, morph, run, options.disabled);
+  std::cout << "\n" << r.status;
+  if (r.detection_step) {
+    std::cout << " after " << r.trials << " trials: ";
+    for (std::size_t i = 0; i < r.periods.size(); ++i) {
+      if (std::find(options.disabled.begin(), options.disabled.end(), i) !=
+          options.disabled.end()) {
+        continue;
+      }
+      std::cout << morph.legs[i].name << "=" << r.periods[i] << " ";
+    }
+    std::cout << "(deviation " << std::fixed << std::setprecision(2) << r.initial_deviation_deg
+              << "° -> " << r.final_deviation_deg << "°)";
+  }
+  std::cout << "\n";
+  if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
+}
+
+}  // namespace
+
+void register_learn(CLI::App& app) {
+  auto opts = std::make_shared<LearnOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "learn", "disable legs and learn periods that walk straight again (paper Fig. 8)");
+  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--disable", opts->disable, "legs that fail, e.g. R1 or R1,R3")->required();
+  cmd->add_option("--disable-at", opts->disable_at, "step at which they fail")
+      ->capture_default_str();
+  add_learning_flags(*cmd, opts->learning);
+  add_sim_flags(*cmd, opts->sim);
+  cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
+  cmd->add_option("--out", opts->out,
+                  "directory for learning.json, trace.csv and steps.csv (the per-step record)");
+  cmd->callback([opts] { run_learn(*opts); });
+}
+
+}  // namespace multicpg::apps

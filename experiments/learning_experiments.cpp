@@ -1,0 +1,102 @@
+#include "experiments/learning_experiments.h"
+
+#include <fstream>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/learning_run.h"
+#include "experiments/runner.h"
+#include "experiments/scenarios.h"
+
+namespace multicpg::experiments {
+namespace {
+
+nlohmann::json arguments(const ExperimentSpec& spec, const std::string& experiment) {
+  const learning::CompensationOptions& b = spec.base;
+  return {{"experiment", experiment},
+          {"robot", robot::to_string(spec.kind)},
+          {"runs", spec.runs},
+          {"seed", spec.seed},
+          {"beta", b.annealing.beta},
+          {"threshold_deg", b.annealing.threshold_deg},
+          {"max_trials", b.annealing.max_trials},
+          {"window_steps", b.window_steps},
+          {"settle_steps", b.settle_steps ? nlohmann::json(*b.settle_steps) : nlohmann::json()},
+          {"fail_step", b.fail_step},
+          {"control_dt", spec.sim.control_dt},
+          {"physics_dt", spec.sim.physics_dt}};
+}
+
+// One learning run of a task: its disabled legs, seed and (beta study) beta.
+nlohmann::json run_task(const sim::SimModel& model, const learning::CompensationOptions& base,
+                        const Task& task) {
+  const robot::Morphology& morph = model.controller.morphology;
+  learning::CompensationOptions options = base;
+  options.disabled.clear();
+  for (const nlohmann::json& name : task.params.at("disabled")) {
+    options.disabled.push_back(robot::leg_index(morph, name.get<std::string>()));
+  }
+  if (task.params.contains("beta")) options.annealing.beta = task.params.at("beta").get<double>();
+  options.seed = task.seed;
+  const LearningRun run = run_learning(model, options, /*record=*/false);
+  return learning::to_json(run.result, morph, options.disabled);
+}
+
+ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string& experiment,
+                                   const std::vector<Task>& tasks) {
+  RunnerOptions runner;
+  runner.out_dir = spec.out;
+  if (spec.jobs > 0) runner.jobs = spec.jobs;
+  runner.arguments = arguments(spec, experiment);
+  runner.progress = spec.progress;
+  validate(runner);
+  const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
+  const RunnerOutcome outcome = run_tasks(
+      tasks, [&](const Task& task) { return run_task(model, spec.base, task); }, runner);
+
+  ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
+                        summarize(model.controller.morphology, tasks, outcome.results)};
+  const bool beta = experiment == "beta";
+  write_file_atomic(spec.out / "table.csv",
+                    beta ? beta_table_csv(table.rows) : scenario_table_csv(table.rows));
+  write_file_atomic(spec.out / "table.md",
+                    beta ? beta_table_markdown(table.rows) : scenario_table_markdown(table.rows));
+  nlohmann::json rows = nlohmann::json::array();
+  for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
+  nlohmann::json summary = arguments(spec, experiment);
+  summary["rows"] = rows;
+  write_file_atomic(spec.out / "summary.json", summary.dump(2) + "\n");
+  return table;
+}
+
+}  // namespace
+
+ExperimentTable run_scenario_table(const ExperimentSpec& spec) {
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  return run_tasks_to_table(
+      spec, "table", scenario_tasks(morph, paper_scenarios(spec.kind), spec.runs, spec.seed));
+}
+
+ExperimentTable run_beta_study(const ExperimentSpec& spec, const std::vector<double>& betas) {
+  ExperimentSpec hexapod = spec;
+  hexapod.kind = robot::RobotKind::hexapod;
+  return run_tasks_to_table(hexapod, "beta", beta_tasks(betas, spec.runs, spec.seed));
+}
+
+ExperimentTable read_experiment(const std::filesystem::path& out) {
+  const std::filesystem::path file = out / "summary.json";
+  std::ifstream in(file);
+  if (!in) throw BadInput("no experiment results in '" + out.string() + "' (missing summary.json)");
+  nlohmann::json j;
+  try {
+    in >> j;
+    ExperimentTable table{j.at("experiment").get<std::string>(), j.at("robot").get<std::string>(),
+                          {}};
+    for (const nlohmann::json& row : j.at("rows")) table.rows.push_back(group_summary_from_json(row));
+    return table;
+  } catch (const nlohmann::json::exception& e) {
+    throw BadInput("'" + file.string() + "' is not an experiment summary: " + e.what());
+  }
+}
+
+}  // namespace multicpg::experiments

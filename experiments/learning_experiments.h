@@ -1,0 +1,44 @@
+// The paper's learning experiments on the simulated robots (SPEC §8): the scenario tables
+// (Figs. 11, 13) and the beta study (Fig. 14), run in parallel and resumable (runner.h).
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "experiments/tables.h"
+#include "learning/compensation.h"
+#include "sim/sim.h"
+
+namespace multicpg::experiments {
+
+struct ExperimentSpec {
+  robot::RobotKind kind = robot::RobotKind::hexapod;
+  int runs = 10;
+  std::uint64_t seed = 1;
+  int jobs = 0;  // 0 = every core
+  std::filesystem::path out;
+  // Settings of every run; each run's seed, disabled legs (and beta) come from its task.
+  learning::CompensationOptions base;
+  sim::SimOptions sim;
+  bool progress = true;
+};
+
+// An experiment's results: one summary row per scenario or beta, written to OUT as table.csv,
+// table.md and summary.json.
+struct ExperimentTable {
+  std::string experiment;  // "table" or "beta"
+  std::string robot;
+  std::vector<GroupSummary> rows;
+};
+
+// Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each.
+ExperimentTable run_scenario_table(const ExperimentSpec& spec);
+
+// R1+R2 disabled on the hexapod, spec.runs runs per beta.
+ExperimentTable run_beta_study(const ExperimentSpec& spec, const std::vector<double>& betas);
+
+// Reads OUT/summary.json; throws BadInput when it is missing or not an experiment's summary.
+ExperimentTable read_experiment(const std::filesystem::path& out);
+
+}  // namespace multicpg::experiments

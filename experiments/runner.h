@@ -1,0 +1,64 @@
+// Many independent runs on J threads, each saved as soon as it finishes, so an interrupted
+// experiment started again with the same arguments continues where it stopped (SPEC §8).
+// Results never depend on J: each run's seed comes from its key, never from thread or order.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace multicpg::experiments {
+
+// One run of an experiment.
+struct Task {
+  std::string key;    // stable and unique; names the run file OUT/runs/<key>.json
+  std::string group;  // the table row it belongs to: a scenario name or a beta
+  int run = 0;        // index within the group
+  std::uint64_t seed = 0;
+  nlohmann::json params;  // what the task function needs (disabled legs, beta, ...)
+};
+
+// Computes one run's result. Must depend only on the task (never on time or thread) and be
+// safe to call from several threads at once.
+using TaskFunction = std::function<nlohmann::json(const Task&)>;
+
+// The seed of run `key` in an experiment seeded with `base_seed`: FNV-1a of the key mixed with
+// the base by SplitMix64, so it is the same on every machine and for every thread count.
+std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key);
+
+// "<group>_run<NNN>": the key of run `run` of `group`.
+std::string run_key(std::string_view group, int run);
+
+// All cores (1 if unknown).
+int default_jobs();
+
+struct RunnerOptions {
+  std::filesystem::path out_dir;
+  int jobs = default_jobs();
+  // Everything that decides the results (not the thread count), as a JSON object. Stored in
+  // OUT/experiment.json; resuming with different arguments is refused.
+  nlohmann::json arguments = nlohmann::json::object();
+  bool progress = true;  // runs done, elapsed and time left on stderr
+};
+
+// Throws BadInput (one line) for jobs < 1 or an empty output directory.
+void validate(const RunnerOptions& options);
+
+struct RunnerOutcome {
+  std::vector<nlohmann::json> results;  // one per task, in task order
+  int loaded = 0;                       // runs found finished in OUT/runs
+  int ran = 0;                          // runs computed now
+};
+
+// Runs every task not yet saved in OUT/runs and returns all results. Throws BadInput if OUT
+// was made with other arguments or tasks, or if a key is repeated or cannot name a file.
+// If a task throws, no new task starts, the runs in flight finish and are saved, and the first
+// exception is rethrown: starting again repeats only the runs not saved.
+RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
+                        const RunnerOptions& options);
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,159 @@
+#include "experiments/scenarios.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "common/errors.h"
+
+namespace multicpg::experiments {
+namespace {
+
+using robot::Morphology;
+using robot::Side;
+using Legs = std::vector<std::size_t>;
+
+std::size_t mirror_leg(const Morphology& morph, std::size_t leg) {
+  const robot::Leg& l = morph.legs[leg];
+  for (std::size_t j = 0; j < morph.size(); ++j) {
+    if (morph.legs[j].position == l.position && morph.legs[j].side != l.side) return j;
+  }
+  return leg;
+}
+
+Legs mirror(const Morphology& morph, const Legs& legs) {
+  Legs out;
+  for (std::size_t leg : legs) out.push_back(mirror_leg(morph, leg));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::size_t right_legs(const Morphology& morph, const Legs& legs) {
+  return static_cast<std::size_t>(std::count_if(
+      legs.begin(), legs.end(), [&](std::size_t l) { return morph.legs[l].side == Side::right; }));
+}
+
+bool holds_whole_side(const Morphology& morph, const Legs& legs) {
+  const std::size_t right = right_legs(morph, legs);
+  const auto per_side = static_cast<std::size_t>(morph.legs_per_side);
+  return right == per_side || legs.size() - right == per_side;
+}
+
+// The representative of {legs, mirror(legs)}: more right legs, then smaller indices.
+bool is_representative(const Morphology& morph, const Legs& legs) {
+  const Legs other = mirror(morph, legs);
+  const std::size_t mine = right_legs(morph, legs);
+  const std::size_t theirs = right_legs(morph, other);
+  return mine > theirs || (mine == theirs && legs <= other);
+}
+
+void require_runs(int runs) {
+  if (runs < 1) throw BadInput("runs must be at least 1, got " + std::to_string(runs));
+}
+
+nlohmann::json leg_names(const Morphology& morph, const Legs& legs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t leg : legs) out.push_back(morph.legs.at(leg).name);
+  return out;
+}
+
+}  // namespace
+
+std::string scenario_name(const Morphology& morph, const Legs& legs) {
+  std::string out;
+  for (std::size_t leg : legs) out += (out.empty() ? "" : "+") + morph.legs.at(leg).name;
+  return out;
+}
+
+std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_disabled) {
+  std::vector<Legs> sets;
+  const std::size_t n = morph.size();
+  for (unsigned mask = 1; mask < (1U << n); ++mask) {
+    Legs legs;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (mask & (1U << i)) legs.push_back(i);
+    }
+    if (legs.size() > max_disabled || holds_whole_side(morph, legs)) continue;
+    if (legs.size() == 1 || is_representative(morph, legs)) sets.push_back(legs);
+  }
+  std::sort(sets.begin(), sets.end(), [](const Legs& a, const Legs& b) {
+    return a.size() != b.size() ? a.size() < b.size() : a < b;
+  });
+  std::vector<Scenario> out;
+  for (const Legs& legs : sets) out.push_back({scenario_name(morph, legs), legs});
+  return out;
+}
+
+std::vector<Scenario> paper_scenarios(robot::RobotKind kind) {
+  const Morphology& morph = robot::morphology(kind);
+  switch (kind) {
+    case robot::RobotKind::hexapod: {
+      constexpr std::size_t kMaxDisabled = 3;  // SPEC §8: 1-3 disabled legs
+      return mirror_scenarios(morph, kMaxDisabled);
+    }
+    case robot::RobotKind::quadruped: {
+      std::vector<Scenario> out;
+      for (std::size_t leg = 0; leg < morph.size(); ++leg)
+        out.push_back({morph.legs[leg].name, {leg}});
+      return out;
+    }
+    case robot::RobotKind::octopod:
+      break;
+  }
+  throw BadInput("the paper reports no malfunction scenarios for the " + morph.name +
+                 " (hexapod and quadruped only)");
+}
+
+Scenario beta_study_scenario() {
+  const Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
+  const Legs legs{robot::leg_index(morph, "R1"), robot::leg_index(morph, "R2")};
+  return {scenario_name(morph, legs), legs};
+}
+
+std::vector<Task> scenario_tasks(const Morphology& morph, const std::vector<Scenario>& scenarios,
+                                 int runs, std::uint64_t base_seed) {
+  require_runs(runs);
+  std::vector<Task> tasks;
+  for (const Scenario& s : scenarios) {
+    for (int run = 0; run < runs; ++run) {
+      const std::string key = run_key(s.name, run);
+      tasks.push_back({key,
+                       s.name,
+                       run,
+                       derive_seed(base_seed, key),
+                       {{"scenario", s.name}, {"disabled", leg_names(morph, s.disabled)}}});
+    }
+  }
+  return tasks;
+}
+
+std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::uint64_t base_seed) {
+  require_runs(runs);
+  const Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
+  const Scenario scenario = beta_study_scenario();
+  std::vector<Task> tasks;
+  for (double beta : betas) {
+    if (!(beta >= 0.0) || !std::isfinite(beta)) {
+      throw BadInput("beta must be a number >= 0, got " + format_beta(beta));
+    }
+    const std::string group = format_beta(beta);
+    for (int run = 0; run < runs; ++run) {
+      const std::string key = run_key("beta" + group, run);
+      tasks.push_back({key,
+                       group,
+                       run,
+                       derive_seed(base_seed, key),
+                       {{"scenario", scenario.name},
+                        {"disabled", leg_names(morph, scenario.disabled)},
+                        {"beta", beta}}});
+    }
+  }
+  return tasks;
+}
+
+std::string format_beta(double beta) {
+  char buf[32];  // the shortest form of any double needs at most 24
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, beta).ptr);
+}
+
+}  // namespace multicpg::experiments

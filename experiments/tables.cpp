@@ -1,0 +1,223 @@
+#include "experiments/tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+#include "common/errors.h"
+
+namespace multicpg::experiments {
+namespace {
+
+// Fixed decimals: degrees to 0.01, trials to 0.1, shares to 0.01.
+constexpr int kDegreeDecimals = 2;
+constexpr int kTrialDecimals = 1;
+constexpr int kShareDecimals = 2;
+
+std::string fixed(double value, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
+  return buf;
+}
+
+std::string mean_pm_sd(const MeanSd& m, int decimals) {
+  return fixed(m.mean, decimals) + " ± " + fixed(m.sd, decimals);
+}
+
+const nlohmann::json& field(const nlohmann::json& result, const Task& task, const char* name) {
+  if (!result.is_object() || !result.contains(name)) {
+    throw RuntimeFailure("run " + task.key + " has no '" + name + "' in its result");
+  }
+  return result.at(name);
+}
+
+// "R2=5 R3=4 L1=5 L2=6 L3=5": the final periods of the working legs in leg order.
+std::string working_periods(const robot::Morphology& morph, const nlohmann::json& result,
+                            const Task& task) {
+  const nlohmann::json& periods = field(result, task, "periods");
+  std::set<std::string> disabled;
+  for (const nlohmann::json& name : field(result, task, "disabled")) {
+    disabled.insert(name.get<std::string>());
+  }
+  std::string out;
+  for (const robot::Leg& leg : morph.legs) {
+    if (disabled.contains(leg.name) || !periods.contains(leg.name)) continue;
+    out +=
+        (out.empty() ? "" : " ") + leg.name + "=" + std::to_string(periods.at(leg.name).get<int>());
+  }
+  return out;
+}
+
+std::string best_cell(const GroupSummary& row) {
+  return row.best_periods.empty() ? "-"
+                                  : row.best_periods + " (" + std::to_string(row.best_count) + ")";
+}
+
+}  // namespace
+
+MeanSd mean_sd(const std::vector<double>& values) {
+  MeanSd out;
+  if (values.empty()) return out;
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  out.mean = sum / static_cast<double>(values.size());
+  if (values.size() < 2) return out;
+  double squares = 0.0;
+  for (double v : values) squares += (v - out.mean) * (v - out.mean);
+  out.sd = std::sqrt(squares / static_cast<double>(values.size() - 1));
+  return out;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t mid = values.size() / 2;
+  return values.size() % 2 == 1 ? values[mid] : (values[mid - 1] + values[mid]) / 2.0;
+}
+
+nlohmann::json to_json(const GroupSummary& r) {
+  auto pair = [](const MeanSd& m) { return nlohmann::json{{"mean", m.mean}, {"sd", m.sd}}; };
+  return {{"group", r.group},
+          {"runs", r.runs},
+          {"converged", r.converged},
+          {"no_deviation", r.no_deviation},
+          {"initial_deviation_deg", pair(r.initial_deviation_deg)},
+          {"final_deviation_deg", pair(r.final_deviation_deg)},
+          {"trials", pair(r.trials)},
+          {"median_trials", r.median_trials},
+          {"within_paper_trials", r.within_paper_trials},
+          {"best_periods", r.best_periods},
+          {"best_count", r.best_count}};
+}
+
+GroupSummary group_summary_from_json(const nlohmann::json& j) {
+  auto pair = [](const nlohmann::json& m) {
+    return MeanSd{m.at("mean").get<double>(), m.at("sd").get<double>()};
+  };
+  GroupSummary r;
+  r.group = j.at("group").get<std::string>();
+  r.runs = j.at("runs").get<int>();
+  r.converged = j.at("converged").get<int>();
+  r.no_deviation = j.at("no_deviation").get<int>();
+  r.initial_deviation_deg = pair(j.at("initial_deviation_deg"));
+  r.final_deviation_deg = pair(j.at("final_deviation_deg"));
+  r.trials = pair(j.at("trials"));
+  r.median_trials = j.at("median_trials").get<double>();
+  r.within_paper_trials = j.at("within_paper_trials").get<int>();
+  r.best_periods = j.at("best_periods").get<std::string>();
+  r.best_count = j.at("best_count").get<int>();
+  return r;
+}
+
+double GroupSummary::share_converged() const {
+  return runs > 0 ? static_cast<double>(converged) / runs : 0.0;
+}
+
+std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::vector<Task>& tasks,
+                                    const std::vector<nlohmann::json>& results) {
+  if (results.size() != tasks.size()) {
+    throw RuntimeFailure("expected " + std::to_string(tasks.size()) + " results, got " +
+                         std::to_string(results.size()));
+  }
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    auto [it, fresh] = members.try_emplace(tasks[i].group);
+    if (fresh) order.push_back(tasks[i].group);
+    it->second.push_back(i);
+  }
+  std::vector<GroupSummary> rows;
+  for (const std::string& group : order) {
+    GroupSummary row;
+    row.group = group;
+    std::vector<double> initial;
+    std::vector<double> deviations;
+    std::vector<double> trials;
+    std::map<std::string, int> finals;  // ordered, so the first maximum is alphabetically first
+    for (std::size_t i : members[group]) {
+      const nlohmann::json& r = results[i];
+      ++row.runs;
+      initial.push_back(field(r, tasks[i], "initial_deviation_deg").get<double>());
+      deviations.push_back(field(r, tasks[i], "final_deviation_deg").get<double>());
+      trials.push_back(field(r, tasks[i], "trials").get<double>());
+      if (field(r, tasks[i], "status") == "no deviation") ++row.no_deviation;
+      if (field(r, tasks[i], "converged").get<bool>()) {
+        ++row.converged;
+        if (trials.back() <= kPaperTrials) ++row.within_paper_trials;
+        ++finals[working_periods(morph, r, tasks[i])];
+      }
+    }
+    row.initial_deviation_deg = mean_sd(initial);
+    row.final_deviation_deg = mean_sd(deviations);
+    row.trials = mean_sd(trials);
+    row.median_trials = median(trials);
+    for (const auto& [periods, count] : finals) {
+      if (count > row.best_count) {
+        row.best_periods = periods;
+        row.best_count = count;
+      }
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string scenario_table_csv(const std::vector<GroupSummary>& rows) {
+  std::string out =
+      "scenario,runs,converged,no_deviation,share_converged,final_deviation_mean_deg,"
+      "final_deviation_sd_deg,trials_mean,trials_sd,best_periods,best_count\n";
+  for (const GroupSummary& r : rows) {
+    out += r.group + "," + std::to_string(r.runs) + "," + std::to_string(r.converged) + "," +
+           std::to_string(r.no_deviation) + "," + fixed(r.share_converged(), kShareDecimals) + "," +
+           fixed(r.final_deviation_deg.mean, kDegreeDecimals) + "," +
+           fixed(r.final_deviation_deg.sd, kDegreeDecimals) + "," +
+           fixed(r.trials.mean, kTrialDecimals) + "," + fixed(r.trials.sd, kTrialDecimals) + "," +
+           r.best_periods + "," + std::to_string(r.best_count) + "\n";
+  }
+  return out;
+}
+
+std::string scenario_table_markdown(const std::vector<GroupSummary>& rows) {
+  std::string out =
+      "| Disabled | Runs | Converged (share) | No deviation | Final deviation (deg), mean ± SD | "
+      "Trials, mean ± SD | Most frequent combination (runs) |\n"
+      "|---|---:|---:|---:|---:|---:|---|\n";
+  for (const GroupSummary& r : rows) {
+    out += "| " + r.group + " | " + std::to_string(r.runs) + " | " +
+           fixed(r.share_converged(), kShareDecimals) + " | " + std::to_string(r.no_deviation) +
+           " | " + mean_pm_sd(r.final_deviation_deg, kDegreeDecimals) + " | " +
+           mean_pm_sd(r.trials, kTrialDecimals) + " | " + best_cell(r) + " |\n";
+  }
+  return out;
+}
+
+std::string beta_table_csv(const std::vector<GroupSummary>& rows) {
+  std::string out =
+      "beta,runs,converged,share_converged,trials_mean,trials_sd,final_deviation_mean_deg,"
+      "final_deviation_sd_deg\n";
+  for (const GroupSummary& r : rows) {
+    out += r.group + "," + std::to_string(r.runs) + "," + std::to_string(r.converged) + "," +
+           fixed(r.share_converged(), kShareDecimals) + "," + fixed(r.trials.mean, kTrialDecimals) +
+           "," + fixed(r.trials.sd, kTrialDecimals) + "," +
+           fixed(r.final_deviation_deg.mean, kDegreeDecimals) + "," +
+           fixed(r.final_deviation_deg.sd, kDegreeDecimals) + "\n";
+  }
+  return out;
+}
+
+std::string beta_table_markdown(const std::vector<GroupSummary>& rows) {
+  std::string out =
+      "| beta | Runs | Converged (share) | Trials, mean ± SD | Final deviation (deg), mean ± SD |\n"
+      "|---:|---:|---:|---:|---:|\n";
+  for (const GroupSummary& r : rows) {
+    out += "| " + r.group + " | " + std::to_string(r.runs) + " | " +
+           fixed(r.share_converged(), kShareDecimals) + " | " +
+           mean_pm_sd(r.trials, kTrialDecimals) + " | " +
+           mean_pm_sd(r.final_deviation_deg, kDegreeDecimals) + " |\n";
+  }
+  return out;
+}
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,62 @@
+// Tables of an experiment's runs (paper Fig. 11, 13, 14; SPEC §8): per scenario or beta the
+// mean and SD of final deviation and trials, the share converged and the most frequent final
+// combination. CSV and Markdown with fixed decimals, so equal runs give byte-equal tables.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "experiments/runner.h"
+#include "robot/morphology.h"
+
+namespace multicpg::experiments {
+
+// Mean and sample standard deviation (n - 1; 0 for a single run).
+struct MeanSd {
+  double mean = 0.0;
+  double sd = 0.0;
+};
+
+MeanSd mean_sd(const std::vector<double>& values);
+double median(std::vector<double> values);
+
+// Paper §4.1: "the learning time for most of the scenarios can be normally controlled within
+// 20 trials".
+inline constexpr int kPaperTrials = 20;
+
+struct GroupSummary {
+  std::string group;  // scenario name or beta
+  int runs = 0;
+  int converged = 0;
+  int no_deviation = 0;        // runs whose deviation never exceeded the threshold (0 trials)
+  MeanSd initial_deviation_deg;  // the deviation that started learning, over all runs
+  MeanSd final_deviation_deg;    // over all runs
+  MeanSd trials;                 // over all runs
+  double median_trials = 0.0;
+  int within_paper_trials = 0;  // runs converged within kPaperTrials (paper §4.1)
+  // Most frequent final periods of the working legs among converged runs, "R2=5 R3=4 L1=5";
+  // ties go to the alphabetically first; empty when no run converged.
+  std::string best_periods;
+  int best_count = 0;
+
+  double share_converged() const;
+};
+
+// One summary per group, in the order groups first appear in `tasks`. `results[i]` is the
+// learning result JSON (learning::to_json) of tasks[i]. Throws RuntimeFailure if a result lacks
+// a field.
+std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::vector<Task>& tasks,
+                                    const std::vector<nlohmann::json>& results);
+
+nlohmann::json to_json(const GroupSummary& row);
+GroupSummary group_summary_from_json(const nlohmann::json& row);
+
+// Scenario tables (Fig. 11, 13).
+std::string scenario_table_csv(const std::vector<GroupSummary>& rows);
+std::string scenario_table_markdown(const std::vector<GroupSummary>& rows);
+// Beta tables (Fig. 14): groups are betas.
+std::string beta_table_csv(const std::vector<GroupSummary>& rows);
+std::string beta_table_markdown(const std::vector<GroupSummary>& rows);
+
+}  // namespace multicpg::experiments

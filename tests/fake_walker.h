@@ -1,0 +1,53 @@
+// A stand-in for the simulated robot, for tests of the learning loop without physics.
+#pragma once
+
+#include "learning/compensation.h"
+#include "neural/controller.h"
+
+namespace multicpg::learning {
+
+// Yaw rate = gain * (left thrust - right thrust), thrust of a working leg = 1/period, of a
+// disabled leg 0. Hexapod, R1 disabled, all 4: 0.25 * 0.38 * 400 = 38 deg per window (Fig. 8:
+// 37.86). While clients are synchronised every leg moves with the master's period (SPEC §5).
+class FakeWalker : public Walker {
+ public:
+  static constexpr double kGainDegPerStep = 0.38;
+
+  explicit FakeWalker(robot::RobotKind kind, double bias_deg_per_step = 0.0)
+      : model_(neural::make_controller_model(kind)),
+        state_(neural::make_controller_state(model_)),
+        bias_(bias_deg_per_step) {}
+
+  void step() override {
+    yaw_ = wrap_deg(yaw_ + rate());
+    ++state_.step;
+  }
+  double yaw_deg() const override { return yaw_; }
+  long step_count() const override { return state_.step; }
+  neural::ControllerState& controller() override { return state_; }
+  const neural::ControllerModel& controller_model() const override { return model_; }
+  void disable(const std::vector<std::size_t>& legs) override {
+    for (std::size_t leg : legs) neural::set_disabled(state_, leg, true);
+  }
+
+ private:
+  double rate() const {
+    double turn = bias_;
+    for (std::size_t i = 0; i < state_.legs.size(); ++i) {
+      const neural::LegState& leg = state_.legs[i];
+      if (leg.disabled) continue;
+      const int period =
+          neural::follows_master(state_, i) ? state_.legs[0].cpg.period : leg.cpg.period;
+      const double sign = model_.morphology.legs[i].side == robot::Side::left ? 1.0 : -1.0;
+      turn += sign * kGainDegPerStep / period;
+    }
+    return turn;
+  }
+
+  neural::ControllerModel model_;
+  neural::ControllerState state_;
+  double bias_;
+  double yaw_ = 0.0;
+};
+
+}  // namespace multicpg::learning

@@ -1,0 +1,210 @@
+// The online compensation loop (SPEC §5-§6) on a fake walker whose yaw rate is a fixed function
+// of the periods of its working legs, plus the settle-time claim behind the default.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/errors.h"
+#include "learning/compensation.h"
+#include "tests/fake_walker.h"
+
+namespace multicpg::learning {
+namespace {
+
+using robot::RobotKind;
+
+CompensationOptions options_for(std::vector<std::size_t> disabled, std::uint64_t seed) {
+  CompensationOptions o;
+  o.disabled = std::move(disabled);
+  o.seed = seed;
+  return o;
+}
+
+Periods periods_of(Walker& w) {
+  Periods p;
+  for (const neural::LegState& leg : w.controller().legs) p.push_back(leg.cpg.period);
+  return p;
+}
+
+TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
+  FakeWalker walker(RobotKind::hexapod);
+  const CompensationOptions o = options_for({0}, 1);
+  const LearningResult r = compensate(walker, o);
+
+  ASSERT_TRUE(r.converged);
+  EXPECT_EQ(r.status, "converged");
+  EXPECT_EQ(r.reason, StopReason::below_threshold);
+  EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeWalker::kGainDegPerStep * kDefaultWindowSteps,
+              1e-9);
+  EXPECT_LT(r.final_deviation_deg, kDefaultThresholdDeg);
+  EXPECT_GE(r.trials, 1);
+  ASSERT_EQ(r.trace.size(), static_cast<std::size_t>(r.trials));
+  EXPECT_TRUE(r.trace.back().accepted);
+  EXPECT_EQ(r.trace.back().periods, r.periods);
+  for (const TrialRecord& t : r.trace) EXPECT_EQ(t.periods[0], kStartPeriod);  // R1 fixed
+
+  // The controller walks on with the learned periods, every client desynchronised.
+  EXPECT_EQ(periods_of(walker), r.periods);
+  for (std::size_t i = 1; i < walker.controller().legs.size(); ++i) {
+    EXPECT_FALSE(neural::follows_master(walker.controller(), i));
+  }
+  // Detection: settle + one window; each trial: settle + one window.
+  const long settle = default_settle_steps(walker.controller_model());
+  EXPECT_EQ(r.settle_steps, settle);
+  EXPECT_EQ(r.detection_step, settle + kDefaultWindowSteps);
+  EXPECT_EQ(r.steps_walked, (r.trials + 1) * (settle + kDefaultWindowSteps));
+  EXPECT_EQ(walker.step_count(), r.steps_walked);
+}
+
+TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
+  const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
+  auto run = [&](std::uint64_t seed) {
+    FakeWalker walker(RobotKind::hexapod);
+    const CompensationOptions o = options_for({0, 2}, seed);
+    return to_json(compensate(walker, o), morph, o.disabled);
+  };
+  const nlohmann::json a = run(7);
+  EXPECT_EQ(a, run(7));
+  EXPECT_NE(a.at("trace"), run(8).at("trace"));
+}
+
+TEST(Compensation, HealthyRobotNeedsNoCompensation) {
+  FakeWalker walker(RobotKind::hexapod);
+  CompensationOptions o = options_for({}, 1);
+  o.settle_steps = 10;
+  const LearningResult r = compensate(walker, o);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.status, "no deviation");
+  EXPECT_FALSE(r.reason.has_value());
+  EXPECT_FALSE(r.detection_step.has_value());
+  EXPECT_EQ(r.trials, 0);
+  EXPECT_EQ(r.steps_walked, 10 + kDefaultDetectionWindows * kDefaultWindowSteps);
+  EXPECT_TRUE(neural::follows_master(walker.controller(), 1));  // still synchronised
+}
+
+TEST(Compensation, LateFailureIsDetectedAfterIt) {
+  FakeWalker walker(RobotKind::hexapod);
+  CompensationOptions o = options_for({0}, 1);
+  o.settle_steps = 0;
+  o.fail_step = 1000;  // healthy windows [0,400) and [400,800) come first
+  const LearningResult r = compensate(walker, o);
+  ASSERT_TRUE(r.detection_step.has_value());
+  // [800,1200) holds 200 disabled steps: 19 deg > 8, detected at its end.
+  EXPECT_EQ(*r.detection_step, 1200);
+  EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeWalker::kGainDegPerStep * 200, 1e-9);
+  EXPECT_TRUE(r.converged);
+}
+
+TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
+  // A bias no period combination can cancel: 0.2 deg/step, 80 deg per window.
+  FakeWalker walker(RobotKind::hexapod, 0.2);
+  CompensationOptions o = options_for({0}, 3);
+  o.annealing.max_trials = 12;
+  o.settle_steps = 0;
+  const LearningResult r = compensate(walker, o);
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.status, "not converged");
+  EXPECT_EQ(r.reason, StopReason::trial_cap);
+  EXPECT_EQ(r.trials, 12);
+  EXPECT_GE(r.final_deviation_deg, kDefaultThresholdDeg);
+  EXPECT_EQ(periods_of(walker), r.periods);
+}
+
+TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
+  FakeWalker walker(RobotKind::quadruped, 0.2);
+  CompensationOptions o = options_for({0, 1, 2}, 4);  // only L2 works: 5 combinations
+  o.settle_steps = 0;
+  const LearningResult r = compensate(walker, o);
+  EXPECT_EQ(r.status, "not converged");
+  EXPECT_EQ(r.reason, StopReason::space_exhausted);
+  EXPECT_EQ(r.trials, 4);
+}
+
+TEST(Compensation, JsonHasTheReportedFields) {
+  const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
+  FakeWalker walker(RobotKind::hexapod);
+  const CompensationOptions o = options_for({0}, 1);
+  const nlohmann::json j = to_json(compensate(walker, o), morph, o.disabled);
+  EXPECT_TRUE(j.at("converged").is_boolean());
+  EXPECT_TRUE(j.at("trials").is_number_integer());
+  EXPECT_TRUE(j.at("final_deviation_deg").is_number());
+  EXPECT_EQ(j.at("periods").at("R1"), kStartPeriod);
+  EXPECT_EQ(j.at("periods").size(), morph.size());
+  EXPECT_EQ(j.at("disabled"), nlohmann::json::array({"R1"}));
+  EXPECT_EQ(j.at("reason"), "below threshold");
+  ASSERT_EQ(j.at("trace").size(), j.at("trials").get<std::size_t>());
+  for (const nlohmann::json& t : j.at("trace")) {
+    EXPECT_TRUE(t.at("periods").is_object());
+    EXPECT_TRUE(t.at("deviation_deg").is_number());
+    EXPECT_TRUE(t.at("accepted").is_boolean());
+  }
+}
+
+TEST(Compensation, RejectsBadInput) {
+  const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
+  auto bad = [&](const std::function<void(CompensationOptions&)>& change) {
+    CompensationOptions o = options_for({0}, 1);
+    change(o);
+    EXPECT_THROW(validate(o, hex), BadInput);
+  };
+  bad([](CompensationOptions& o) { o.window_steps = 0; });
+  bad([](CompensationOptions& o) { o.settle_steps = -1; });
+  bad([](CompensationOptions& o) { o.fail_step = -1; });
+  bad([](CompensationOptions& o) { o.detection_windows = 0; });
+  bad([](CompensationOptions& o) { o.annealing.beta = -1.0; });
+  bad([](CompensationOptions& o) { o.annealing.threshold_deg = 0.0; });
+  bad([](CompensationOptions& o) { o.disabled = {0, 1, 2, 3, 4, 5}; });
+  bad([](CompensationOptions& o) { o.disabled = {6}; });
+  bad([](CompensationOptions& o) { o.disabled = {1, 1}; });
+  FakeWalker walker(RobotKind::hexapod);
+  CompensationOptions o = options_for({0}, 1);
+  o.window_steps = 0;
+  EXPECT_THROW(compensate(walker, o), BadInput);
+  EXPECT_EQ(walker.step_count(), 0);
+}
+
+TEST(Compensation, WrapsYawToHalfOpenInterval) {
+  EXPECT_DOUBLE_EQ(wrap_deg(190.0), -170.0);
+  EXPECT_DOUBLE_EQ(wrap_deg(-190.0), 170.0);
+  EXPECT_DOUBLE_EQ(wrap_deg(180.0), 180.0);
+  EXPECT_DOUBLE_EQ(wrap_deg(-180.0), 180.0);
+  EXPECT_DOUBLE_EQ(wrap_deg(540.0), 180.0);
+  EXPECT_DOUBLE_EQ(wrap_deg(-30.0), -30.0);
+}
+
+// The default settle time covers the lock of every learnable period except p = 4 (which is
+// nearly right long before it locks): from each period, after a reset to p in {5, 6, 8, 9},
+// every leg's swing pattern repeats with the gait period p(2p+1) from the settle step on.
+TEST(Compensation, DefaultSettleCoversCpgLockAndDelays) {
+  constexpr long kWarmup = 2000;
+  constexpr long kChecked = 1000;
+  for (RobotKind kind : {RobotKind::hexapod, RobotKind::quadruped}) {
+    const neural::ControllerModel model = neural::make_controller_model(kind);
+    const long settle = default_settle_steps(model);
+    for (int from : {4, 5, 6, 8, 9}) {
+      for (int p : {5, 6, 8, 9}) {
+        neural::ControllerState state = neural::make_controller_state(model, from);
+        for (long t = 0; t < kWarmup; ++t) neural::controller_step(model, state);
+        neural::set_synchronised(state, false);
+        neural::set_period(model, state, p);
+        const long cycle = p * (2L * p + 1);
+        std::vector<std::vector<bool>> swing;
+        for (long t = 0; t < settle + kChecked + cycle; ++t) {
+          neural::controller_step(model, state);
+          std::vector<bool> now;
+          for (const neural::LegState& leg : state.legs) now.push_back(leg.delayed.swing);
+          swing.push_back(now);
+        }
+        for (long t = settle; t < settle + kChecked; ++t) {
+          ASSERT_EQ(swing[t], swing[t + cycle])
+              << model.morphology.name << " from p" << from << " to p" << p << " at step " << t;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(default_settle_steps(neural::make_controller_model(RobotKind::hexapod)), 337);
+  EXPECT_EQ(default_settle_steps(neural::make_controller_model(RobotKind::quadruped)), 319);
+}
+
+}  // namespace
+}  // namespace multicpg::learning

@@ -1,0 +1,307 @@
+// Experiment machinery without physics: scenario lists (SPEC §8), the parallel, resumable
+// runner and the tables. The task function is a stand-in driven only by the task's seed.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <random>
+#include <set>
+#include <stdexcept>
+
+#include "common/errors.h"
+#include "experiments/runner.h"
+#include "experiments/scenarios.h"
+#include "experiments/tables.h"
+#include "learning/annealing.h"
+#include "learning/compensation.h"
+#include "tests/fake_walker.h"
+
+namespace multicpg::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+using robot::RobotKind;
+
+const robot::Morphology& hexapod() {
+  return robot::morphology(RobotKind::hexapod);
+}
+
+// A result shaped like learning::to_json, drawn from the task's seed only.
+nlohmann::json fake_result(const Task& task) {
+  std::mt19937_64 rng(task.seed);
+  const int trials = 1 + static_cast<int>(learning::draw_below(rng, 30));
+  const bool converged = learning::draw_unit(rng) < 0.8;
+  nlohmann::json periods = nlohmann::json::object();
+  for (const robot::Leg& leg : hexapod().legs) {
+    periods[leg.name] = 4 + static_cast<int>(learning::draw_below(rng, 2));
+  }
+  return {{"converged", converged}, {"status", converged ? "converged" : "not converged"},
+          {"trials", trials},       {"final_deviation_deg", 20.0 * learning::draw_unit(rng)},
+          {"initial_deviation_deg", 40.0},
+          {"periods", periods},     {"disabled", task.params.at("disabled")}};
+}
+
+// A fresh directory under the system temp dir, removed at the end of the test.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name)
+      : path_(fs::temp_directory_path() / ("multicpg_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+RunnerOptions options(const fs::path& out, int jobs) {
+  RunnerOptions o;
+  o.out_dir = out;
+  o.jobs = jobs;
+  o.arguments = {{"robot", "hexapod"}, {"runs", 3}, {"seed", 1}};
+  o.progress = false;
+  return o;
+}
+
+std::vector<Task> small_experiment() {
+  const std::vector<Scenario> all = paper_scenarios(RobotKind::hexapod);
+  const std::vector<Scenario> some(all.begin(), all.begin() + 5);
+  return scenario_tasks(hexapod(), some, 3, 1);
+}
+
+std::string table_of(const std::vector<Task>& tasks, const RunnerOutcome& outcome) {
+  const std::vector<GroupSummary> rows = summarize(hexapod(), tasks, outcome.results);
+  return scenario_table_csv(rows) + scenario_table_markdown(rows);
+}
+
+TEST(Scenarios, HexapodHas24UpToMirror) {
+  const std::vector<Scenario> s = paper_scenarios(RobotKind::hexapod);
+  ASSERT_EQ(s.size(), 24u);
+  std::map<std::size_t, int> by_size;
+  std::set<std::string> names;
+  for (const Scenario& x : s) {
+    ++by_size[x.disabled.size()];
+    names.insert(x.name);
+  }
+  EXPECT_EQ(by_size[1], 6);
+  EXPECT_EQ(by_size[2], 9);
+  EXPECT_EQ(by_size[3], 9);
+  for (const char* n : {"R1", "L1", "L3", "R1+R3", "R1+L2", "R1+R2", "R1+L1", "R1+R3+L2"}) {
+    EXPECT_TRUE(names.contains(n)) << n;
+  }
+  // Mirror images and whole sides are left out.
+  for (const char* n : {"L1+L3", "R2+L1", "L1+L3+R2", "R1+R2+R3", "L1+L2+L3"}) {
+    EXPECT_FALSE(names.contains(n)) << n;
+  }
+  EXPECT_EQ(s.front().name, "R1");
+  EXPECT_EQ(s.back().disabled.size(), 3u);
+}
+
+TEST(Scenarios, QuadrupedAndBetaStudy) {
+  std::vector<std::string> names;
+  for (const Scenario& s : paper_scenarios(RobotKind::quadruped)) names.push_back(s.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"R1", "R2", "L1", "L2"}));
+  EXPECT_THROW(paper_scenarios(RobotKind::octopod), BadInput);
+  EXPECT_EQ(beta_study_scenario().name, "R1+R2");
+
+  const std::vector<Task> tasks = beta_tasks(kBetaStudyValues, kBetaRuns, 1);
+  EXPECT_EQ(tasks.size(), kBetaStudyValues.size() * kBetaRuns);
+  EXPECT_EQ(tasks.front().key, "beta0_run000");
+  EXPECT_EQ(tasks[kBetaRuns].group, "0.1");
+  EXPECT_EQ(tasks[kBetaRuns].params.at("beta"), 0.1);
+  EXPECT_EQ(tasks.back().key, "beta10_run049");
+  EXPECT_THROW(beta_tasks({-1.0}, 1, 1), BadInput);
+  EXPECT_THROW(beta_tasks({0.5}, 0, 1), BadInput);
+  EXPECT_THROW(scenario_tasks(hexapod(), paper_scenarios(RobotKind::hexapod), 0, 1), BadInput);
+}
+
+TEST(Runner, SeedsComeFromKeysOnly) {
+  const std::vector<Task> tasks = small_experiment();
+  EXPECT_EQ(tasks.front().key, "R1_run000");
+  EXPECT_EQ(tasks.front().seed, derive_seed(1, "R1_run000"));
+  EXPECT_NE(derive_seed(1, "R1_run000"), derive_seed(2, "R1_run000"));
+  EXPECT_NE(derive_seed(1, "R1_run000"), derive_seed(1, "R1_run001"));
+  // Pinned (checked independently with Python): changing the derivation would silently change
+  // every experiment's runs.
+  EXPECT_EQ(derive_seed(1, "R1_run000"), 0x82eba1d17a2ecc9eULL);
+  std::set<std::uint64_t> seeds;
+  for (const Task& t : tasks) seeds.insert(t.seed);
+  EXPECT_EQ(seeds.size(), tasks.size());
+}
+
+TEST(Runner, OneAndTwoJobsGiveTheSameTable) {
+  const std::vector<Task> tasks = small_experiment();
+  TempDir one("jobs1");
+  TempDir two("jobs2");
+  const RunnerOutcome a = run_tasks(tasks, fake_result, options(one.path(), 1));
+  RunnerOptions o2 = options(two.path(), 2);
+  o2.progress = true;  // exercises the progress lines (stderr, not checked)
+  const RunnerOutcome b = run_tasks(tasks, fake_result, o2);
+  EXPECT_EQ(a.ran, static_cast<int>(tasks.size()));
+  EXPECT_EQ(a.results, b.results);
+  EXPECT_EQ(table_of(tasks, a), table_of(tasks, b));
+  EXPECT_TRUE(fs::exists(one.path() / "experiment.json"));
+  for (const Task& t : tasks) EXPECT_TRUE(fs::exists(one.path() / "runs" / (t.key + ".json")));
+}
+
+TEST(Runner, InterruptedRunResumesWithoutRepeatingFinishedRuns) {
+  const std::vector<Task> tasks = small_experiment();
+  TempDir whole("whole");
+  const std::string expected =
+      table_of(tasks, run_tasks(tasks, fake_result, options(whole.path(), 1)));
+
+  for (int jobs : {1, 2}) {
+    TempDir dir("resume" + std::to_string(jobs));
+    constexpr int kFinishedBeforeKill = 4;
+    std::atomic<int> calls{0};
+    std::atomic<int> completed{0};
+    auto dies = [&](const Task& t) {
+      if (calls++ >= kFinishedBeforeKill) throw std::runtime_error("killed");
+      ++completed;
+      return fake_result(t);
+    };
+    EXPECT_THROW(run_tasks(tasks, dies, options(dir.path(), jobs)), std::runtime_error);
+    const int saved = completed.load();
+    EXPECT_GE(saved, kFinishedBeforeKill);
+
+    std::atomic<int> reruns{0};
+    auto counts = [&](const Task& t) {
+      ++reruns;
+      return fake_result(t);
+    };
+    const RunnerOutcome resumed = run_tasks(tasks, counts, options(dir.path(), jobs));
+    EXPECT_EQ(resumed.loaded, saved);
+    EXPECT_EQ(resumed.ran, static_cast<int>(tasks.size()) - saved);
+    EXPECT_EQ(reruns.load() + saved, static_cast<int>(tasks.size()));
+    EXPECT_EQ(table_of(tasks, resumed), expected);
+
+    // A third start has nothing left to do.
+    const RunnerOutcome again = run_tasks(tasks, counts, options(dir.path(), jobs));
+    EXPECT_EQ(again.ran, 0);
+    EXPECT_EQ(table_of(tasks, again), expected);
+  }
+}
+
+TEST(Runner, RefusesToResumeWithDifferentArguments) {
+  const std::vector<Task> tasks = small_experiment();
+  TempDir dir("refuse");
+  run_tasks(tasks, fake_result, options(dir.path(), 1));
+  RunnerOptions other = options(dir.path(), 1);
+  other.arguments["seed"] = 2;
+  try {
+    run_tasks(tasks, fake_result, other);
+    ADD_FAILURE() << "resumed with another seed";
+  } catch (const BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("arguments (seed)"), std::string::npos) << e.what();
+  }
+  const std::vector<Task> fewer(tasks.begin(), tasks.end() - 1);
+  EXPECT_THROW(run_tasks(fewer, fake_result, options(dir.path(), 1)), BadInput);
+  // The thread count is not an argument of the results.
+  EXPECT_NO_THROW(run_tasks(tasks, fake_result, options(dir.path(), 2)));
+}
+
+TEST(Runner, RejectsBadInput) {
+  TempDir dir("bad");
+  EXPECT_THROW(run_tasks(small_experiment(), fake_result, options(dir.path(), 0)), BadInput);
+  std::vector<Task> twice = small_experiment();
+  twice.push_back(twice.front());
+  EXPECT_THROW(run_tasks(twice, fake_result, options(dir.path(), 1)), BadInput);
+  std::vector<Task> slash = small_experiment();
+  slash.front().key = "a/b";
+  EXPECT_THROW(run_tasks(slash, fake_result, options(dir.path(), 1)), BadInput);
+}
+
+// The pieces together: compensation on the fake walker as the task, through runner and tables.
+TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
+  const robot::Morphology& quad = robot::morphology(RobotKind::quadruped);
+  const std::vector<Task> tasks = scenario_tasks(quad, paper_scenarios(RobotKind::quadruped), 2, 5);
+  auto learn = [&](const Task& t) {
+    learning::FakeWalker walker(RobotKind::quadruped);
+    learning::CompensationOptions o;
+    for (const nlohmann::json& leg : t.params.at("disabled")) {
+      o.disabled.push_back(robot::leg_index(quad, leg.get<std::string>()));
+    }
+    o.seed = t.seed;
+    o.settle_steps = 0;
+    return learning::to_json(learning::compensate(walker, o), quad, o.disabled);
+  };
+  TempDir one("learn1");
+  TempDir two("learn2");
+  const std::vector<GroupSummary> rows =
+      summarize(quad, tasks, run_tasks(tasks, learn, options(one.path(), 1)).results);
+  const std::vector<GroupSummary> again =
+      summarize(quad, tasks, run_tasks(tasks, learn, options(two.path(), 2)).results);
+  EXPECT_EQ(scenario_table_csv(rows), scenario_table_csv(again));
+  ASSERT_EQ(rows.size(), 4u);
+  for (const GroupSummary& r : rows) {
+    EXPECT_EQ(r.runs, 2);
+    EXPECT_EQ(r.converged, 2) << r.group;
+    EXPECT_LT(r.final_deviation_deg.mean, learning::kDefaultThresholdDeg);
+    EXPECT_FALSE(r.best_periods.empty());
+  }
+}
+
+TEST(Tables, SummariesAndFormatting) {
+  std::vector<Task> tasks;
+  std::vector<nlohmann::json> results;
+  auto add = [&](const std::string& group, bool converged, int trials, double deviation, int r2) {
+    tasks.push_back({group + std::to_string(tasks.size()), group, 0, 0, {}});
+    nlohmann::json periods{{"R1", 4}, {"R2", r2}, {"R3", 4}, {"L1", 4}, {"L2", 4}, {"L3", 4}};
+    results.push_back({{"converged", converged},
+                       {"status", converged ? "converged" : "no deviation"},
+                       {"trials", trials},
+                       {"initial_deviation_deg", 10.0 * trials},
+                       {"final_deviation_deg", deviation},
+                       {"periods", periods},
+                       {"disabled", {"R1"}}});
+  };
+  add("R1", true, 10, 2.0, 6);
+  add("R1", true, 20, 4.0, 5);
+  add("R1", false, 0, 6.0, 4);
+  add("L1", true, 5, 1.0, 9);
+  const std::vector<GroupSummary> rows = summarize(hexapod(), tasks, results);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].group, "R1");
+  EXPECT_EQ(rows[0].runs, 3);
+  EXPECT_EQ(rows[0].converged, 2);
+  EXPECT_EQ(rows[0].no_deviation, 1);
+  EXPECT_DOUBLE_EQ(rows[0].final_deviation_deg.mean, 4.0);
+  EXPECT_DOUBLE_EQ(rows[0].final_deviation_deg.sd, 2.0);
+  EXPECT_DOUBLE_EQ(rows[0].trials.mean, 10.0);
+  EXPECT_DOUBLE_EQ(rows[0].trials.sd, 10.0);
+  EXPECT_DOUBLE_EQ(rows[0].median_trials, 10.0);
+  EXPECT_DOUBLE_EQ(rows[0].initial_deviation_deg.mean, 100.0);
+  EXPECT_EQ(rows[0].within_paper_trials, 2);  // 10 and 20 trials: within the paper's 20
+  // The summary survives its JSON form (experiment results pages are made from it).
+  const GroupSummary back = group_summary_from_json(to_json(rows[0]));
+  EXPECT_EQ(back.best_periods, rows[0].best_periods);
+  EXPECT_DOUBLE_EQ(back.trials.sd, rows[0].trials.sd);
+  EXPECT_EQ(back.within_paper_trials, rows[0].within_paper_trials);
+  // A tie (one run each): the alphabetically first combination.
+  EXPECT_EQ(rows[0].best_periods, "R2=5 R3=4 L1=4 L2=4 L3=4");
+  EXPECT_EQ(rows[0].best_count, 1);
+  EXPECT_EQ(rows[1].best_periods, "R2=9 R3=4 L1=4 L2=4 L3=4");
+  EXPECT_DOUBLE_EQ(rows[1].trials.sd, 0.0);
+
+  EXPECT_EQ(scenario_table_csv(rows),
+            "scenario,runs,converged,no_deviation,share_converged,final_deviation_mean_deg,"
+            "final_deviation_sd_deg,trials_mean,trials_sd,best_periods,best_count\n"
+            "R1,3,2,1,0.67,4.00,2.00,10.0,10.0,R2=5 R3=4 L1=4 L2=4 L3=4,1\n"
+            "L1,1,1,0,1.00,1.00,0.00,5.0,0.0,R2=9 R3=4 L1=4 L2=4 L3=4,1\n");
+  EXPECT_EQ(beta_table_csv(rows),
+            "beta,runs,converged,share_converged,trials_mean,trials_sd,"
+            "final_deviation_mean_deg,final_deviation_sd_deg\n"
+            "R1,3,2,0.67,10.0,10.0,4.00,2.00\n"
+            "L1,1,1,1.00,5.0,0.0,1.00,0.00\n");
+  const std::string md = scenario_table_markdown(rows);
+  EXPECT_NE(
+      md.find("| R1 | 3 | 0.67 | 1 | 4.00 ± 2.00 | 10.0 ± 10.0 | R2=5 R3=4 L1=4 L2=4 L3=4 (1) |"),
+      std::string::npos);
+  EXPECT_NE(beta_table_markdown(rows).find("| L1 | 1 | 1.00 | 5.0 ± 0.0 | 1.00 ± 0.00 |"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace multicpg::experiments
