@@ -8,5 +8,12 @@ namespace multicpg::apps {
 
 void register_gait(CLI::App& app);
 void register_cpg(CLI::App& app);
+void register_view(CLI::App& app);
+void register_walk(CLI::App& app);
+void register_model(CLI::App& app);
+void register_learn(CLI::App& app);
+void register_experiment(CLI::App& app);
+void register_render(CLI::App& app);
+void register_reproduce(CLI::App& app);
 
 }  // namespace multicpg::apps

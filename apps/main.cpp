@@ -11,6 +11,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   apps::register_gait(app);
   apps::register_cpg(app);
+  apps::register_walk(app);
+  apps::register_model(app);
+  apps::register_learn(app);
+  apps::register_experiment(app);
+  apps::register_render(app);
+  apps::register_view(app);
+  apps::register_reproduce(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -47,6 +47,16 @@ void write_file_atomic(const fs::path& path, const std::string& text) {
   file.commit();
 }
 
+void require_writable_file(const fs::path& path) {
+  if (path.empty()) throw BadInput("empty output path");
+  if (fs::is_directory(path)) throw BadInput("cannot write '" + path.string() + "': is a directory");
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
+    throw BadInput("cannot write '" + path.string() + "': folder '" + parent.string() +
+                   "' does not exist or is not writable");
+  }
+}
+
 void ensure_writable_dir(const fs::path& dir) {
   if (dir.empty()) throw BadInput("empty output directory");
   std::error_code ec;

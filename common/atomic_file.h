@@ -31,6 +31,10 @@ class AtomicFile {
 // Writes `text` to `path` atomically.
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
 
+// Checks that `path` can be created: its folder exists and is writable and it is no folder
+// itself. Throws BadInput naming the path; lets a long run fail before it starts.
+void require_writable_file(const std::filesystem::path& path);
+
 // Makes `dir` (and parents) and checks a file can be created in it; throws BadInput otherwise.
 void ensure_writable_dir(const std::filesystem::path& dir);
 

@@ -19,9 +19,13 @@ std::string make_temp_dir(const std::string& prefix) {
 }
 
 CliResult run_cli(const std::string& args) {
+  return run_shell(std::string(MULTICPG_EXE) + " " + args);
+}
+
+CliResult run_shell(const std::string& command_line) {
   const std::string dir = make_temp_dir("multicpg-cli-");
   const std::string err_path = dir + "/stderr";
-  const std::string cmd = std::string(MULTICPG_EXE) + " " + args + " 2>" + err_path;
+  const std::string cmd = command_line + " 2>" + err_path;
   CliResult result;
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (pipe == nullptr) throw std::runtime_error("popen failed");

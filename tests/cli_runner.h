@@ -14,6 +14,10 @@ struct CliResult {
 // Runs `multicpg <args>` through the shell (args are shell words) and captures both streams.
 CliResult run_cli(const std::string& args);
 
+// Runs a whole shell command line (e.g. one that changes the environment first, or wraps the
+// binary, whose path is MULTICPG_EXE) and captures both streams.
+CliResult run_shell(const std::string& command_line);
+
 // A fresh empty directory under the system temp dir, removed by the caller if wanted.
 std::string make_temp_dir(const std::string& prefix);
 

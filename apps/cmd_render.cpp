@@ -1,0 +1,112 @@
+// multicpg render: a video (.mp4) or picture (.png) of a simulated walk or learning run, the
+// camera following the robot and disabled legs in red (issue 5).
+#include <iostream>
+
+#include "apps/commands.h"
+#include "apps/learning_options.h"
+#include "apps/options.h"
+#include "common/errors.h"
+#include "experiments/learning_run.h"
+#include "report/film.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct RenderOptions {
+  std::string robot = "hexapod";
+  std::string periods = "4";
+  std::string disable;
+  long disable_at = 0;
+  long steps = 400;
+  bool learn = false;
+  bool tunnel = false;
+  LearningFlags learning;
+  SimFlags sim;
+  std::string out;
+  int width = report::kDefaultFrameWidth;
+  int height = report::kDefaultFrameHeight;
+  int speed = 1;
+};
+
+void run_render(const RenderOptions& o) {
+  const robot::RobotKind kind = robot::parse_robot(o.robot);
+  const robot::Morphology& morph = robot::morphology(kind);
+  report::film_format(o.out);  // an unknown file type fails before any work
+  const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, o.disable);
+  const std::vector<int> periods = parse_periods(morph, o.periods);
+  require_positive(o.steps, "--steps");
+  if (o.disable_at < 0) throw BadInput("--disable-at must not be negative");
+  std::optional<learning::CompensationOptions> learn;
+  if (o.learn) learn = compensation_options(o.learning, morph, disabled, o.disable_at);
+
+  sim::SimOptions sim_opts = sim_options(o.sim);
+  sim_opts.scene.tunnel = o.tunnel;
+  const sim::SimModel model = sim::make_sim_model(kind, sim_opts);
+  report::FilmSpec spec;
+  spec.out = o.out;
+  spec.width = o.width;
+  spec.height = o.height;
+  spec.speed = o.speed;
+  report::Film film(model, spec);
+
+  if (learn) {
+    int trial = 0;
+    std::vector<int> last;
+    const experiments::LearningRun run =
+        experiments::run_learning(model, *learn, false, 0, [&](const sim::SimState& s) {
+          std::vector<int> now;
+          for (const auto& leg : s.controller.legs) now.push_back(leg.cpg.period);
+          if (!last.empty() && now != last) ++trial;
+          last = now;
+          film.capture(s, trial == 0 ? "walking, measuring the deviation"
+                                     : "learning: trial " + std::to_string(trial));
+        });
+    const std::string summary = run.result.status + " after " +
+                                std::to_string(run.result.trials) + " trials";
+    if (film.format() == report::FilmFormat::picture) film.picture(run.final_state, summary);
+    film.finish();
+    std::cout << summary << "; wrote " << o.out << " (" << film.frames() << " frames)\n";
+    return;
+  }
+  sim::WalkSpec walk;
+  walk.periods = periods;
+  walk.disabled = disabled;
+  walk.disable_at = o.disable_at;
+  walk.steps = o.steps;
+  walk.record = false;
+  walk.on_step = [&](const sim::SimState& s) {
+    film.capture(s);
+    if (film.format() == report::FilmFormat::picture && s.step == o.steps) film.picture(s);
+  };
+  const sim::WalkResult r = sim::walk(model, walk);
+  film.finish();
+  std::cout << "walked " << r.distance_m << " m; wrote " << o.out << " (" << film.frames()
+            << " frames)\n";
+}
+
+}  // namespace
+
+void register_render(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "render", "render a walk or a learning run to a video (.mp4) or picture (.png), headless");
+  cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")
+      ->required();
+  cmd->add_option("--robot", o->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")
+      ->capture_default_str();
+  cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1,R3");
+  cmd->add_option("--disable-at", o->disable_at, "step at which they fail")->capture_default_str();
+  cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")->capture_default_str();
+  cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
+  cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
+  add_learning_flags(*cmd, o->learning);
+  add_sim_flags(*cmd, o->sim);
+  cmd->add_option("--width", o->width, "frame width in pixels")->capture_default_str();
+  cmd->add_option("--height", o->height, "frame height in pixels")->capture_default_str();
+  cmd->add_option("--speed", o->speed, "controller steps per video frame (1 = real time)")
+      ->capture_default_str();
+  cmd->callback([o] { run_render(*o); });
+}
+
+}  // namespace multicpg::apps

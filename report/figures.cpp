@@ -1,0 +1,436 @@
+#include "report/figures.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "report/subprocess.h"
+
+namespace multicpg::report {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kGnuplot = "gnuplot";
+// Installed layout: <prefix>/bin/multicpg and <prefix>/share/multicpg/gnuplot.
+constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
+constexpr const char* kFont = "DejaVu Sans,11";
+
+constexpr std::array<FigureInfo, 9> kFigures{{
+    {"gait", "fig02_gait", "gait.gp", 1200, 900,
+     "Fig. 2: gait diagrams for p = 1, 4, 5, 6, 8, 9 (blue = stance, white = swing)"},
+    {"cpg-sync", "fig06_cpg_sync", "cpg_sync.gp", 1200, 700,
+     "Fig. 6: master and client CPG outputs, synchronised and free"},
+    {"learning-trace", "fig08_learning_trace", "learning_trace.gp", 1000, 550,
+     "Fig. 8: deviation per trial of one learning run"},
+    {"motor", "fig09_motor_outputs", "motor_outputs.gp", 1200, 1000,
+     "Fig. 9: the 18 motor outputs after learning"},
+    {"contacts", "fig10_foot_contacts", "foot_contacts.gp", 1200, 800,
+     "Fig. 10: foot contact signals of the legs"},
+    {"learning-hexapod", "fig11_learning_hexapod", "learning_summary.gp", 1200, 800,
+     "Fig. 11: learning results per disabled-leg scenario, hexapod"},
+    {"learning-quadruped", "fig13_learning_quadruped", "learning_summary.gp", 900, 800,
+     "Fig. 13: learning results per disabled leg, quadruped"},
+    {"beta", "fig14_beta", "beta_study.gp", 1000, 600,
+     "Fig. 14: trials to converge for each annealing factor beta"},
+    {"trunk-path", "trunk_path", "trunk_path.gp", 1000, 700,
+     "Trunk path seen from above, before and after learning"},
+}};
+
+// --- CSV -------------------------------------------------------------------------------------
+
+// Room for any double in shortest round-trip form (at most 24 characters).
+constexpr std::size_t kNumberChars = 32;
+
+std::string number(double value) {
+  if (!std::isfinite(value)) return "NaN";
+  std::array<char, kNumberChars> buf{};
+  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), value);
+  return ec == std::errc() ? std::string(buf.data(), end) : "NaN";
+}
+
+// RFC 4180 quoting, only where a field needs it.
+std::string field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+class Csv {
+ public:
+  explicit Csv(const std::vector<std::string>& header) { row(header); }
+  void row(const std::vector<std::string>& fields) {
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (i > 0) text_ += ',';
+      text_ += field(fields[i]);
+    }
+    text_ += '\n';
+  }
+  // A blank line: gnuplot starts a new line segment there (used between polylines).
+  void gap() { text_ += '\n'; }
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
+};
+
+// --- gnuplot ---------------------------------------------------------------------------------
+
+// gnuplot single-quoted string: a quote is written twice.
+std::string gp_string(std::string_view text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+fs::path scripts_dir() {
+  const fs::path source(MULTICPG_GNUPLOT_SOURCE_DIR);
+  if (fs::is_directory(source)) return source;
+  std::error_code ec;
+  const fs::path installed =
+      fs::read_symlink("/proc/self/exe", ec).parent_path() / kInstalledScripts;
+  if (!ec && fs::is_directory(installed)) return installed.lexically_normal();
+  throw RuntimeFailure("gnuplot scripts not found in " + source.string() +
+                       " nor next to the program");
+}
+
+// Parameters handed to a script as gnuplot variables.
+class Params {
+ public:
+  Params& text(const std::string& name, std::string_view value) {
+    code_ += name + "=" + gp_string(value) + "; ";
+    return *this;
+  }
+  Params& num(const std::string& name, double value) {
+    code_ += name + "=" + number(value) + "; ";
+    return *this;
+  }
+  const std::string& code() const { return code_; }
+
+ private:
+  std::string code_;
+};
+
+std::string temp_name(const fs::path& path) {
+  return path.string() + ".tmp" + std::to_string(::getpid());
+}
+
+// Runs one script for one terminal into a temporary file, then moves it into place.
+void run_gnuplot(const fs::path& script, const std::string& terminal, const Params& params,
+                 const fs::path& out) {
+  const std::string tmp = temp_name(out);
+  const std::string preamble = terminal + "; set output " + gp_string(tmp) + "; " + params.code();
+  const ProcessResult result = run_process({kGnuplot, "-e", preamble, script.string()});
+  std::error_code ec;
+  if (result.exit_code != 0 || !fs::exists(tmp) || fs::file_size(tmp, ec) == 0) {
+    fs::remove(tmp, ec);
+    throw RuntimeFailure("gnuplot " + script.filename().string() +
+                         " failed: " + tool_error(result));
+  }
+  fs::rename(tmp, out, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    fs::remove(tmp, ec);
+    throw RuntimeFailure("cannot move '" + tmp + "' into place: " + why);
+  }
+}
+
+FigureFiles draw(const FigureInfo& info, const fs::path& out_dir, std::string_view stem,
+                 const Csv& csv, Params params) {
+  const std::string name(stem.empty() ? info.stem : stem);
+  FigureFiles files{out_dir / (name + ".png"), out_dir / (name + ".svg"),
+                    out_dir / (name + ".csv")};
+  write_file_atomic(files.csv, csv.text());
+  const fs::path dir = scripts_dir();
+  params.text("data", files.csv.string()).text("dir", (dir / "").string());
+  const fs::path script = dir / info.script;
+  const std::string size =
+      " size " + std::to_string(info.width) + "," + std::to_string(info.height);
+  const std::string look = " enhanced font " + gp_string(kFont) + " background rgb 'white'";
+  run_gnuplot(script, "set terminal pngcairo" + size + look, params, files.png);
+  run_gnuplot(script, "set terminal svg" + size + look, params, files.svg);
+  return files;
+}
+
+// --- input checks ----------------------------------------------------------------------------
+
+void require(bool ok, std::string_view figure, const std::string& what) {
+  if (!ok) throw BadInput(std::string(figure) + ": " + what);
+}
+
+// Every row of `table` has one entry per leg.
+template <class Row>
+void require_rows(const std::vector<Row>& table, const std::vector<std::string>& legs,
+                  std::string_view figure) {
+  require(!legs.empty(), figure, "no legs");
+  require(!table.empty(), figure, "no steps");
+  for (std::size_t t = 0; t < table.size(); ++t) {
+    require(table[t].size() == legs.size(), figure,
+            "step " + std::to_string(t) + " has " + std::to_string(table[t].size()) +
+                " legs, expected " + std::to_string(legs.size()));
+  }
+}
+
+void require_step(double step_seconds, std::string_view figure) {
+  require(step_seconds > 0.0, figure, "step duration must be positive");
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string out;
+  for (const auto& w : words) {
+    if (!out.empty()) out += ' ';
+    out += w;
+  }
+  return out;
+}
+
+// Gait names of SPEC §3 / paper §2.1.
+std::string gait_name(int period) {
+  switch (period) {
+    case 1:
+      return "stop";
+    case 4:
+      return "tripod";
+    case 5:
+      return "tetrapod";
+    case 6:
+      return "transition";
+    case 8:
+      return "fast wave";
+    case 9:
+      return "slow wave";
+    default:
+      return "";
+  }
+}
+
+}  // namespace
+
+std::span<const FigureInfo> known_figures() {
+  return kFigures;
+}
+
+const FigureInfo& figure_by_name(std::string_view name) {
+  for (const FigureInfo& f : kFigures) {
+    if (f.name == name) return f;
+  }
+  std::string known;
+  for (const FigureInfo& f : kFigures) {
+    if (!known.empty()) known += ", ";
+    known += f.name;
+  }
+  throw BadInput("unknown figure '" + std::string(name) + "' (known: " + known + ")");
+}
+
+FigureFiles plot_gait_diagrams(const std::vector<GaitPanel>& panels,
+                               const std::vector<std::string>& legs, double step_seconds,
+                               const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("gait");
+  require(!panels.empty(), info.name, "no gait panels");
+  require_step(step_seconds, info.name);
+  ensure_writable_dir(out_dir);
+  // Stance runs as intervals [start, end) in steps: one box per run draws without seams.
+  Csv csv({"period", "leg", "row", "stance_start_step", "stance_end_step"});
+  Params params;
+  std::size_t steps = 0;
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    const GaitPanel& panel = panels[i];
+    require_rows(panel.swing, legs, info.name);
+    steps = std::max(steps, panel.swing.size());
+    for (std::size_t leg = 0; leg < legs.size(); ++leg) {
+      std::size_t t = 0;
+      while (t < panel.swing.size()) {
+        if (panel.swing[t][leg]) {
+          ++t;
+          continue;
+        }
+        const std::size_t start = t;
+        while (t < panel.swing.size() && !panel.swing[t][leg]) ++t;
+        csv.row({std::to_string(panel.period), legs[leg], std::to_string(leg),
+                 std::to_string(start), std::to_string(t)});
+      }
+    }
+    const std::string gait = gait_name(panel.period);
+    params.num("period" + std::to_string(i + 1), panel.period)
+        .text("title" + std::to_string(i + 1),
+              "p = " + std::to_string(panel.period) + (gait.empty() ? "" : ": " + gait));
+  }
+  params.num("panels", static_cast<double>(panels.size()))
+      .num("steps", static_cast<double>(steps))
+      .num("step_seconds", step_seconds)
+      .text("legs", join(legs));
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_cpg_sync(const std::vector<CpgPairPoint>& synchronised,
+                          const std::vector<CpgPairPoint>& independent, int master_period,
+                          int client_period, const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("cpg-sync");
+  require(!synchronised.empty() && synchronised.size() == independent.size(), info.name,
+          "need two equally long non-empty traces");
+  ensure_writable_dir(out_dir);
+  Csv csv({"step", "sync_master_x1", "sync_master_x2", "sync_client_x1", "sync_client_x2",
+           "free_master_x1", "free_master_x2", "free_client_x1", "free_client_x2"});
+  for (std::size_t t = 0; t < synchronised.size(); ++t) {
+    const CpgPairPoint& s = synchronised[t];
+    const CpgPairPoint& f = independent[t];
+    csv.row({std::to_string(t), number(s.master_x1), number(s.master_x2), number(s.client_x1),
+             number(s.client_x2), number(f.master_x1), number(f.master_x2), number(f.client_x1),
+             number(f.client_x2)});
+  }
+  Params params;
+  params.num("master_period", master_period).num("client_period", client_period);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
+                                const std::vector<std::string>& legs, double threshold_deg,
+                                const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("learning-trace");
+  require(!trials.empty(), info.name, "no trials");
+  require(threshold_deg > 0.0, info.name, "threshold must be positive");
+  ensure_writable_dir(out_dir);
+  std::vector<std::string> header{"trial", "deviation_deg", "accepted", "reference_deg", "change"};
+  header.insert(header.end(), legs.begin(), legs.end());
+  Csv csv(header);
+  // reference_deg: E_ref, the deviation of the combination accepted so far; change: the legs
+  // whose period differs from that combination (SPEC §6).
+  double reference = trials.front().deviation_deg;
+  std::vector<int> accepted = trials.front().periods;
+  for (const TrialPoint& trial : trials) {
+    require(trial.periods.size() == legs.size(), info.name,
+            "trial " + std::to_string(trial.trial) + " has " +
+                std::to_string(trial.periods.size()) + " periods, expected " +
+                std::to_string(legs.size()));
+    std::string change;
+    for (std::size_t leg = 0; leg < legs.size(); ++leg) {
+      if (trial.periods[leg] == accepted[leg]) continue;
+      if (!change.empty()) change += ' ';
+      change += legs[leg] + "=" + std::to_string(trial.periods[leg]);
+    }
+    if (trial.accepted) {
+      reference = trial.deviation_deg;
+      accepted = trial.periods;
+    }
+    std::vector<std::string> row{std::to_string(trial.trial), number(trial.deviation_deg),
+                                 trial.accepted ? "1" : "0", number(reference), change};
+    for (int p : trial.periods) row.push_back(std::to_string(p));
+    csv.row(row);
+  }
+  Params params;
+  params.num("threshold", threshold_deg);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_motor_outputs(const MotorTrace& motor, const std::vector<std::string>& legs,
+                               const std::vector<std::string>& notes, double step_seconds,
+                               const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("motor");
+  require_rows(motor, legs, info.name);
+  require(notes.empty() || notes.size() == legs.size(), info.name, "need one note per leg or none");
+  require_step(step_seconds, info.name);
+  ensure_writable_dir(out_dir);
+  std::vector<std::string> header{"step", "time_s"};
+  for (const auto& leg : legs) {
+    for (const char* joint : {"TC", "CTr", "FTi"}) header.push_back(leg + "_" + joint);
+  }
+  Csv csv(header);
+  for (std::size_t t = 0; t < motor.size(); ++t) {
+    std::vector<std::string> row{std::to_string(t), number(static_cast<double>(t) * step_seconds)};
+    for (const auto& joints : motor[t]) {
+      for (double m : joints) row.push_back(number(m));
+    }
+    csv.row(row);
+  }
+  Params params;
+  params.text("legs", join(legs)).num("step_seconds", step_seconds);
+  for (std::size_t leg = 0; leg < legs.size(); ++leg) {
+    const std::string note = notes.empty() ? "" : notes[leg];
+    params.text("title" + std::to_string(leg + 1),
+                "Leg " + legs[leg] + (note.empty() ? "" : ": " + note));
+  }
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_foot_contacts(const std::vector<std::vector<bool>>& contact,
+                               const std::vector<std::string>& legs, double step_seconds,
+                               const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("contacts");
+  require_rows(contact, legs, info.name);
+  require_step(step_seconds, info.name);
+  ensure_writable_dir(out_dir);
+  std::vector<std::string> header{"step", "time_s"};
+  header.insert(header.end(), legs.begin(), legs.end());
+  Csv csv(header);
+  for (std::size_t t = 0; t < contact.size(); ++t) {
+    std::vector<std::string> row{std::to_string(t), number(static_cast<double>(t) * step_seconds)};
+    for (bool c : contact[t]) row.push_back(c ? "1" : "0");
+    csv.row(row);
+  }
+  Params params;
+  params.text("legs", join(legs)).num("step_seconds", step_seconds);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_learning_summary(const std::vector<ScenarioSummary>& scenarios,
+                                  std::string_view robot, double threshold_deg,
+                                  const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("learning-" + std::string(robot));
+  require(!scenarios.empty(), info.name, "no scenarios");
+  require(threshold_deg > 0.0, info.name, "threshold must be positive");
+  ensure_writable_dir(out_dir);
+  Csv csv({"scenario", "mean_trials", "sd_trials", "mean_deviation_deg", "sd_deviation_deg",
+           "share_converged"});
+  for (const ScenarioSummary& s : scenarios) {
+    require(s.share_converged >= 0.0 && s.share_converged <= 1.0, info.name,
+            "share converged of " + s.scenario + " is outside 0..1");
+    csv.row({s.scenario, number(s.mean_trials), number(s.sd_trials), number(s.mean_deviation_deg),
+             number(s.sd_deviation_deg), number(s.share_converged)});
+  }
+  Params params;
+  params.text("robot", robot).num("threshold", threshold_deg);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_beta_study(const std::vector<BetaSummary>& betas, std::string_view disabled_legs,
+                            const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("beta");
+  require(!betas.empty(), info.name, "no beta values");
+  ensure_writable_dir(out_dir);
+  Csv csv({"beta", "mean_trials", "sd_trials", "share_converged"});
+  for (const BetaSummary& b : betas) {
+    require(b.beta >= 0.0, info.name, "beta must not be negative");
+    csv.row(
+        {number(b.beta), number(b.mean_trials), number(b.sd_trials), number(b.share_converged)});
+  }
+  Params params;
+  params.text("disabled_legs", disabled_legs);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_trunk_paths(const TrunkPaths& paths, const fs::path& out_dir,
+                             std::string_view stem) {
+  const FigureInfo& info = figure_by_name("trunk-path");
+  require(!paths.before.empty() || !paths.after.empty(), info.name, "no path points");
+  ensure_writable_dir(out_dir);
+  // One block per polyline, blocks separated by a blank line so gnuplot breaks the line there.
+  Csv csv({"series", "x_m", "y_m"});
+  const auto block = [&csv](const std::string& series, const std::vector<Point2>& points) {
+    for (const Point2& p : points) csv.row({series, number(p.x), number(p.y)});
+    csv.gap();
+  };
+  block("before", paths.before);
+  block("after", paths.after);
+  for (const auto& wall : paths.walls) block("wall", wall);
+  Params params;
+  params.text("before_label", paths.before_label).text("after_label", paths.after_label);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+}  // namespace multicpg::report

@@ -1,0 +1,133 @@
+// The paper's figures (issue 5), drawn by gnuplot from a CSV written next to each picture.
+// Each plot_* call writes <out_dir>/<stem>.csv, .png (pngcairo) and .svg and returns the paths;
+// the data come in as plain values so this layer depends on no simulation code.
+// Errors: BadInput (one line) for unusable data or an unwritable out_dir, RuntimeFailure (one
+// line, gnuplot's error) when gnuplot fails or leaves no output; the CSV, already whole, stays
+// for inspection and no partial picture is left.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace multicpg::report {
+
+// One controller step of the paper's robot: 27 Hz (SPEC §0).
+inline constexpr double kPaperStepSeconds = 0.037;
+// The paper's deviation threshold E_req in degrees (SPEC §6).
+inline constexpr double kPaperThresholdDeg = 8.0;
+
+struct FigureFiles {
+  std::filesystem::path png;
+  std::filesystem::path svg;
+  std::filesystem::path csv;
+};
+
+// A figure this layer draws: its lookup name, default file stem, gnuplot script, pixel size and
+// a caption for listings and the HTML report.
+struct FigureInfo {
+  std::string_view name;
+  std::string_view stem;
+  std::string_view script;
+  int width;
+  int height;
+  std::string_view caption;
+};
+
+std::span<const FigureInfo> known_figures();
+// Throws BadInput naming the known figures when `name` is not one of them.
+const FigureInfo& figure_by_name(std::string_view name);
+
+// Fig. 2: one gait diagram per period; swing[step][leg], true = swing (white), false = stance
+// (blue, the paper's colours). Legs are drawn top to bottom in the order given.
+struct GaitPanel {
+  int period;
+  std::vector<std::vector<bool>> swing;
+};
+FigureFiles plot_gait_diagrams(const std::vector<GaitPanel>& panels,
+                               const std::vector<std::string>& legs, double step_seconds,
+                               const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// Fig. 6: master and client CPG outputs with the client synchronised (alpha = 1) and free
+// (alpha = 0), e.g. master p = 5, client p = 6.
+struct CpgPairPoint {
+  double master_x1;
+  double master_x2;
+  double client_x1;
+  double client_x2;
+};
+FigureFiles plot_cpg_sync(const std::vector<CpgPairPoint>& synchronised,
+                          const std::vector<CpgPairPoint>& independent, int master_period,
+                          int client_period, const std::filesystem::path& out_dir,
+                          std::string_view stem = {});
+
+// Fig. 8: deviation of every trial of one learning run. Trial 0 is the detection window (the
+// starting combination, accepted by definition); periods[leg] is the tried combination.
+struct TrialPoint {
+  int trial;
+  double deviation_deg;
+  bool accepted;
+  std::vector<int> periods;
+};
+FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
+                                const std::vector<std::string>& legs, double threshold_deg,
+                                const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// Fig. 9: the motor outputs m of every leg, motor[step][leg] = {TC, CTr, FTi}; notes[leg] is a
+// panel caption such as "disabled" or "p5".
+using MotorTrace = std::vector<std::vector<std::array<double, 3>>>;
+FigureFiles plot_motor_outputs(const MotorTrace& motor, const std::vector<std::string>& legs,
+                               const std::vector<std::string>& notes, double step_seconds,
+                               const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// Fig. 10: foot contact per leg, contact[step][leg] (true = touching the ground, stance).
+FigureFiles plot_foot_contacts(const std::vector<std::vector<bool>>& contact,
+                               const std::vector<std::string>& legs, double step_seconds,
+                               const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// Figs. 11 (hexapod) and 13 (quadruped): per disabled-leg scenario, trials to converge and the
+// final deviation over the runs (mean and SD), and the share of runs that converged (0..1).
+struct ScenarioSummary {
+  std::string scenario;  // disabled legs, e.g. "R1+R2"
+  double mean_trials;
+  double sd_trials;
+  double mean_deviation_deg;
+  double sd_deviation_deg;
+  double share_converged;
+};
+// robot: "hexapod" (Fig. 11) or "quadruped" (Fig. 13).
+FigureFiles plot_learning_summary(const std::vector<ScenarioSummary>& scenarios,
+                                  std::string_view robot, double threshold_deg,
+                                  const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// Fig. 14: trials to converge per annealing factor beta (mean and SD over the runs).
+struct BetaSummary {
+  double beta;
+  double mean_trials;
+  double sd_trials;
+  double share_converged;
+};
+// disabled_legs names the scenario in the title, e.g. "R1+R2" (the paper's).
+FigureFiles plot_beta_study(const std::vector<BetaSummary>& betas, std::string_view disabled_legs,
+                            const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// The trunk's path seen from above, before and after learning (paper §5 tunnel, Table 1);
+// walls are optional polylines (e.g. the corridor's sides). Metres.
+struct Point2 {
+  double x;
+  double y;
+};
+struct TrunkPaths {
+  std::vector<Point2> before;
+  std::vector<Point2> after;
+  std::vector<std::vector<Point2>> walls;
+  std::string before_label = "before learning";
+  std::string after_label = "after learning";
+};
+FigureFiles plot_trunk_paths(const TrunkPaths& paths, const std::filesystem::path& out_dir,
+                             std::string_view stem = {});
+
+}  // namespace multicpg::report

@@ -1,0 +1,40 @@
+// An OpenGL context without a display, for MuJoCo's offscreen renderer: EGL (a GPU, or Mesa's
+// llvmpipe) with OSMesa as the fallback, chosen once per process from MUJOCO_GL like MuJoCo's
+// Python bindings do (egl | osmesa; unset: egl, then osmesa).
+//
+// The platform library is loaded at run time, not linked: MuJoCo's GL loader takes the first of
+// eglGetProcAddress / OSMesaGetProcAddress it finds in the process, so only the platform in use
+// may be globally visible. For the same reason the choice cannot change within a process.
+#pragma once
+
+#include <memory>
+#include <string_view>
+
+namespace multicpg::report {
+
+enum class GlBackend { egl, osmesa };
+
+std::string_view to_string(GlBackend backend);
+
+// The platform this process renders with, loaded on first call. Throws BadInput for an unknown
+// MUJOCO_GL value, RuntimeFailure when no platform works (one line saying why).
+GlBackend process_gl_backend();
+
+// One GL context of the process platform, current on the calling thread after construction.
+class GlContext {
+ public:
+  GlContext(int width, int height);
+  GlContext(const GlContext&) = delete;
+  GlContext& operator=(const GlContext&) = delete;
+  ~GlContext();
+
+  // Makes this context current on the calling thread (several renderers may coexist).
+  void make_current();
+  GlBackend backend() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace multicpg::report

@@ -1,0 +1,162 @@
+#include "report/html.h"
+
+#include <filesystem>
+#include <sstream>
+
+namespace multicpg::report {
+namespace {
+
+// Checks every <img> and <video> after load and marks the ones that failed (issue 5: every
+// image and video must load).
+constexpr const char* kMediaCheck = R"(<script>
+function checkMedia() {
+  const broken = [];
+  for (const img of document.images) {
+    if (!(img.complete && img.naturalWidth > 0)) broken.push(img.getAttribute('src'));
+  }
+  for (const video of document.querySelectorAll('video')) {
+    if (video.error || video.readyState < 1) broken.push(video.getAttribute('src'));
+  }
+  for (const src of broken) {
+    const note = document.createElement('p');
+    note.className = 'missing';
+    note.textContent = 'Could not load ' + src;
+    document.body.prepend(note);
+  }
+  document.body.dataset.media = broken.length ? 'broken:' + broken.join(',') : 'ok';
+}
+window.addEventListener('load', () => setTimeout(checkMedia, 1000));
+</script>)";
+
+constexpr const char* kStyle = R"(<style>
+body { font-family: sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em; color: #222; }
+h2 { border-bottom: 1px solid #ccc; padding-bottom: .2em; margin-top: 2em; }
+figure { margin: 1em 0; }
+figure img, video { max-width: 100%; border: 1px solid #ddd; }
+figcaption, .files { font-size: .9em; color: #555; }
+.paper { background: #eef3fb; padding: .5em .8em; border-left: 4px solid #4a78c2; }
+.ours { background: #f2f8ee; padding: .5em .8em; border-left: 4px solid #4c9a2a; }
+table { border-collapse: collapse; margin: 1em 0; font-size: .9em; }
+th, td { border: 1px solid #ccc; padding: .25em .5em; text-align: right; }
+th:first-child, td:first-child { text-align: left; }
+.missing { color: #b00; font-weight: bold; }
+nav a { margin-right: 1em; }
+</style>)";
+
+std::string link(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  return "<a href=\"" + html_escape(path) + "\">" + html_escape(name) + "</a>";
+}
+
+std::string sibling(const std::string& png, const char* ext) {
+  return std::filesystem::path(png).replace_extension(ext).string();
+}
+
+}  // namespace
+
+std::string html_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string to_markdown(const Table& t) {
+  std::ostringstream out;
+  auto row = [&](const std::vector<std::string>& cells) {
+    out << "|";
+    for (const std::string& c : cells) out << " " << c << " |";
+    out << "\n";
+  };
+  row(t.header);
+  out << "|";
+  for (std::size_t i = 0; i < t.header.size(); ++i) out << (i == 0 ? "---|" : "---:|");
+  out << "\n";
+  for (const auto& r : t.rows) row(r);
+  return out.str();
+}
+
+std::string to_html(const Table& t) {
+  std::ostringstream out;
+  out << "<table><thead><tr>";
+  for (const std::string& h : t.header) out << "<th>" << html_escape(h) << "</th>";
+  out << "</tr></thead><tbody>\n";
+  for (const auto& r : t.rows) {
+    out << "<tr>";
+    for (const std::string& c : r) out << "<td>" << html_escape(c) << "</td>";
+    out << "</tr>\n";
+  }
+  out << "</tbody></table>\n";
+  return out.str();
+}
+
+nlohmann::json to_json(const Section& s) {
+  nlohmann::json tables = nlohmann::json::array();
+  for (const Table& t : s.tables) tables.push_back({{"header", t.header}, {"rows", t.rows}});
+  return {{"id", s.id},         {"title", s.title},   {"paper", s.paper},
+          {"measured", s.measured}, {"images", s.images}, {"videos", s.videos},
+          {"files", s.files},   {"tables", tables}};
+}
+
+Section section_from_json(const nlohmann::json& j) {
+  Section s;
+  s.id = j.at("id").get<std::string>();
+  s.title = j.at("title").get<std::string>();
+  s.paper = j.at("paper").get<std::string>();
+  s.measured = j.at("measured").get<std::string>();
+  s.images = j.at("images").get<std::vector<std::string>>();
+  s.videos = j.at("videos").get<std::vector<std::string>>();
+  s.files = j.at("files").get<std::vector<std::string>>();
+  for (const nlohmann::json& t : j.at("tables")) {
+    s.tables.push_back({t.at("header").get<std::vector<std::string>>(),
+                        t.at("rows").get<std::vector<std::vector<std::string>>>()});
+  }
+  return s;
+}
+
+std::string index_html(const std::string& title, const std::string& intro,
+                       const std::vector<Section>& sections) {
+  std::ostringstream out;
+  out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
+      << html_escape(title) << "</title>\n"
+      << kStyle << "\n</head>\n<body>\n<h1>" << html_escape(title) << "</h1>\n<p>"
+      << html_escape(intro) << "</p>\n<nav>";
+  for (const Section& s : sections) {
+    out << "<a href=\"#" << html_escape(s.id) << "\">" << html_escape(s.title) << "</a> ";
+  }
+  out << "</nav>\n";
+  for (const Section& s : sections) {
+    out << "<section id=\"" << html_escape(s.id) << "\">\n<h2>" << html_escape(s.title)
+        << "</h2>\n<p class=\"paper\"><b>The paper:</b> " << html_escape(s.paper)
+        << "</p>\n<p class=\"ours\"><b>We measured:</b> " << html_escape(s.measured) << "</p>\n";
+    for (const Table& t : s.tables) out << to_html(t);
+    for (const std::string& png : s.images) {
+      out << "<figure><img src=\"" << html_escape(png) << "\" alt=\""
+          << html_escape(s.title) << "\"><figcaption>" << link(png) << " · "
+          << link(sibling(png, ".svg")) << " · data: " << link(sibling(png, ".csv"))
+          << "</figcaption></figure>\n";
+    }
+    for (const std::string& mp4 : s.videos) {
+      out << "<figure><video src=\"" << html_escape(mp4)
+          << "\" controls preload=\"metadata\" muted></video><figcaption>" << link(mp4)
+          << "</figcaption></figure>\n";
+    }
+    if (!s.files.empty()) {
+      out << "<p class=\"files\">Data:";
+      for (const std::string& f : s.files) out << " " << link(f);
+      out << "</p>\n";
+    }
+    out << "</section>\n";
+  }
+  out << kMediaCheck << "\n</body></html>\n";
+  return out.str();
+}
+
+}  // namespace multicpg::report

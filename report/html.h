@@ -1,0 +1,42 @@
+// The reproduction report (issue 5): index.html with every figure, table and video, each with a
+// caption saying what the paper reports and what we measured, and the CSV behind it.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace multicpg::report {
+
+// A table written once and shown as HTML (index.html) or Markdown (results files).
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+std::string to_markdown(const Table& table);
+std::string to_html(const Table& table);
+
+// One part of the report, e.g. "Gaits (paper Fig. 2)". Paths are relative to index.html.
+struct Section {
+  std::string id;
+  std::string title;
+  std::string paper;     // what the paper reports
+  std::string measured;  // what we measured
+  std::vector<std::string> images;  // PNG, each shown with its SVG and CSV beside it
+  std::vector<std::string> videos;  // MP4
+  std::vector<std::string> files;   // further data (CSV, JSON, Markdown)
+  std::vector<Table> tables;
+};
+
+nlohmann::json to_json(const Section& section);
+Section section_from_json(const nlohmann::json& j);
+
+// The whole page. It checks on load that every image and video loaded, marks any that did not
+// in red, and sets <body data-media="ok"> or "broken:<files>" (read by the browser test).
+std::string index_html(const std::string& title, const std::string& intro,
+                       const std::vector<Section>& sections);
+
+std::string html_escape(const std::string& text);
+
+}  // namespace multicpg::report

@@ -1,0 +1,105 @@
+#include "report/render.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "common/errors.h"
+#include "report/disabled_legs.h"
+
+namespace multicpg::report {
+namespace {
+
+// Scene capacity: a hexapod has about 60 geoms; contact points and decorations add some.
+constexpr int kMaxSceneGeoms = 2000;
+
+void aim_camera(const mjModel* m, const mjData* d, const CameraSpec& spec, mjvCamera& camera,
+                int& tracked_body) {
+  camera.distance = spec.distance;
+  camera.azimuth = spec.azimuth;
+  camera.elevation = spec.elevation;
+  if (spec.track_body.empty()) {
+    camera.type = mjCAMERA_FREE;
+    std::copy(spec.lookat.begin(), spec.lookat.end(), camera.lookat);
+    tracked_body = -1;
+    return;
+  }
+  const int body = mj_name2id(m, mjOBJ_BODY, spec.track_body.c_str());
+  if (body <= 0) throw BadInput("camera: the model has no body named '" + spec.track_body + "'");
+  camera.type = mjCAMERA_TRACKING;
+  camera.trackbodyid = body;
+  // MuJoCo's tracking camera moves a fifth of the way to the target each frame; start on target.
+  if (tracked_body != body) std::copy_n(d->subtree_com + 3 * body, 3, camera.lookat);
+  tracked_body = body;
+}
+
+const mjModel* require_model(const mjModel* model) {
+  if (model == nullptr) throw BadInput("renderer: no model");
+  return model;
+}
+
+}  // namespace
+
+Renderer::Renderer(const mjModel* model, int width, int height)
+    : model_(require_model(model)), width_(width), height_(height), gl_(width, height) {
+  mjv_defaultScene(&scene_);
+  mjr_defaultContext(&context_);
+  mjv_defaultOption(&option_);
+  mjv_defaultCamera(&camera_);
+  mjv_makeScene(model, &scene_, kMaxSceneGeoms);
+  // The offscreen buffer size comes from the model; enlarge it on a copy when too small.
+  if (width > model->vis.global.offwidth || height > model->vis.global.offheight) {
+    mjModel* sized = mj_copyModel(nullptr, model);
+    sized->vis.global.offwidth = std::max(width, model->vis.global.offwidth);
+    sized->vis.global.offheight = std::max(height, model->vis.global.offheight);
+    mjr_makeContext(sized, &context_, mjFONTSCALE_100);
+    mj_deleteModel(sized);
+  } else {
+    mjr_makeContext(model, &context_, mjFONTSCALE_100);
+  }
+  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
+  if (context_.currentBuffer != mjFB_OFFSCREEN) {
+    mjr_freeContext(&context_);
+    mjv_freeScene(&scene_);
+    throw RuntimeFailure("renderer: the OpenGL context has no offscreen framebuffer");
+  }
+}
+
+Renderer::~Renderer() {
+  gl_.make_current();
+  mjr_freeContext(&context_);
+  mjv_freeScene(&scene_);
+}
+
+Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const CameraSpec& camera,
+                   const std::vector<std::string>& red_prefixes, const Overlay& overlay) {
+  if (model != renderer.model_)
+    throw BadInput("render_frame: the model is not the renderer's model");
+  if (data == nullptr) throw BadInput("render_frame: no data");
+  renderer.gl_.make_current();
+  aim_camera(model, data, camera, renderer.camera_, renderer.tracked_body_);
+  mjv_updateScene(model, data, &renderer.option_, nullptr, &renderer.camera_, mjCAT_ALL,
+                  &renderer.scene_);
+  paint_red(model, renderer.scene_, red_prefixes);
+
+  const mjrRect viewport{0, 0, renderer.width_, renderer.height_};
+  mjr_setBuffer(mjFB_OFFSCREEN, &renderer.context_);
+  mjr_render(viewport, &renderer.scene_, &renderer.context_);
+  if (!overlay.titles.empty()) {
+    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, overlay.titles.c_str(),
+                overlay.values.c_str(), &renderer.context_);
+  }
+
+  Image image{renderer.width_, renderer.height_, {}};
+  const std::size_t row = 3 * static_cast<std::size_t>(image.width);
+  std::vector<unsigned char> bottom_up(row * static_cast<std::size_t>(image.height));
+  mjr_readPixels(bottom_up.data(), nullptr, viewport, &renderer.context_);
+  // OpenGL rows run bottom to top; images run top to bottom.
+  image.rgb.resize(bottom_up.size());
+  for (int y = 0; y < image.height; ++y) {
+    std::memcpy(image.rgb.data() + row * static_cast<std::size_t>(y),
+                bottom_up.data() + row * static_cast<std::size_t>(image.height - 1 - y), row);
+  }
+  return image;
+}
+
+}  // namespace multicpg::report

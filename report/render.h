@@ -1,0 +1,71 @@
+// Headless pictures of a MuJoCo model (issue 5): one renderer per model and frame size, a
+// camera that follows the robot, and the disabled legs drawn in red as in the paper's figures.
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "report/gl_context.h"
+#include "report/image.h"
+
+namespace multicpg::report {
+
+inline constexpr int kDefaultFrameWidth = 640;
+inline constexpr int kDefaultFrameHeight = 480;
+
+// Where the camera looks from. With a track body the camera follows that body's subtree centre
+// of mass smoothly (MuJoCo's tracking camera); without one it looks at `lookat`.
+struct CameraSpec {
+  std::string track_body = "trunk";
+  double distance = 1.5;     // m
+  double azimuth = 45.0;     // deg: 0 looks along +x (the walking direction), 90 along +y
+  double elevation = -30.0;  // deg, negative = looking down
+  std::array<double, 3> lookat{0.0, 0.0, 0.0};  // m, used without a track body
+};
+
+// Text drawn in the top-left corner: two columns, lines separated by '\n' (mjr_overlay).
+struct Overlay {
+  std::string titles;
+  std::string values;
+};
+
+// The GL context, MuJoCo render context and scene for one model at one frame size.
+class Renderer {
+ public:
+  // Throws BadInput for a null model or bad size, RuntimeFailure when no GL platform works.
+  explicit Renderer(const mjModel* model, int width = kDefaultFrameWidth,
+                    int height = kDefaultFrameHeight);
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+  ~Renderer();
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GlBackend backend() const { return gl_.backend(); }
+
+ private:
+  friend Image render_frame(Renderer&, const mjModel*, mjData*, const CameraSpec&,
+                            const std::vector<std::string>&, const Overlay&);
+  const mjModel* model_;
+  int width_;
+  int height_;
+  GlContext gl_;
+  mjvScene scene_;
+  mjrContext context_;
+  mjvOption option_;
+  mjvCamera camera_;
+  int tracked_body_ = -1;  // body the camera followed last frame, to start tracking without a swoop
+};
+
+// Renders the current state of `data` (after mj_forward or mj_step). Geoms whose own name, or
+// whose body's or an ancestor body's name, starts with one of `red_prefixes` (e.g. "R1_") are
+// drawn red. `model` must be the renderer's model; an unknown track body throws BadInput.
+Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const CameraSpec& camera,
+                   const std::vector<std::string>& red_prefixes, const Overlay& overlay = {});
+
+}  // namespace multicpg::report

@@ -1,0 +1,23 @@
+// `multicpg reproduce`: every experiment of SPEC §8 — figures, tables, videos and the tunnel —
+// into one folder with an index.html that sets each beside what the paper reports (issue 5).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+
+namespace multicpg::report {
+
+struct ReproduceOptions {
+  std::filesystem::path out;
+  bool quick = false;  // fewer runs and faster videos: minutes, not tens of minutes
+  int jobs = 0;        // parallel learning runs; 0 = every core
+  std::uint64_t seed = 1;
+  bool progress = true;
+};
+
+// Runs every stage not yet done in `out` (each finished stage is saved at once, so a run
+// started again with the same options continues where it stopped) and writes out/index.html.
+// Throws BadInput for an unwritable folder or one made with other options.
+void reproduce(const ReproduceOptions& options);
+
+}  // namespace multicpg::report

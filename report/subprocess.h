@@ -1,0 +1,46 @@
+// Running the external tools the report layer drives (gnuplot, ffmpeg) without a shell, so
+// paths need no quoting and a missing tool is reported, not guessed from a shell's exit code.
+#pragma once
+
+#include <sys/types.h>
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace multicpg::report {
+
+struct ProcessResult {
+  int exit_code = -1;  // -1 when the process did not exit normally (signal)
+  std::string output;  // everything it wrote to standard output and standard error
+};
+
+// Runs argv[0] (looked up in PATH) with standard input closed, waits for it and captures what
+// it printed. Throws RuntimeFailure when the program cannot be started.
+ProcessResult run_process(const std::vector<std::string>& argv);
+
+// A child process fed through its standard input (ffmpeg reading raw frames). Writing never
+// raises SIGPIPE: a child that died makes write() return false instead.
+class ChildWithInput {
+ public:
+  explicit ChildWithInput(const std::vector<std::string>& argv);
+  ChildWithInput(const ChildWithInput&) = delete;
+  ChildWithInput& operator=(const ChildWithInput&) = delete;
+  ~ChildWithInput();  // closes the input and waits, if finish() was not called
+
+  // Sends all bytes; false when the child stopped reading.
+  bool write(std::span<const unsigned char> bytes);
+  // Closes the input, waits for the child and returns how it ended.
+  ProcessResult finish();
+
+ private:
+  pid_t pid_ = -1;
+  int input_fd_ = -1;
+  int output_fd_ = -1;
+};
+
+// The last line a tool printed (gnuplot and ffmpeg end with the error that stopped them), or
+// its exit code when it printed nothing: for one-line error messages.
+std::string tool_error(const ProcessResult& result);
+
+}  // namespace multicpg::report

@@ -1,0 +1,90 @@
+#include "report/video.h"
+
+#include <unistd.h>
+
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+
+namespace multicpg::report {
+namespace {
+
+constexpr const char* kFfmpeg = "ffmpeg";
+
+std::filesystem::path checked_path(std::filesystem::path path) {
+  if (path.extension() != ".mp4") throw BadInput("video '" + path.string() + "' must end in .mp4");
+  ensure_writable_dir(path.has_parent_path() ? path.parent_path() : std::filesystem::path("."));
+  return path;
+}
+
+}  // namespace
+
+VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int fps)
+    : path_(checked_path(std::move(path))), width_(width), height_(height) {
+  if (width <= 0 || height <= 0 || width % 2 != 0 || height % 2 != 0) {
+    throw BadInput("video size must be positive and even, got " + std::to_string(width) + "x" +
+                   std::to_string(height));
+  }
+  if (fps <= 0) throw BadInput("video frame rate must be positive, got " + std::to_string(fps));
+  tmp_ = path_;
+  tmp_ += ".tmp" + std::to_string(::getpid());
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  ffmpeg_ = std::make_unique<ChildWithInput>(std::vector<std::string>{
+      kFfmpeg, "-nostdin", "-y", "-loglevel", "error",
+      // input: raw RGB frames on standard input
+      "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size, "-r", std::to_string(fps), "-i", "pipe:0",
+      // output: H.264 that browsers play, index at the front for streaming in the HTML report
+      "-c:v", "libx264", "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4",
+      tmp_.string()});
+}
+
+VideoWriter::~VideoWriter() {
+  if (ffmpeg_) {
+    ffmpeg_->finish();
+    std::error_code ec;
+    std::filesystem::remove(tmp_, ec);
+  }
+}
+
+void VideoWriter::add_frame(const Image& frame) {
+  if (!ffmpeg_) throw BadInput("video '" + path_.string() + "' is already finished");
+  if (frame.width != width_ || frame.height != height_ ||
+      frame.rgb.size() !=
+          3 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_)) {
+    throw BadInput("video frame is " + std::to_string(frame.width) + "x" +
+                   std::to_string(frame.height) + ", expected " + std::to_string(width_) + "x" +
+                   std::to_string(height_));
+  }
+  if (!ffmpeg_->write(frame.rgb)) {
+    const ProcessResult result = ffmpeg_->finish();
+    ffmpeg_.reset();
+    std::error_code ec;
+    std::filesystem::remove(tmp_, ec);
+    throw RuntimeFailure("ffmpeg stopped while encoding '" + path_.string() +
+                         "': " + tool_error(result));
+  }
+  ++frames_;
+}
+
+void VideoWriter::finish() {
+  if (!ffmpeg_) throw BadInput("video '" + path_.string() + "' is already finished");
+  const ProcessResult result = ffmpeg_->finish();
+  ffmpeg_.reset();
+  std::error_code ec;
+  if (result.exit_code != 0 || frames_ == 0) {
+    std::filesystem::remove(tmp_, ec);
+    throw RuntimeFailure("encoding '" + path_.string() + "' failed: " +
+                         (frames_ == 0 ? std::string("no frames") : tool_error(result)));
+  }
+  std::filesystem::rename(tmp_, path_, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    std::filesystem::remove(tmp_, ec);
+    throw RuntimeFailure("cannot move '" + tmp_.string() + "' into place: " + why);
+  }
+}
+
+}  // namespace multicpg::report

@@ -1,0 +1,32 @@
+// The interactive viewer (issue 5): a window showing the simulated robot walking in real time,
+// the camera following the trunk, disabled legs red, with keys to pause, step, disable legs and
+// switch synchronisation.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "sim/sim.h"
+
+namespace multicpg::report {
+
+// Step numbers count controller steps from the start, as in sim::WalkSpec.
+struct ViewerSpec {
+  // One per leg (empty = every leg 4); as sim::walk, equal periods keep the clients
+  // synchronised and unequal ones free them (sim::start_walk_state).
+  std::vector<int> periods;
+  std::vector<std::size_t> disabled;  // legs that fail...
+  long disable_at = 0;                // ...before this step
+  long steps = 0;                     // quit after this many steps; 0 = when the user quits
+};
+
+// Opens a window on the display and runs until the user quits (Esc, Q, closing the window) or
+// spec.steps are done; returns the number of controller steps taken. The spec must be valid
+// (the CLI checks it). Throws BadInput with one line when there is no display,
+// RuntimeFailure if OpenGL cannot be set up or the physics becomes unstable.
+//
+// Uses the window's GLX context: call it in a process that has not rendered headless (EGL or
+// OSMesa), since MuJoCo binds to one GL platform per process.
+long run_viewer(const sim::SimModel& model, const ViewerSpec& spec);
+
+}  // namespace multicpg::report
