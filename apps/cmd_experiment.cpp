@@ -75,7 +75,8 @@ void register_experiment(CLI::App& app) {
   t->callback([table] {
     const robot::RobotKind kind = robot::parse_robot(table->robot);
     if (kind == robot::RobotKind::octopod) {
-      throw BadInput("--robot: the paper has scenario tables for the hexapod and quadruped only");
+      throw BadInput("--robot octopod: the paper has scenario tables for the hexapod and "
+                     "quadruped only");
     }
     print_table(experiments::run_scenario_table(spec_of(*table, kind)), table->out);
   });

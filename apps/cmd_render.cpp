@@ -18,6 +18,7 @@ struct RenderOptions {
   std::string disable;
   long disable_at = 0;
   long steps = 400;
+  long warmup = 0;
   bool learn = false;
   bool tunnel = false;
   LearningFlags learning;
@@ -73,6 +74,7 @@ void run_render(const RenderOptions& o) {
   walk.disabled = disabled;
   walk.disable_at = o.disable_at;
   walk.steps = o.steps;
+  walk.controller_warmup = o.warmup;
   walk.record = false;
   walk.on_step = [&](const sim::SimState& s) {
     film.capture(s);
@@ -98,6 +100,8 @@ void register_render(CLI::App& app) {
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1,R3");
   cmd->add_option("--disable-at", o->disable_at, "step at which they fail")->capture_default_str();
   cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")->capture_default_str();
+  cmd->add_option("--warmup", o->warmup, "controller steps run before the robot moves")
+      ->capture_default_str();
   cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
   add_learning_flags(*cmd, o->learning);

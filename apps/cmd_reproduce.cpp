@@ -1,12 +1,25 @@
 // multicpg reproduce: every figure, table and video of the paper into one folder (issue 5).
+#include <algorithm>
 #include <iostream>
 #include <optional>
 
 #include "apps/commands.h"
 #include "common/errors.h"
+#include "report/figures.h"
 #include "report/reproduce.h"
 
 namespace multicpg::apps {
+namespace {
+
+std::string known_names() {
+  std::string out;
+  for (const report::FigureInfo& f : report::known_figures()) {
+    out += (out.empty() ? "" : ", ") + std::string(f.name);
+  }
+  return out;
+}
+
+}  // namespace
 
 void register_reproduce(CLI::App& app) {
   struct Options {
@@ -27,6 +40,31 @@ void register_reproduce(CLI::App& app) {
     o->run.jobs = o->jobs.value_or(0);
     report::reproduce(o->run);
     std::cout << "open " << (o->run.out / "index.html").string() << "\n";
+  });
+}
+
+void register_figure(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> names;
+    report::ReproduceOptions run;
+  };
+  auto o = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "figure", "draw some of the paper's figures (and their CSV) into DIR: " + known_names());
+  cmd->add_option("names", o->names, "figure names")->required();
+  cmd->add_option("--out", o->run.out, "folder for the figures and index.html")->required();
+  cmd->add_flag("--quick", o->run.quick, "few learning runs for the learning tables");
+  cmd->add_option("--seed", o->run.seed, "base seed of the learning runs")->capture_default_str();
+  cmd->callback([o] {
+    for (const std::string& name : o->names) {
+      const std::string stage = report::stage_of_figure(name);
+      if (std::find(o->run.only.begin(), o->run.only.end(), stage) == o->run.only.end()) {
+        o->run.only.push_back(stage);
+      }
+    }
+    report::reproduce(o->run);
+    std::cout << "figures in " << (o->run.out / "figures").string() << "; open "
+              << (o->run.out / "index.html").string() << "\n";
   });
 }
 

@@ -27,6 +27,7 @@ struct WalkOptions {
   std::string disable;
   long disable_at = 0;
   long settle = 0;
+  long warmup = 0;
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
   SimFlags sim;
@@ -111,6 +112,7 @@ void run_walk(const WalkOptions& o) {
   if (o.settle < 0) throw BadInput("--settle must not be negative");
   spec.disable_at = o.disable_at;
   spec.settle = o.settle;
+  spec.controller_warmup = o.warmup;
   spec.steps = o.steps;
   spec.window = o.window;
   spec.record = !o.csv.empty();
@@ -147,6 +149,10 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--disable", opts->disable, "legs that fail, e.g. R1,R3");
   cmd->add_option("--disable-at", opts->disable_at,
                   "controller step (from 0, settling included) at which they fail")
+      ->capture_default_str();
+  cmd->add_option("--warmup", opts->warmup,
+                 "controller steps run before the robot moves, so it starts in its gait "
+                 "(1000 locks every CPG and fills the delay lines)")
       ->capture_default_str();
   cmd->add_option("--settle", opts->settle,
                   "steps walked before measuring (delay lines fill after 126 steps for the "

@@ -14,6 +14,8 @@ void register_model(CLI::App& app);
 void register_learn(CLI::App& app);
 void register_experiment(CLI::App& app);
 void register_render(CLI::App& app);
+void register_tunnel(CLI::App& app);
 void register_reproduce(CLI::App& app);
+void register_figure(CLI::App& app);
 
 }  // namespace multicpg::apps

@@ -15,9 +15,11 @@ int main(int argc, char** argv) {
   apps::register_model(app);
   apps::register_learn(app);
   apps::register_experiment(app);
+  apps::register_tunnel(app);
   apps::register_render(app);
   apps::register_view(app);
   apps::register_reproduce(app);
+  apps::register_figure(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -42,6 +42,7 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
   const double length = model.scene.tunnel_length;
   sim::SimState state = sim::start_walk_state(model, spec.periods);
   for (std::size_t leg : spec.disabled) neural::set_disabled(state.controller, leg, true);
+  sim::warm_up_controller(model, state, spec.controller_warmup);
 
   TunnelRun run;
   run.record.legs = model.legs.size();

@@ -11,13 +11,15 @@
 
 namespace multicpg::experiments {
 
-// Steps allowed to cross the tunnel: 3 m at 3 cm/s, far slower than any walking gait.
-inline constexpr long kTunnelMaxSteps = 2700;
+// Steps allowed to cross the tunnel: 3 m at 1.25 cm/s, the slow wave gait's speed (222 s).
+inline constexpr long kTunnelMaxSteps = 6000;
 
 struct TunnelSpec {
   std::vector<std::size_t> disabled;
   std::vector<int> periods;  // one per leg
   long max_steps = kTunnelMaxSteps;
+  // The robot is placed at the entrance with its controller running, as the paper's robot was.
+  long controller_warmup = sim::kControllerWarmup;
 };
 
 struct TunnelRun {

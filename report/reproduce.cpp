@@ -40,15 +40,12 @@ constexpr Sizes kFull{experiments::kScenarioRuns, experiments::kScenarioRuns,
                       experiments::kBetaRuns, 4, 400};
 constexpr Sizes kQuick{1, 2, 3, 8, 160};
 
-// The learning run shown in Figs. 8-10: R1 fails after one healthy window (paper §4.1).
-constexpr long kFailAfterSteps = 400;
 // Steps walked with the learned periods after learning, for Figs. 9 and 10 and the path.
 constexpr long kAfterLearningSteps = 400;
 // Steps shown in Figs. 9 and 10: a little over one cycle of the slowest learned period (p = 9).
 constexpr long kMotorFigureSteps = 180;
 // Walk of each period for the speed table, and of the paths before and after learning.
 constexpr long kSpeedWalkSteps = 1200;
-constexpr long kSpeedSettleSteps = 400;
 const std::vector<int> kGaitFigurePeriods{1, 4, 5, 6, 8, 9};
 // Fig. 6: master p = 5, client p = 6 (paper §2.3).
 constexpr int kFig6Master = 5;
@@ -112,7 +109,7 @@ class Reproduction {
   void run() {
     ensure_writable_dir(o_.out);
     check_arguments();
-    const std::vector<std::pair<std::string, std::function<Section()>>> stages{
+    const std::map<std::string, std::function<Section()>> make{
         {"gaits", [&] { return gaits(); }},
         {"cpg-sync", [&] { return cpg_sync(); }},
         {"walking", [&] { return walking(); }},
@@ -122,9 +119,15 @@ class Reproduction {
         {"beta", [&] { return beta(); }},
         {"tunnel", [&] { return tunnel(); }},
     };
+    std::vector<std::string> stages;
+    for (const std::string& id : reproduce_stages()) {
+      if (o_.only.empty() || std::find(o_.only.begin(), o_.only.end(), id) != o_.only.end()) {
+        stages.push_back(id);
+      }
+    }
     std::vector<Section> sections;
     for (std::size_t i = 0; i < stages.size(); ++i) {
-      const auto& [id, make] = stages[i];
+      const std::string& id = stages[i];
       const fs::path saved = o_.out / "sections" / (id + ".json");
       progress("[" + std::to_string(i + 1) + "/" + std::to_string(stages.size()) + "] " + id);
       if (fs::exists(saved)) {
@@ -133,7 +136,7 @@ class Reproduction {
         progress("  already done");
         continue;
       }
-      sections.push_back(make());
+      sections.push_back(make.at(id)());
       ensure_writable_dir(saved.parent_path());
       write_file_atomic(saved, to_json(sections.back()).dump(2) + "\n");
     }
@@ -207,9 +210,10 @@ class Reproduction {
     std::vector<GaitPanel> panels;
     std::string fractions;
     constexpr long kShownCycles = 2;
+    constexpr long kSlowestCycle = 9 * (2 * 9 + 1);  // p = 9: 171 steps (reference §2.4)
     for (int p : kGaitFigurePeriods) {
       neural::ControllerState state = neural::make_controller_state(controller, p);
-      const long steps = kShownCycles * std::max(36, p * (2 * p + 1));
+      const long steps = kShownCycles * kSlowestCycle;
       const experiments::GaitRecord g =
           experiments::record_gait(controller, state, experiments::kDefaultGaitWarmup, steps);
       panels.push_back({p, g.swing});
@@ -271,7 +275,7 @@ class Reproduction {
     for (int p : kGaitFigurePeriods) {
       sim::WalkSpec spec;
       spec.periods.assign(hexapod.legs.size(), p);
-      spec.settle = kSpeedSettleSteps;
+      spec.controller_warmup = sim::kControllerWarmup;
       spec.steps = kSpeedWalkSteps;
       spec.record = false;
       const sim::WalkResult r = sim::walk(hexapod, spec);
@@ -287,6 +291,7 @@ class Reproduction {
       Film film(hexapod, {out, kDefaultFrameWidth, kDefaultFrameHeight, 1, {}});
       sim::WalkSpec spec;
       spec.steps = sizes_.walk_film_steps;
+      spec.controller_warmup = sim::kControllerWarmup;
       spec.record = false;
       if (broken) spec.disabled = {0};
       spec.on_step = [&](const sim::SimState& s) { film.capture(s); };
@@ -300,9 +305,9 @@ class Reproduction {
             "periods 4 it turns right (≈38° per 400 steps in the paper's simulator, 42° on the "
             "real robot).",
             "Speeds of each gait over " + std::to_string(kSpeedWalkSteps) +
-                " steps after " + std::to_string(kSpeedSettleSteps) +
-                " settling steps (table). Videos: the tripod, and R1 disabled from the start "
-                "(R1 drawn red), real time.",
+                " steps, the controller warmed up for " + std::to_string(sim::kControllerWarmup) +
+                " steps first so the robot starts in its gait (table). Videos: the tripod, and "
+                "R1 disabled from the start (R1 drawn red), real time.",
             {}, films, {}, {speeds}};
   }
 
@@ -311,7 +316,9 @@ class Reproduction {
     const robot::Morphology& morph = hexapod.controller.morphology;
     learning::CompensationOptions options;
     options.disabled = {robot::leg_index(morph, "R1")};
-    options.fail_step = kFailAfterSteps;
+    // R1 fails as the first measured window starts, after the robot walked healthy while its
+    // CPGs settled: that window's deviation is the paper's "after 400 time steps" (§4.1).
+    options.fail_step = learning::default_settle_steps(hexapod.controller);
     options.seed = o_.seed;
     const fs::path video = dir("videos") / "learning-r1.mp4";
     Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, sizes_.film_speed, {}});
@@ -392,6 +399,7 @@ class Reproduction {
       spec.periods = learned ? r.periods : std::vector<int>(legs, 4);
       spec.disabled = options.disabled;
       spec.steps = kSpeedWalkSteps;
+      spec.controller_warmup = sim::kControllerWarmup;
       spec.record = false;
       const sim::WalkResult w = sim::walk(hexapod, spec);
       auto& path = learned ? paths.after : paths.before;
@@ -599,6 +607,7 @@ class Reproduction {
     in.hexapod = hexapod_ ? hexapod_ : read_if_present("hexapod");
     in.quadruped = quadruped_ ? quadruped_ : read_if_present("quadruped");
     in.beta = beta_ ? beta_ : read_if_present("beta");
+    if (!in.hexapod && !in.quadruped && !in.beta) return;
     in.command = "multicpg reproduce --out " + o_.out.string() + (o_.quick ? " --quick" : "");
     write_file_atomic(o_.out / "results.md", experiments::results_markdown(in));
   }
@@ -618,6 +627,36 @@ class Reproduction {
 
 }  // namespace
 
-void reproduce(const ReproduceOptions& options) { Reproduction(options).run(); }
+const std::vector<std::string>& reproduce_stages() {
+  static const std::vector<std::string> stages{"gaits",         "cpg-sync",        "walking",
+                                               "learning-r1",   "hexapod-table",   "quadruped-table",
+                                               "beta",          "tunnel"};
+  return stages;
+}
+
+std::string stage_of_figure(std::string_view figure) {
+  const std::string_view name = figure_by_name(figure).name;  // BadInput for unknown names
+  static const std::map<std::string_view, std::string> stage{
+      {"gait", "gaits"},
+      {"cpg-sync", "cpg-sync"},
+      {"learning-trace", "learning-r1"},
+      {"motor", "learning-r1"},
+      {"contacts", "learning-r1"},
+      {"trunk-path", "learning-r1"},
+      {"learning-hexapod", "hexapod-table"},
+      {"learning-quadruped", "quadruped-table"},
+      {"beta", "beta"}};
+  return stage.at(name);
+}
+
+void reproduce(const ReproduceOptions& options) {
+  for (const std::string& id : options.only) {
+    const auto& all = reproduce_stages();
+    if (std::find(all.begin(), all.end(), id) == all.end()) {
+      throw BadInput("unknown reproduce stage '" + id + "'");
+    }
+  }
+  Reproduction(options).run();
+}
 
 }  // namespace multicpg::report

@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace multicpg::report {
 
@@ -13,7 +16,17 @@ struct ReproduceOptions {
   int jobs = 0;        // parallel learning runs; 0 = every core
   std::uint64_t seed = 1;
   bool progress = true;
+  // Stages to run (stage ids, see reproduce_stages()); empty = all. index.html shows those done.
+  std::vector<std::string> only;
 };
+
+// Stage ids in order: gaits, cpg-sync, walking, learning-r1, hexapod-table, quadruped-table,
+// beta, tunnel.
+const std::vector<std::string>& reproduce_stages();
+
+// The stage that draws a figure of figures.h's registry (e.g. "motor" -> "learning-r1"); throws
+// BadInput naming the known figures for an unknown name.
+std::string stage_of_figure(std::string_view figure);
 
 // Runs every stage not yet done in `out` (each finished stage is saved at once, so a run
 // started again with the same options continues where it stopped) and writes out/index.html.

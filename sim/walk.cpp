@@ -31,6 +31,9 @@ void check_spec(const SimModel& model, const WalkSpec& spec) {
   if (unique.size() == legs) {
     throw BadInput("cannot disable every leg of the " + model.controller.morphology.name);
   }
+  if (spec.controller_warmup < 0) {
+    throw BadInput("--warmup must not be negative, got " + std::to_string(spec.controller_warmup));
+  }
   if (spec.settle < 0) {
     throw BadInput("--settle must not be negative, got " + std::to_string(spec.settle));
   }
@@ -53,6 +56,10 @@ SimState start_walk_state(const SimModel& model, const std::vector<int>& periods
     neural::set_synchronised(state.controller, false);
   }
   return state;
+}
+
+void warm_up_controller(const SimModel& model, SimState& state, long steps) {
+  for (long t = 0; t < steps; ++t) neural::controller_step(model.controller, state.controller);
 }
 
 void append_record(const SimModel& model, const SimState& state, bool joints, WalkRecord& r) {
@@ -87,6 +94,7 @@ std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::s
 WalkResult walk(const SimModel& model, const WalkSpec& spec) {
   check_spec(model, spec);
   SimState state = start_walk_state(model, spec.periods);
+  warm_up_controller(model, state, spec.controller_warmup);
   WalkResult result;
   WalkRecord& r = result.record;
   r.legs = model.legs.size();

@@ -14,6 +14,12 @@ namespace multicpg::sim {
 // SPEC §6: deviation is measured over windows of 400 controller steps.
 inline constexpr long kDefaultWindow = 400;
 
+// Controller steps that lock the CPGs (p = 4 locks at step 737) and fill the delay lines (126
+// steps at most) before the robot moves. A fresh controller's empty delay lines move the right
+// legs alone for the first tau_L = 90 steps and swerve the robot about 26 deg left before any
+// gait shows; a warmed-up controller starts the robot in its gait, as a robot already walking.
+inline constexpr long kControllerWarmup = 1000;
+
 // Step numbers count controller steps from the start of the run.
 struct WalkSpec {
   std::vector<int> periods;           // one per leg; empty = every leg 4
@@ -22,6 +28,9 @@ struct WalkSpec {
   // Steps walked before measuring, so the CPGs lock and the delay lines fill (SPEC §6: settling
   // steps are not counted). Until the longest delay line has filled, only some legs move.
   long settle = 0;
+  // Controller steps run alone before the physics starts (see kControllerWarmup); 0 = the robot
+  // starts with a fresh controller.
+  long controller_warmup = 0;
   long steps = 1200;                             // measured steps, after the settling ones
   long window = kDefaultWindow;                  // steps per deviation window
   bool record = true;                            // keep joint angles and contacts of every step
@@ -66,6 +75,9 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec);
 // Equal periods keep the clients synchronised; unequal ones set each leg's period and free the
 // clients (SPEC §5). Throws BadInput for a wrong number of periods or a period outside 1-9.
 SimState start_walk_state(const SimModel& model, const std::vector<int>& periods);
+
+// Runs the neural controller alone for `steps` steps: the robot does not move.
+void warm_up_controller(const SimModel& model, SimState& state, long steps);
 
 // Appends the state as one row of `record` (its `legs` must be set); joint angles, commands and
 // contacts only if `joints`.

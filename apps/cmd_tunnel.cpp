@@ -1,0 +1,86 @@
+// multicpg tunnel: walk through the 3.0 m x 1.2 m corridor of paper §5 (Table 1) with given
+// periods and disabled legs; report the deviation angle and whether the robot passed.
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "apps/commands.h"
+#include "apps/options.h"
+#include "common/errors.h"
+#include "experiments/tunnel.h"
+#include "report/film.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct TunnelOptions {
+  std::string disable;
+  std::string periods = "4";
+  long max_steps = experiments::kTunnelMaxSteps;
+  std::string video;
+  bool json = false;
+  SimFlags sim;
+};
+
+void run_tunnel(const TunnelOptions& o) {
+  const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
+  experiments::TunnelSpec spec;
+  spec.disabled = robot::parse_leg_list(morph, o.disable);
+  if (spec.disabled.size() == morph.size()) throw BadInput("--disable: every leg is disabled");
+  spec.periods = parse_periods(morph, o.periods);
+  require_positive(o.max_steps, "--max-steps");
+  spec.max_steps = o.max_steps;
+  if (!o.video.empty() && report::film_format(o.video) != report::FilmFormat::video) {
+    throw BadInput("--video must name an .mp4 file");
+  }
+  sim::SimOptions options = sim_options(o.sim);
+  options.scene.tunnel = true;
+  const sim::SimModel model = sim::make_sim_model(robot::RobotKind::hexapod, options);
+  std::optional<report::Film> film;
+  if (!o.video.empty()) {
+    report::FilmSpec film_spec;
+    film_spec.out = o.video;
+    film.emplace(model, film_spec);
+  }
+  const experiments::TunnelRun run = experiments::run_tunnel(
+      model, spec, [&](const sim::SimState& s) {
+        if (film) film->capture(s, "tunnel 3.0 m x 1.2 m");
+      });
+  if (film) film->finish();
+  const std::string result =
+      run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
+  if (o.json) {
+    nlohmann::json j{{"passed", run.passed},         {"touched_wall", run.touched_wall},
+                     {"steps", run.steps},           {"forward_m", run.forward_m},
+                     {"lateral_m", run.lateral_m},   {"deviation_deg", run.deviation_deg}};
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << std::fixed << std::setprecision(2) << "tunnel " << model.scene.tunnel_length
+            << " m x " << model.scene.tunnel_width << " m, disabled "
+            << (spec.disabled.empty() ? "none" : robot::leg_list_name(morph, spec.disabled))
+            << "\n"
+            << result << " after " << run.steps << " steps: forward " << run.forward_m
+            << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
+            << "° (+ = left)\n";
+  if (film) std::cout << "wrote " << o.video << "\n";
+}
+
+}  // namespace
+
+void register_tunnel(CLI::App& app) {
+  auto o = std::make_shared<TunnelOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "tunnel", "walk the hexapod through the 3.0 m x 1.2 m tunnel of paper §5 (Table 1)");
+  cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1,R3");
+  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")
+      ->capture_default_str();
+  cmd->add_option("--max-steps", o->max_steps, "steps before giving up")->capture_default_str();
+  cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
+  cmd->add_flag("--json", o->json, "print one JSON object");
+  add_sim_flags(*cmd, o->sim);
+  cmd->callback([o] { run_tunnel(*o); });
+}
+
+}  // namespace multicpg::apps
