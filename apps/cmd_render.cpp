@@ -51,17 +51,8 @@ void run_render(const RenderOptions& o) {
   report::Film film(model, spec);
 
   if (learn) {
-    int trial = 0;
-    std::vector<int> last;
     const experiments::LearningRun run =
-        experiments::run_learning(model, *learn, false, 0, [&](const sim::SimState& s) {
-          std::vector<int> now;
-          for (const auto& leg : s.controller.legs) now.push_back(leg.cpg.period);
-          if (!last.empty() && now != last) ++trial;
-          last = now;
-          film.capture(s, trial == 0 ? "walking, measuring the deviation"
-                                     : "learning: trial " + std::to_string(trial));
-        });
+        experiments::run_learning(model, *learn, false, 0, report::film_learning(film));
     const std::string summary = run.result.status + " after " +
                                 std::to_string(run.result.trials) + " trials";
     if (film.format() == report::FilmFormat::picture) film.picture(run.final_state, summary);

@@ -4,13 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "common/angles.h"
 #include "common/errors.h"
 
 namespace multicpg::learning {
 namespace {
-
-constexpr double kFullTurnDeg = 360.0;
-constexpr double kHalfTurnDeg = 180.0;
 
 // Walks the robot on, failing the legs at the configured step (SPEC §4: faults at any step).
 class Walk {
@@ -32,7 +30,7 @@ class Walk {
   double window() {
     const double start_yaw = walker_.yaw_deg();
     steps(options_.window_steps);
-    const double e = std::abs(wrap_deg(walker_.yaw_deg() - start_yaw));
+    const double e = std::abs(wrap_degrees(walker_.yaw_deg() - start_yaw));
     if (!std::isfinite(e)) throw RuntimeFailure("the walker's yaw is not a finite number");
     return e;
   }
@@ -97,12 +95,6 @@ void validate(const CompensationOptions& options, const robot::Morphology& morph
   }
 }
 
-double wrap_deg(double degrees) {
-  double r = std::fmod(degrees, kFullTurnDeg);
-  if (r > kHalfTurnDeg) r -= kFullTurnDeg;
-  if (r <= -kHalfTurnDeg) r += kFullTurnDeg;
-  return r;
-}
 
 LearningResult compensate(Walker& walker, const CompensationOptions& options) {
   const neural::ControllerModel& model = walker.controller_model();

@@ -84,8 +84,6 @@ struct LearningResult {
 // working and every client synchronised (as make_controller_state leaves it).
 LearningResult compensate(Walker& walker, const CompensationOptions& options);
 
-// Yaw difference end - start wrapped to (-180, 180].
-double wrap_deg(double degrees);
 
 // JSON with converged, status, reason, trials, initial/final_deviation_deg, periods
 // (leg name -> period), disabled (names), steps_walked, detection_step (null if none),

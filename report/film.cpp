@@ -1,6 +1,7 @@
 #include "report/film.h"
 
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "common/atomic_file.h"
@@ -68,6 +69,23 @@ void Film::finish() {
 
 void Film::picture(const sim::SimState& state, const std::string& caption) {
   write_png(frame(state, caption), spec_.out);
+}
+
+experiments::StepHook film_learning(Film& film) {
+  struct Progress {
+    int trial = 0;
+    std::vector<int> periods;
+  };
+  auto progress = std::make_shared<Progress>();
+  return [&film, progress](const sim::SimState& state) {
+    std::vector<int> periods;
+    for (const neural::LegState& leg : state.controller.legs) periods.push_back(leg.cpg.period);
+    if (!progress->periods.empty() && periods != progress->periods) ++progress->trial;
+    progress->periods = std::move(periods);
+    film.capture(state, progress->trial == 0
+                            ? "walking, measuring the deviation"
+                            : "learning: trial " + std::to_string(progress->trial));
+  };
 }
 
 int Film::frames() const { return video_ ? video_->frames() : 1; }

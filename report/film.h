@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "experiments/learning_run.h"
 #include "report/render.h"
 #include "report/video.h"
 #include "sim/sim.h"
@@ -55,5 +56,10 @@ class Film {
   Renderer renderer_;
   std::optional<VideoWriter> video_;
 };
+
+// A step hook for experiments::run_learning that films the run, each frame captioned with
+// what the robot is doing: walking while the deviation is measured, then the trial number (a
+// trial starts whenever the periods change). `film` must outlive the run.
+experiments::StepHook film_learning(Film& film);
 
 }  // namespace multicpg::report

@@ -322,17 +322,8 @@ class Reproduction {
     options.seed = o_.seed;
     const fs::path video = dir("videos") / "learning-r1.mp4";
     Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, sizes_.film_speed, {}});
-    int trial = 0;
-    std::vector<int> last_periods;
     const experiments::LearningRun run = experiments::run_learning(
-        hexapod, options, /*record=*/true, kAfterLearningSteps, [&](const sim::SimState& s) {
-          std::vector<int> periods;
-          for (const auto& leg : s.controller.legs) periods.push_back(leg.cpg.period);
-          if (!last_periods.empty() && periods != last_periods) ++trial;
-          last_periods = periods;
-          film.capture(s, trial == 0 ? "walking, measuring the deviation"
-                                     : "learning: trial " + std::to_string(trial));
-        });
+        hexapod, options, /*record=*/true, kAfterLearningSteps, film_learning(film));
     film.finish();
     const learning::LearningResult& r = run.result;
 

@@ -131,18 +131,9 @@ RobotBody quadruped_body() {
 }  // namespace
 
 const RobotBody& robot_body(RobotKind kind) {
-  static const RobotBody hexapod = amos_body(RobotKind::hexapod);
-  static const RobotBody quadruped = quadruped_body();
-  static const RobotBody octopod = amos_body(RobotKind::octopod);
-  switch (kind) {
-    case RobotKind::quadruped:
-      return quadruped;
-    case RobotKind::octopod:
-      return octopod;
-    case RobotKind::hexapod:
-      break;
-  }
-  return hexapod;
+  static const std::array<RobotBody, kRobotKinds.size()> bodies{
+      amos_body(RobotKind::hexapod), quadruped_body(), amos_body(RobotKind::octopod)};
+  return bodies[robot_index(kind)];
 }
 
 double total_mass(const RobotBody& body) {

@@ -30,18 +30,10 @@ Morphology make(RobotKind kind, std::string name, int per_side) {
 }  // namespace
 
 const Morphology& morphology(RobotKind kind) {
-  static const Morphology hexapod = make(RobotKind::hexapod, "hexapod", 3);
-  static const Morphology quadruped = make(RobotKind::quadruped, "quadruped", 2);
-  static const Morphology octopod = make(RobotKind::octopod, "octopod", 4);
-  switch (kind) {
-    case RobotKind::quadruped:
-      return quadruped;
-    case RobotKind::octopod:
-      return octopod;
-    case RobotKind::hexapod:
-      break;
-  }
-  return hexapod;
+  static const std::array<Morphology, kRobotKinds.size()> all{
+      make(RobotKind::hexapod, "hexapod", 3), make(RobotKind::quadruped, "quadruped", 2),
+      make(RobotKind::octopod, "octopod", 4)};
+  return all[robot_index(kind)];
 }
 
 std::string_view to_string(RobotKind kind) { return morphology(kind).name; }
@@ -59,7 +51,7 @@ std::string_view to_string(Joint joint) {
 }
 
 RobotKind parse_robot(std::string_view name) {
-  for (RobotKind k : {RobotKind::hexapod, RobotKind::quadruped, RobotKind::octopod}) {
+  for (RobotKind k : kRobotKinds) {
     if (name == morphology(k).name) return k;
   }
   throw BadInput("unknown robot '" + std::string(name) +

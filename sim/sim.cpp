@@ -298,11 +298,4 @@ bool foot_contact(const SimModel& model, const SimState& state, std::size_t leg)
   return foot_force(model, state, leg) > kContactThresholdN;
 }
 
-double wrap_degrees(double deg) {
-  double w = std::fmod(deg, 360.0);
-  if (w <= -180.0) w += 360.0;
-  if (w > 180.0) w -= 360.0;
-  return w;
-}
-
 }  // namespace multicpg::sim

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "common/angles.h"
 #include "neural/controller.h"
 #include "robot/body.h"
 #include "robot/mjcf.h"
@@ -127,7 +128,5 @@ double joint_angle(const SimModel& model, const SimState& state, std::size_t leg
 double foot_force(const SimModel& model, const SimState& state, std::size_t leg);  // N
 bool foot_contact(const SimModel& model, const SimState& state, std::size_t leg);
 
-// Wraps an angle in degrees to (-180, 180] (SPEC §6).
-double wrap_degrees(double deg);
 
 }  // namespace multicpg::sim

@@ -1,5 +1,7 @@
 #include "tests/cli_runner.h"
 
+#include <gtest/gtest.h>
+
 #include <sys/wait.h>
 
 #include <array>
@@ -47,6 +49,23 @@ int count_lines(const std::string& text) {
   for (char c : text) n += c == '\n' ? 1 : 0;
   if (!text.empty() && text.back() != '\n') ++n;
   return n;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+void expect_bad_input(const std::string& args, const std::string& must_mention) {
+  const CliResult r = run_cli(args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
+  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\n" << r.err;
+  EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
 }
 
 }  // namespace multicpg::testing

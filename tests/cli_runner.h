@@ -24,4 +24,12 @@ std::string make_temp_dir(const std::string& prefix);
 // Lines of `text` without the trailing empty line.
 int count_lines(const std::string& text);
 
+// A whole file (binary-safe); empty when it cannot be read.
+std::string read_file(const std::string& path);
+std::string first_line(const std::string& text);
+
+// Bad input: `multicpg <args>` exits 2 with exactly one line on stderr that mentions
+// `must_mention`, and prints nothing on stdout (GoogleTest expectations).
+void expect_bad_input(const std::string& args, const std::string& must_mention);
+
 }  // namespace multicpg::testing

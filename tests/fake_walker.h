@@ -1,6 +1,7 @@
 // A stand-in for the simulated robot, for tests of the learning loop without physics.
 #pragma once
 
+#include "common/angles.h"
 #include "learning/compensation.h"
 #include "neural/controller.h"
 
@@ -19,7 +20,7 @@ class FakeWalker : public Walker {
         bias_(bias_deg_per_step) {}
 
   void step() override {
-    yaw_ = wrap_deg(yaw_ + rate());
+    yaw_ = wrap_degrees(yaw_ + rate());
     ++state_.step;
   }
   double yaw_deg() const override { return yaw_; }

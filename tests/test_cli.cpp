@@ -11,24 +11,10 @@ namespace {
 
 using multicpg::testing::count_lines;
 using multicpg::testing::make_temp_dir;
+using multicpg::testing::expect_bad_input;
+using multicpg::testing::first_line;
+using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
-
-std::string read(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
-
-// Bad input: exit code 2 and exactly one line on stderr.
-void expect_bad_input(const std::string& args, const std::string& must_mention) {
-  const auto r = run_cli(args);
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\n" << r.err;
-}
 
 TEST(CliGait, PrintsDiagramAndWritesCsv) {
   const std::string dir = make_temp_dir("gait-");
@@ -36,7 +22,7 @@ TEST(CliGait, PrintsDiagramAndWritesCsv) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("R1 "), std::string::npos);
   EXPECT_NE(r.out.find("swing fraction"), std::string::npos);
-  const std::string csv = read(dir + "/g.csv");
+  const std::string csv = read_file(dir + "/g.csv");
   EXPECT_EQ(first_line(csv), "step,R1,R2,R3,L1,L2,L3");
   EXPECT_EQ(count_lines(csv), 37);
   std::filesystem::remove_all(dir);
@@ -46,10 +32,10 @@ TEST(CliGait, QuadrupedAndOctopodColumns) {
   const std::string dir = make_temp_dir("gait-");
   ASSERT_EQ(run_cli("gait --robot quadruped --period 4 --steps 10 --csv " + dir + "/q.csv")
                 .exit_code, 0);
-  EXPECT_EQ(first_line(read(dir + "/q.csv")), "step,R1,R2,L1,L2");
+  EXPECT_EQ(first_line(read_file(dir + "/q.csv")), "step,R1,R2,L1,L2");
   ASSERT_EQ(run_cli("gait --robot octopod --period 5 --steps 10 --csv " + dir + "/o.csv")
                 .exit_code, 0);
-  EXPECT_EQ(first_line(read(dir + "/o.csv")), "step,R1,R2,R3,R4,L1,L2,L3,L4");
+  EXPECT_EQ(first_line(read_file(dir + "/o.csv")), "step,R1,R2,R3,R4,L1,L2,L3,L4");
   std::filesystem::remove_all(dir);
 }
 
@@ -83,7 +69,7 @@ TEST(CliCpg, WritesColumnsAndReportsOrbits) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("master x1: period-5 orbit"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("client x1: period-6 orbit"), std::string::npos) << r.out;
-  const std::string csv = read(dir + "/c.csv");
+  const std::string csv = read_file(dir + "/c.csv");
   EXPECT_EQ(first_line(csv), "step,master_x1,master_x2,client_x1,client_x2");
   EXPECT_EQ(count_lines(csv), 3001);
 

@@ -16,22 +16,11 @@ namespace {
 namespace fs = std::filesystem;
 using multicpg::testing::count_lines;
 using multicpg::testing::make_temp_dir;
+using multicpg::testing::expect_bad_input;
+using multicpg::testing::first_line;
+using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
 using multicpg::testing::run_shell;
-
-std::string read(const fs::path& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-void expect_bad_input(const std::string& args, const std::string& must_mention) {
-  const auto r = run_cli(args);
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\n" << r.err;
-}
 
 TEST(CliLearn, PrintsTheTraceAndTheFinalCombination) {
   const auto r = run_cli("learn --robot hexapod --disable R1 --seed 2");
@@ -64,12 +53,12 @@ TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
   const std::string dir = make_temp_dir("learn-");
   const auto r = run_cli("learn --robot quadruped --disable L2 --seed 1 --out " + dir + "/run");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const auto j = nlohmann::json::parse(read(fs::path(dir) / "run/learning.json"));
-  const std::string trace = read(fs::path(dir) / "run/trace.csv");
+  const auto j = nlohmann::json::parse(read_file(fs::path(dir) / "run/learning.json"));
+  const std::string trace = read_file(fs::path(dir) / "run/trace.csv");
   EXPECT_EQ(trace.substr(0, trace.find('\n')),
             "trial,R1,R2,L1,L2,deviation_deg,accepted,acceptance_probability");
   EXPECT_EQ(count_lines(trace), j.at("trials").get<int>() + 1);
-  const std::string steps = read(fs::path(dir) / "run/steps.csv");
+  const std::string steps = read_file(fs::path(dir) / "run/steps.csv");
   EXPECT_EQ(steps.rfind("step,time_s,x_m,y_m,z_m,yaw_deg,R1_TC_command,", 0), 0u);
   EXPECT_EQ(count_lines(steps), j.at("steps_walked").get<int>() + 2);  // header + row 0
   fs::remove_all(dir);
@@ -108,7 +97,7 @@ std::map<std::string, std::string> saved_runs(const fs::path& dir) {
   std::map<std::string, std::string> out;
   if (!fs::exists(dir / "runs")) return out;
   for (const auto& e : fs::directory_iterator(dir / "runs")) {
-    if (e.path().extension() == ".json") out[e.path().filename()] = read(e.path());
+    if (e.path().extension() == ".json") out[e.path().filename()] = read_file(e.path());
   }
   return out;
 }
@@ -118,15 +107,15 @@ TEST(CliExperiment, JobsDoNotChangeTheTableAndAKilledRunResumes) {
   const std::string args = "experiment table --robot quadruped --runs 1 --seed 7 ";
   ASSERT_EQ(run_cli(args + "--jobs 1 --out " + dir + "/one").exit_code, 0);
   ASSERT_EQ(run_cli(args + "--jobs 2 --out " + dir + "/two").exit_code, 0);
-  const std::string table = read(fs::path(dir) / "one/table.csv");
+  const std::string table = read_file(fs::path(dir) / "one/table.csv");
   EXPECT_EQ(count_lines(table), 5);  // header + R1, R2, L1, L2
-  EXPECT_EQ(read(fs::path(dir) / "two/table.csv"), table);
+  EXPECT_EQ(read_file(fs::path(dir) / "two/table.csv"), table);
 
   // Start, kill hard once two runs are saved, start again: same table, saved runs untouched.
   const fs::path killed = fs::path(dir) / "killed";
   run_shell("cd " + dir + " && (" + std::string(MULTICPG_EXE) + " " + args +
             "--jobs 1 --out killed >/dev/null 2>&1 & echo $! > pid)");
-  const std::string pid = read(fs::path(dir) / "pid");
+  const std::string pid = read_file(fs::path(dir) / "pid");
   constexpr int kMaxPolls = 6000;  // a bound on the wait, not a timing assertion
   for (int i = 0; i < kMaxPolls && saved_runs(killed).size() < 2; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -137,7 +126,7 @@ TEST(CliExperiment, JobsDoNotChangeTheTableAndAKilledRunResumes) {
   ASSERT_LT(before.size(), 4u) << "the experiment finished before it could be killed";
   const auto resumed = run_cli(args + "--jobs 1 --out " + killed.string());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_EQ(read(killed / "table.csv"), table);
+  EXPECT_EQ(read_file(killed / "table.csv"), table);
   const auto after = saved_runs(killed);
   for (const auto& [name, text] : before) EXPECT_EQ(after.at(name), text) << name;
 
@@ -154,7 +143,7 @@ TEST(CliExperiment, ResultsPageSetsOursBesideThePaper) {
             0);
   const auto r = run_cli("experiment results --quadruped " + dir + "/q --out " + dir + "/r.md");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string page = read(fs::path(dir) / "r.md");
+  const std::string page = read_file(fs::path(dir) / "r.md");
   EXPECT_NE(page.find("## Quadruped: learning per scenario (paper Fig. 13)"), std::string::npos);
   EXPECT_NE(page.find("| The paper states | Ours |"), std::string::npos);
   EXPECT_NE(page.find("| R1 | 1 |"), std::string::npos);

@@ -13,22 +13,11 @@ namespace {
 namespace fs = std::filesystem;
 using multicpg::testing::count_lines;
 using multicpg::testing::make_temp_dir;
+using multicpg::testing::expect_bad_input;
+using multicpg::testing::first_line;
+using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
 using multicpg::testing::run_shell;
-
-std::string read(const fs::path& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-void expect_bad_input(const std::string& args, const std::string& must_mention) {
-  const auto r = run_cli(args);
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\n" << r.err;
-}
 
 // Frames of a video, counted by decoding it (ffprobe).
 int video_frames(const fs::path& mp4) {
@@ -38,7 +27,7 @@ int video_frames(const fs::path& mp4) {
 }
 
 bool is_png(const fs::path& path) {
-  const std::string bytes = read(path);
+  const std::string bytes = read_file(path);
   return bytes.size() > 100 && bytes.compare(1, 3, "PNG") == 0;
 }
 
@@ -127,7 +116,7 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
     const fs::path png = root / "figures" / (std::string(stem) + ".png");
     EXPECT_TRUE(is_png(png)) << png;
     EXPECT_GT(fs::file_size(png), 5000u) << png;
-    EXPECT_NE(read(root / "figures" / (std::string(stem) + ".svg")).find("</svg>"),
+    EXPECT_NE(read_file(root / "figures" / (std::string(stem) + ".svg")).find("</svg>"),
               std::string::npos)
         << stem;
     EXPECT_TRUE(fs::exists(root / "figures" / (std::string(stem) + ".csv"))) << stem;

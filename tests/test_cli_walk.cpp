@@ -12,27 +12,10 @@ namespace {
 
 using multicpg::testing::count_lines;
 using multicpg::testing::make_temp_dir;
+using multicpg::testing::expect_bad_input;
+using multicpg::testing::first_line;
+using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
-
-std::string read(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
-std::string first_line(const std::string& text) {
-  return text.substr(0, text.find('\n'));
-}
-
-// Bad input: exit code 2 and exactly one line on stderr naming the problem.
-void expect_bad_input(const std::string& args, const std::string& must_mention) {
-  const auto r = run_cli(args);
-  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << args << "\n" << r.err;
-  EXPECT_NE(r.err.find(must_mention), std::string::npos) << args << "\n" << r.err;
-  EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
-}
 
 TEST(CliWalk, BadInput) {
   expect_bad_input("walk --robot spider", "spider");
@@ -106,7 +89,7 @@ TEST(CliWalk, CsvHasEveryStepAndColumn) {
   const std::string dir = make_temp_dir("walk-");
   const auto r = run_cli("walk --robot quadruped --steps 30 --settle 5 --csv " + dir + "/w.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string csv = read(dir + "/w.csv");
+  const std::string csv = read_file(dir + "/w.csv");
   std::string header = "step,time_s,x_m,y_m,z_m,yaw_deg";
   for (const char* leg : {"R1", "R2", "L1", "L2"}) {
     for (const char* joint : {"TC", "CTr", "FTi"}) {

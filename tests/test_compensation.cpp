@@ -2,6 +2,8 @@
 // of the periods of its working legs, plus the settle-time claim behind the default.
 #include <gtest/gtest.h>
 
+#include "common/angles.h"
+
 #include <cmath>
 
 #include "common/errors.h"
@@ -164,12 +166,12 @@ TEST(Compensation, RejectsBadInput) {
 }
 
 TEST(Compensation, WrapsYawToHalfOpenInterval) {
-  EXPECT_DOUBLE_EQ(wrap_deg(190.0), -170.0);
-  EXPECT_DOUBLE_EQ(wrap_deg(-190.0), 170.0);
-  EXPECT_DOUBLE_EQ(wrap_deg(180.0), 180.0);
-  EXPECT_DOUBLE_EQ(wrap_deg(-180.0), 180.0);
-  EXPECT_DOUBLE_EQ(wrap_deg(540.0), 180.0);
-  EXPECT_DOUBLE_EQ(wrap_deg(-30.0), -30.0);
+  EXPECT_DOUBLE_EQ(multicpg::wrap_degrees(190.0), -170.0);
+  EXPECT_DOUBLE_EQ(multicpg::wrap_degrees(-190.0), 170.0);
+  EXPECT_DOUBLE_EQ(multicpg::wrap_degrees(180.0), 180.0);
+  EXPECT_DOUBLE_EQ(multicpg::wrap_degrees(-180.0), 180.0);
+  EXPECT_DOUBLE_EQ(multicpg::wrap_degrees(540.0), 180.0);
+  EXPECT_DOUBLE_EQ(multicpg::wrap_degrees(-30.0), -30.0);
 }
 
 // The default settle time covers the lock of every learnable period except p = 4 (which is

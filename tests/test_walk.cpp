@@ -21,18 +21,10 @@ constexpr long kSettle = 800;
 constexpr double kStraightDeg = 8.0;  // SPEC §6 threshold
 
 const sim::SimModel& model(RobotKind kind) {
-  static const sim::SimModel hexapod = sim::make_sim_model(RobotKind::hexapod);
-  static const sim::SimModel quadruped = sim::make_sim_model(RobotKind::quadruped);
-  static const sim::SimModel octopod = sim::make_sim_model(RobotKind::octopod);
-  switch (kind) {
-    case RobotKind::quadruped:
-      return quadruped;
-    case RobotKind::octopod:
-      return octopod;
-    case RobotKind::hexapod:
-      break;
-  }
-  return hexapod;
+  static const std::array<sim::SimModel, robot::kRobotKinds.size()> models{
+      sim::make_sim_model(RobotKind::hexapod), sim::make_sim_model(RobotKind::quadruped),
+      sim::make_sim_model(RobotKind::octopod)};
+  return models[robot::robot_index(kind)];
 }
 
 sim::WalkResult walk(RobotKind kind, int period, std::vector<std::size_t> disabled, long settle,
@@ -220,8 +212,8 @@ TEST(Walk, WindowDeviationsWrapAndSign) {
   const std::vector<double> yaw{170.0, 0.0, -170.0, 0.0, -150.0};
   EXPECT_EQ(sim::window_deviations(yaw, 0, 2), (std::vector<double>{20.0, 20.0}));
   EXPECT_EQ(sim::window_deviations(yaw, 1, 2), (std::vector<double>{0.0}));
-  EXPECT_DOUBLE_EQ(sim::wrap_degrees(540.0), 180.0);
-  EXPECT_DOUBLE_EQ(sim::wrap_degrees(-180.0), 180.0);
+  EXPECT_DOUBLE_EQ(wrap_degrees(540.0), 180.0);
+  EXPECT_DOUBLE_EQ(wrap_degrees(-180.0), 180.0);
 }
 
 TEST(Physics, NanStateStopsTheRunNamingTheStep) {
