@@ -91,8 +91,8 @@ void run_cpg(const CpgOptions& o) {
     f.precision(17);
     for (std::size_t t = 0; t < samples.size(); ++t) {
       const auto& s = samples[t];
-      f << t << "," << s.master_x1 << "," << s.master_x2 << "," << s.client_x1 << ","
-        << s.client_x2 << "\n";
+      f << t << "," << s.master_x1 << "," << s.master_x2 << "," << s.client_x1 << "," << s.client_x2
+        << "\n";
     }
     csv->commit();
   }

@@ -46,8 +46,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
 void print_table(const experiments::ExperimentTable& t, const std::string& out) {
   std::cout << (t.experiment == "beta" ? experiments::beta_table_markdown(t.rows)
                                        : experiments::scenario_table_markdown(t.rows))
-            << "\nwrote " << out << "/{table.csv,table.md,summary.json} and " << out
-            << "/runs/\n";
+            << "\nwrote " << out << "/{table.csv,table.md,summary.json} and " << out << "/runs/\n";
 }
 
 void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with_beta) {
@@ -75,8 +74,9 @@ void register_experiment(CLI::App& app) {
   t->callback([table] {
     const robot::RobotKind kind = robot::parse_robot(table->robot);
     if (kind == robot::RobotKind::octopod) {
-      throw BadInput("--robot octopod: the paper has scenario tables for the hexapod and "
-                     "quadruped only");
+      throw BadInput(
+          "--robot octopod: the paper has scenario tables for the hexapod and "
+          "quadruped only");
     }
     print_table(experiments::run_scenario_table(spec_of(*table, kind)), table->out);
   });

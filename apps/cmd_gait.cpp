@@ -39,13 +39,12 @@ void run_gait(const GaitOptions& o) {
 
   std::vector<std::string> names;
   for (const robot::Leg& leg : model.morphology.legs) names.push_back(leg.name);
-  std::cout << model.morphology.name << ", period " << o.period << ", steps " << o.warmup
-            << ".." << o.warmup + o.steps - 1 << " ('#' stance, '.' swing)";
+  std::cout << model.morphology.name << ", period " << o.period << ", steps " << o.warmup << ".."
+            << o.warmup + o.steps - 1 << " ('#' stance, '.' swing)";
   if (!disabled.empty()) {
     std::cout << ", disabled " << robot::leg_list_name(model.morphology, disabled);
   }
-  std::cout << "\n"
-            << gait_diagram(names, record.swing, o.warmup);
+  std::cout << "\n" << gait_diagram(names, record.swing, o.warmup);
   const std::vector<double> fractions = experiments::swing_fractions(record);
   std::cout << "swing fraction:";
   for (std::size_t i = 0; i < names.size(); ++i) {

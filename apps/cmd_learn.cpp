@@ -27,7 +27,8 @@ struct LearnOptions {
   std::string out;
 };
 
-std::string period_cells(const std::vector<int>& periods, const std::vector<std::size_t>& disabled) {
+std::string period_cells(const std::vector<int>& periods,
+                         const std::vector<std::size_t>& disabled) {
   std::ostringstream row;
   for (std::size_t i = 0; i < periods.size(); ++i) {
     const bool off = std::find(disabled.begin(), disabled.end(), i) != disabled.end();
@@ -44,8 +45,8 @@ void print_trace(std::ostream& out, const robot::Morphology& morph,
   for (const robot::Leg& leg : morph.legs) out << std::setw(4) << leg.name;
   out << "  deviation  decision\n";
   std::vector<int> start(morph.size(), learning::kStartPeriod);
-  out << std::setw(5) << 0 << period_cells(start, disabled) << std::fixed
-      << std::setprecision(2) << std::setw(10) << r.initial_deviation_deg << "°  ";
+  out << std::setw(5) << 0 << period_cells(start, disabled) << std::fixed << std::setprecision(2)
+      << std::setw(10) << r.initial_deviation_deg << "°  ";
   if (r.detection_step) {
     out << "deviation detected at step " << *r.detection_step << ": CPGs desynchronised\n";
   } else {

@@ -53,8 +53,8 @@ void run_render(const RenderOptions& o) {
   if (learn) {
     const experiments::LearningRun run =
         experiments::run_learning(model, *learn, false, 0, report::film_learning(film));
-    const std::string summary = run.result.status + " after " +
-                                std::to_string(run.result.trials) + " trials";
+    const std::string summary =
+        run.result.status + " after " + std::to_string(run.result.trials) + " trials";
     if (film.format() == report::FilmFormat::picture) film.picture(run.final_state, summary);
     film.finish();
     std::cout << summary << "; wrote " << o.out << " (" << film.frames() << " frames)\n";
@@ -83,11 +83,9 @@ void register_render(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
   CLI::App* cmd = app.add_subcommand(
       "render", "render a walk or a learning run to a video (.mp4) or picture (.png), headless");
-  cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")
-      ->required();
+  cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
   cmd->add_option("--robot", o->robot, "hexapod, quadruped or octopod")->capture_default_str();
-  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")
-      ->capture_default_str();
+  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")->capture_default_str();
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1,R3");
   cmd->add_option("--disable-at", o->disable_at, "step at which they fail")->capture_default_str();
   cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")->capture_default_str();

@@ -43,24 +43,23 @@ void run_tunnel(const TunnelOptions& o) {
     film_spec.out = o.video;
     film.emplace(model, film_spec);
   }
-  const experiments::TunnelRun run = experiments::run_tunnel(
-      model, spec, [&](const sim::SimState& s) {
+  const experiments::TunnelRun run =
+      experiments::run_tunnel(model, spec, [&](const sim::SimState& s) {
         if (film) film->capture(s, "tunnel 3.0 m x 1.2 m");
       });
   if (film) film->finish();
   const std::string result =
       run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
   if (o.json) {
-    nlohmann::json j{{"passed", run.passed},         {"touched_wall", run.touched_wall},
-                     {"steps", run.steps},           {"forward_m", run.forward_m},
-                     {"lateral_m", run.lateral_m},   {"deviation_deg", run.deviation_deg}};
+    nlohmann::json j{{"passed", run.passed},       {"touched_wall", run.touched_wall},
+                     {"steps", run.steps},         {"forward_m", run.forward_m},
+                     {"lateral_m", run.lateral_m}, {"deviation_deg", run.deviation_deg}};
     std::cout << j.dump(2) << "\n";
     return;
   }
   std::cout << std::fixed << std::setprecision(2) << "tunnel " << model.scene.tunnel_length
             << " m x " << model.scene.tunnel_width << " m, disabled "
-            << (spec.disabled.empty() ? "none" : robot::leg_list_name(morph, spec.disabled))
-            << "\n"
+            << (spec.disabled.empty() ? "none" : robot::leg_list_name(morph, spec.disabled)) << "\n"
             << result << " after " << run.steps << " steps: forward " << run.forward_m
             << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
             << "° (+ = left)\n";
@@ -74,8 +73,7 @@ void register_tunnel(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "tunnel", "walk the hexapod through the 3.0 m x 1.2 m tunnel of paper §5 (Table 1)");
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1,R3");
-  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")
-      ->capture_default_str();
+  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")->capture_default_str();
   cmd->add_option("--max-steps", o->max_steps, "steps before giving up")->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
   cmd->add_flag("--json", o->json, "print one JSON object");

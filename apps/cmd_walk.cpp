@@ -151,8 +151,8 @@ void register_walk(CLI::App& app) {
                   "controller step (from 0, settling included) at which they fail")
       ->capture_default_str();
   cmd->add_option("--warmup", opts->warmup,
-                 "controller steps run before the robot moves, so it starts in its gait "
-                 "(1000 locks every CPG and fills the delay lines)")
+                  "controller steps run before the robot moves, so it starts in its gait "
+                  "(1000 locks every CPG and fills the delay lines)")
       ->capture_default_str();
   cmd->add_option("--settle", opts->settle,
                   "steps walked before measuring (delay lines fill after 126 steps for the "

@@ -13,7 +13,6 @@ std::string gait_diagram(const std::vector<std::string>& legs,
                          std::size_t width = 100);
 
 // A value in [0, 1] per column drawn as `rows` lines of text (highest row first).
-std::string strip_chart(const std::string& label, const std::vector<double>& values,
-                        int rows = 5);
+std::string strip_chart(const std::string& label, const std::vector<double>& values, int rows = 5);
 
 }  // namespace multicpg::apps

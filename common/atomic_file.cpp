@@ -13,7 +13,8 @@ namespace fs = std::filesystem;
 
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
   if (path_.empty()) throw BadInput("empty output path");
-  if (fs::is_directory(path_)) throw BadInput("cannot write '" + path_.string() + "': is a directory");
+  if (fs::is_directory(path_))
+    throw BadInput("cannot write '" + path_.string() + "': is a directory");
   tmp_ = path_;
   tmp_ += ".tmp" + std::to_string(::getpid());
   out_.open(tmp_, std::ios::out | std::ios::trunc);
@@ -49,7 +50,8 @@ void write_file_atomic(const fs::path& path, const std::string& text) {
 
 void require_writable_file(const fs::path& path) {
   if (path.empty()) throw BadInput("empty output path");
-  if (fs::is_directory(path)) throw BadInput("cannot write '" + path.string() + "': is a directory");
+  if (fs::is_directory(path))
+    throw BadInput("cannot write '" + path.string() + "': is a directory");
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
     throw BadInput("cannot write '" + path.string() + "': folder '" + parent.string() +

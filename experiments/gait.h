@@ -10,7 +10,7 @@
 namespace multicpg::experiments {
 
 struct GaitRecord {
-  std::vector<std::vector<bool>> swing;                  // [step][leg]
+  std::vector<std::vector<bool>> swing;                   // [step][leg]
   std::vector<std::vector<std::array<double, 3>>> motor;  // [step][leg] = TC, CTr, FTi (m)
 };
 

@@ -90,9 +90,10 @@ ExperimentTable read_experiment(const std::filesystem::path& out) {
   nlohmann::json j;
   try {
     in >> j;
-    ExperimentTable table{j.at("experiment").get<std::string>(), j.at("robot").get<std::string>(),
-                          {}};
-    for (const nlohmann::json& row : j.at("rows")) table.rows.push_back(group_summary_from_json(row));
+    ExperimentTable table{
+        j.at("experiment").get<std::string>(), j.at("robot").get<std::string>(), {}};
+    for (const nlohmann::json& row : j.at("rows"))
+      table.rows.push_back(group_summary_from_json(row));
     return table;
   } catch (const nlohmann::json::exception& e) {
     throw BadInput("'" + file.string() + "' is not an experiment summary: " + e.what());

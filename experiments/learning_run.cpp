@@ -19,7 +19,9 @@ void SimWalker::step() {
   if (on_step_) on_step_(state_);
 }
 
-double SimWalker::yaw_deg() const { return sim::trunk_yaw_deg(model_, state_); }
+double SimWalker::yaw_deg() const {
+  return sim::trunk_yaw_deg(model_, state_);
+}
 
 void SimWalker::disable(const std::vector<std::size_t>& legs) {
   for (std::size_t leg : legs) neural::set_disabled(state_.controller, leg, true);

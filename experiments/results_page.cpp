@@ -14,10 +14,9 @@ constexpr double kPaperR1FinalDeg = 0.25;
 constexpr int kPaperR1Trials = 7;
 constexpr double kThresholdDeg = 8.0;  // E_req, §4.1
 // Learned combinations the paper uses on the real robot (§5; reference §5.4).
-const std::map<std::string, std::string> kPaperCombinations{
-    {"R1", "R2=5 R3=4 L1=5 L2=6 L3=5"},
-    {"R1+R3", "R2=4 L1=6 L2=4 L3=9"},
-    {"R1+R3+L2", "R2=4 L1=4 L3=9"}};
+const std::map<std::string, std::string> kPaperCombinations{{"R1", "R2=5 R3=4 L1=5 L2=6 L3=5"},
+                                                            {"R1+R3", "R2=4 L1=6 L2=4 L3=9"},
+                                                            {"R1+R3+L2", "R2=4 L1=4 L3=9"}};
 
 std::string num(double v, int decimals) {
   char buf[64];
@@ -74,13 +73,12 @@ void scenario_section(std::ostringstream& out, const ExperimentTable& t, const s
       << s.groups_deviating << " scenarios that deviated have a median of at most 20 trials; "
       << pct(s.within, s.learned()) << " of the runs that learned converged within 20 trials — "
       << (2 * s.groups_median_within > s.groups_deviating ? "agrees" : "**differs**") << " |\n"
-      << "| learning ends with a deviation under " << num(kThresholdDeg, 0) << "° | "
-      << s.converged << " of the " << s.learned() << " runs that learned converged below "
-      << num(kThresholdDeg, 0) << "° — "
-      << (s.converged == s.learned()
-              ? std::string("agrees")
-              : "**differs**: " + std::to_string(s.learned() - s.converged) +
-                    " ended at the trial cap")
+      << "| learning ends with a deviation under " << num(kThresholdDeg, 0) << "° | " << s.converged
+      << " of the " << s.learned() << " runs that learned converged below " << num(kThresholdDeg, 0)
+      << "° — "
+      << (s.converged == s.learned() ? std::string("agrees")
+                                     : "**differs**: " + std::to_string(s.learned() - s.converged) +
+                                           " ended at the trial cap")
       << "; " << s.no_deviation << " of " << s.runs
       << " runs never deviated more than the threshold (nothing to learn) |\n";
 }
@@ -95,10 +93,10 @@ void paper_examples(std::ostringstream& out, const ExperimentTable& t) {
         << (std::abs(r1->initial_deviation_deg.mean - kPaperR1InitialDeg) <
                     0.25 * kPaperR1InitialDeg
                 ? "the turn is of the paper's size"
-                : "**differs**: our turn is " + std::string(r1->initial_deviation_deg.mean <
-                                                                    kPaperR1InitialDeg
-                                                                ? "weaker"
-                                                                : "stronger") +
+                : "**differs**: our turn is " +
+                      std::string(r1->initial_deviation_deg.mean < kPaperR1InitialDeg
+                                      ? "weaker"
+                                      : "stronger") +
                       " than the paper's")
         << " (paper's final " << num(kPaperR1FinalDeg, 2) << "° is one run) |\n";
   }
@@ -118,16 +116,16 @@ void paper_examples(std::ostringstream& out, const ExperimentTable& t) {
 
 void beta_section(std::ostringstream& out, const ExperimentTable& t) {
   out << markdown_table(t) << "\n";
-  const auto most = std::max_element(t.rows.begin(), t.rows.end(), [](const auto& a, const auto& b) {
-    return a.trials.mean < b.trials.mean;
-  });
+  const auto most =
+      std::max_element(t.rows.begin(), t.rows.end(),
+                       [](const auto& a, const auto& b) { return a.trials.mean < b.trials.mean; });
   const GroupSummary* zero = find_row(t, "0");
   const GroupSummary* greedy = find_row(t, "10");
   out << "| The paper states (Fig. 14, R1+R2 disabled) | Ours |\n|---|---|\n";
   if (zero != nullptr && most != t.rows.end()) {
     out << "| β = 0 (random search) needs the longest search | most trials on average at β = "
-        << most->group << " (" << num(most->trials.mean, 1) << "); β = 0: "
-        << num(zero->trials.mean, 1) << " — "
+        << most->group << " (" << num(most->trials.mean, 1)
+        << "); β = 0: " << num(zero->trials.mean, 1) << " — "
         << (most->group == "0" ? "agrees" : "**differs**") << " |\n";
   }
   if (greedy != nullptr) {

@@ -29,7 +29,7 @@ struct GroupSummary {
   std::string group;  // scenario name or beta
   int runs = 0;
   int converged = 0;
-  int no_deviation = 0;        // runs whose deviation never exceeded the threshold (0 trials)
+  int no_deviation = 0;          // runs whose deviation never exceeded the threshold (0 trials)
   MeanSd initial_deviation_deg;  // the deviation that started learning, over all runs
   MeanSd final_deviation_deg;    // over all runs
   MeanSd trials;                 // over all runs

@@ -95,7 +95,6 @@ void validate(const CompensationOptions& options, const robot::Morphology& morph
   }
 }
 
-
 LearningResult compensate(Walker& walker, const CompensationOptions& options) {
   const neural::ControllerModel& model = walker.controller_model();
   validate(options, model.morphology);

@@ -84,7 +84,6 @@ struct LearningResult {
 // working and every client synchronised (as make_controller_state leaves it).
 LearningResult compensate(Walker& walker, const CompensationOptions& options);
 
-
 // JSON with converged, status, reason, trials, initial/final_deviation_deg, periods
 // (leg name -> period), disabled (names), steps_walked, detection_step (null if none),
 // settle_steps and trace (trial, periods, deviation_deg, accepted, acceptance_probability,

@@ -72,7 +72,8 @@ ControllerState make_controller_state(const ControllerModel& model, int period =
 
 // Sets each leg's period and resets every CPG together (x, mu, counters, windows), so legs with
 // equal periods stay phase-locked (SPEC §1). Throws BadInput for a period outside 1-9.
-void set_periods(const ControllerModel& model, ControllerState& state, std::span<const int> periods);
+void set_periods(const ControllerModel& model, ControllerState& state,
+                 std::span<const int> periods);
 void set_period(const ControllerModel& model, ControllerState& state, int period);
 
 // Alpha of every client: 1 synchronises all to the master, 0 frees all (SPEC §5).

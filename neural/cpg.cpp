@@ -5,7 +5,9 @@
 namespace multicpg::neural {
 namespace {
 
-double sigmoid(double a) { return 1.0 / (1.0 + std::exp(-a)); }
+double sigmoid(double a) {
+  return 1.0 / (1.0 + std::exp(-a));
+}
 
 }  // namespace
 

@@ -26,7 +26,7 @@ struct CpgState {
   double x2 = 0.0;
   double mu = -1.0;
   int period = 4;
-  int counter = 0;  // updates since the last control event (reference §1.2 "n")
+  int counter = 0;       // updates since the last control event (reference §1.2 "n")
   bool chaotic = false;  // uncontrolled mode: c = 0 on every step (SPEC §1)
   // Outputs stored since the last control event: buffer[0] is that event's output.
   std::array<std::array<double, 2>, kMaxPeriod + 1> buffer{};

@@ -7,9 +7,9 @@ namespace multicpg::neural {
 
 // Weights of reference §3.3.
 struct MotorNeuronParams {
-  double tc_weight = -2.5;     // TC_pre = tanh(-2.5 v +- 10 input0)
-  double inhibition = 10.0;    // input0 weight
-  double psn_weight = 5.0;     // CTr_pre = tanh(5 o11 - 0.5 + 10 input0)
+  double tc_weight = -2.5;   // TC_pre = tanh(-2.5 v +- 10 input0)
+  double inhibition = 10.0;  // input0 weight
+  double psn_weight = 5.0;   // CTr_pre = tanh(5 o11 - 0.5 + 10 input0)
   double bias = -0.5;
 };
 

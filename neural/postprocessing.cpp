@@ -7,9 +7,13 @@
 namespace multicpg::neural {
 namespace {
 
-double clip(double v) { return std::clamp(v, -1.0, 1.0); }
+double clip(double v) {
+  return std::clamp(v, -1.0, 1.0);
+}
 
-double slope_up(int period) { return 2.0 / window_length(period); }
+double slope_up(int period) {
+  return 2.0 / window_length(period);
+}
 
 // Reference §2.3: 2/((1-p)N). At p = 1 it is 2/0 = +inf, so the ramp clips to a constant +1:
 // the paper's "stop" (reference §1.4). We name that case instead of dividing by zero.
@@ -20,7 +24,9 @@ double slope_down(int period) {
 
 }  // namespace
 
-int window_length(int period) { return 2 * period + 1; }
+int window_length(int period) {
+  return 2 * period + 1;
+}
 
 bool advance_window(PostProcessingState& state, int period) {
   ++state.window_counter;  // pre-incremented (reference §2.1)

@@ -9,13 +9,13 @@ namespace multicpg::neural {
 
 // Weights of reference §3.1.
 struct PsnParams {
-  double selector_weight = 1.0;   // o0 = tanh(-w input2 + bias), o1 = tanh(w input2)
+  double selector_weight = 1.0;  // o0 = tanh(-w input2 + bias), o1 = tanh(w input2)
   double selector_bias = 1.0;
-  double input_weight = 0.5;      // o2..o5 from the ramps
-  double inhibition = 5.0;        // o0/o1 -> o2..o5
-  double hidden_weight = 0.5;     // o6..o9 = tanh(0.5 o + 0.5)
+  double input_weight = 0.5;   // o2..o5 from the ramps
+  double inhibition = 5.0;     // o0/o1 -> o2..o5
+  double hidden_weight = 0.5;  // o6..o9 = tanh(0.5 o + 0.5)
   double hidden_bias = 0.5;
-  double output_weight = 3.0;     // o10, o11 = tanh(3 o + 3 o - 1.35)
+  double output_weight = 3.0;  // o10, o11 = tanh(3 o + 3 o - 1.35)
   double output_bias = -1.35;
 };
 

@@ -88,6 +88,8 @@ experiments::StepHook film_learning(Film& film) {
   };
 }
 
-int Film::frames() const { return video_ ? video_->frames() : 1; }
+int Film::frames() const {
+  return video_ ? video_->frames() : 1;
+}
 
 }  // namespace multicpg::report

@@ -58,11 +58,20 @@ std::string html_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -100,9 +109,8 @@ std::string to_html(const Table& t) {
 nlohmann::json to_json(const Section& s) {
   nlohmann::json tables = nlohmann::json::array();
   for (const Table& t : s.tables) tables.push_back({{"header", t.header}, {"rows", t.rows}});
-  return {{"id", s.id},         {"title", s.title},   {"paper", s.paper},
-          {"measured", s.measured}, {"images", s.images}, {"videos", s.videos},
-          {"files", s.files},   {"tables", tables}};
+  return {{"id", s.id},         {"title", s.title},   {"paper", s.paper}, {"measured", s.measured},
+          {"images", s.images}, {"videos", s.videos}, {"files", s.files}, {"tables", tables}};
 }
 
 Section section_from_json(const nlohmann::json& j) {
@@ -138,10 +146,9 @@ std::string index_html(const std::string& title, const std::string& intro,
         << "</p>\n<p class=\"ours\"><b>We measured:</b> " << html_escape(s.measured) << "</p>\n";
     for (const Table& t : s.tables) out << to_html(t);
     for (const std::string& png : s.images) {
-      out << "<figure><img src=\"" << html_escape(png) << "\" alt=\""
-          << html_escape(s.title) << "\"><figcaption>" << link(png) << " · "
-          << link(sibling(png, ".svg")) << " · data: " << link(sibling(png, ".csv"))
-          << "</figcaption></figure>\n";
+      out << "<figure><img src=\"" << html_escape(png) << "\" alt=\"" << html_escape(s.title)
+          << "\"><figcaption>" << link(png) << " · " << link(sibling(png, ".svg"))
+          << " · data: " << link(sibling(png, ".csv")) << "</figcaption></figure>\n";
     }
     for (const std::string& mp4 : s.videos) {
       out << "<figure><video src=\"" << html_escape(mp4)

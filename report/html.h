@@ -21,8 +21,8 @@ std::string to_html(const Table& table);
 struct Section {
   std::string id;
   std::string title;
-  std::string paper;     // what the paper reports
-  std::string measured;  // what we measured
+  std::string paper;                // what the paper reports
+  std::string measured;             // what we measured
   std::vector<std::string> images;  // PNG, each shown with its SVG and CSV beside it
   std::vector<std::string> videos;  // MP4
   std::vector<std::string> files;   // further data (CSV, JSON, Markdown)

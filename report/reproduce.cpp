@@ -33,8 +33,8 @@ using robot::RobotKind;
 // Runs per experiment: the paper's (SPEC §8) or, with --quick, a few.
 struct Sizes {
   int hexapod_runs, quadruped_runs, beta_runs;
-  int film_speed;           // controller steps per video frame of long runs
-  long walk_film_steps;     // steps of the walking videos
+  int film_speed;        // controller steps per video frame of long runs
+  long walk_film_steps;  // steps of the walking videos
 };
 constexpr Sizes kFull{experiments::kScenarioRuns, experiments::kScenarioRuns,
                       experiments::kBetaRuns, 4, 400};
@@ -55,13 +55,12 @@ constexpr long kFig6Shown = 60;  // the last steps, once both orbits have locked
 // Tunnel scenarios and the combinations the paper learned for them (paper §5, reference §5.4).
 struct TunnelScenario {
   std::string name;
-  std::string paper_periods;  // "R2=4 L1=6 ..."
+  std::string paper_periods;                 // "R2=4 L1=6 ..."
   double paper_before_deg, paper_after_deg;  // Table 1
 };
-const std::vector<TunnelScenario> kTunnelScenarios{
-    {"R1", "R2=5 R3=4 L1=5 L2=6 L3=5", 42.0, 7.97},
-    {"R1+R3", "R2=4 L1=6 L2=4 L3=9", 21.0, 0.95},
-    {"R1+R3+L2", "R2=4 L1=4 L3=9", 23.0, 2.67}};
+const std::vector<TunnelScenario> kTunnelScenarios{{"R1", "R2=5 R3=4 L1=5 L2=6 L3=5", 42.0, 7.97},
+                                                   {"R1+R3", "R2=4 L1=6 L2=4 L3=9", 21.0, 0.95},
+                                                   {"R1+R3+L2", "R2=4 L1=4 L3=9", 23.0, 2.67}};
 
 std::string num(double v, int decimals) {
   char buf[64];
@@ -142,16 +141,16 @@ class Reproduction {
     }
     write_results_page();
     write_file_atomic(o_.out / "index.html",
-                      index_html("multicpg: the paper reproduced",
-                                 intro(), sections));
+                      index_html("multicpg: the paper reproduced", intro(), sections));
     progress("wrote " + (o_.out / "index.html").string());
   }
 
  private:
   std::string intro() const {
-    return std::string("Ren et al., \"Multiple chaotic central pattern generators with learning "
-                       "for legged locomotion and malfunction compensation\", Information "
-                       "Sciences 2015, reproduced with multicpg in MuJoCo") +
+    return std::string(
+               "Ren et al., \"Multiple chaotic central pattern generators with learning "
+               "for legged locomotion and malfunction compensation\", Information "
+               "Sciences 2015, reproduced with multicpg in MuJoCo") +
            (o_.quick ? " (quick run: few learning runs per experiment, faster videos)" : "") +
            ". Each section says what the paper reports and what we measured; every figure has "
            "its SVG and the CSV behind it. Tables of the experiments: results.md.";
@@ -222,13 +221,17 @@ class Reproduction {
     }
     const FigureFiles f = plot_gait_diagrams(panels, leg_names(controller.morphology),
                                              sim::kDefaultControlDt, dir("figures"), "fig02-gaits");
-    return {"gaits", "Gaits for each period (Fig. 2)",
+    return {"gaits",
+            "Gaits for each period (Fig. 2)",
             "Periods 9, 8, 6, 5, 4 give the slow wave, fast wave, transition, tetrapod and tripod "
             "gaits; p = 1 stops with all legs on the ground. One step ≈ 0.037 s.",
             "Swing fraction of every leg = 1/p (" + fractions +
                 "); p = 4 is an exact tripod (R1, R3, L2 against R2, L1, L3); p = 1 holds every "
                 "joint constant (τ = 18, τ_L = 90, the authors' code).",
-            {image(f)}, {}, {}, {}};
+            {image(f)},
+            {},
+            {},
+            {}};
   }
 
   Section cpg_sync() {
@@ -253,7 +256,8 @@ class Reproduction {
     for (const auto& p : synced) identical = identical && p.client_x1 == p.master_x1;
     const FigureFiles f =
         plot_cpg_sync(synced, free, kFig6Master, kFig6Client, dir("figures"), "fig06-cpg-sync");
-    return {"cpg-sync", "Master and client CPG in and out of synchrony (Fig. 6)",
+    return {"cpg-sync",
+            "Master and client CPG in and out of synchrony (Fig. 6)",
             "Master period 5, client period 6: synchronised, the client's output is the "
             "master's; desynchronised, each oscillates with its own period.",
             std::string("Synchronised (α = 1): client x1 ") +
@@ -261,17 +265,20 @@ class Reproduction {
                 ". Desynchronised: the client settles to a period-" +
                 std::to_string(experiments::orbit_period(client, neural::kMaxPeriod, 30)) +
                 " orbit, the master to period 5.",
-            {image(f)}, {}, {}, {}};
+            {image(f)},
+            {},
+            {},
+            {}};
   }
 
   Section walking() {
     const sim::SimModel& hexapod = model(RobotKind::hexapod);
-    Table speeds{{"period", "gait", "distance (m)", "speed (cm/s)", "largest |deviation| per 400 "
-                                                                    "steps (deg)"},
+    Table speeds{{"period", "gait", "distance (m)", "speed (cm/s)",
+                  "largest |deviation| per 400 "
+                  "steps (deg)"},
                  {}};
-    const std::map<int, std::string> names{{1, "stop"},       {4, "tripod"},
-                                           {5, "tetrapod"},   {6, "transition"},
-                                           {8, "fast wave"},  {9, "slow wave"}};
+    const std::map<int, std::string> names{{1, "stop"},       {4, "tripod"},    {5, "tetrapod"},
+                                           {6, "transition"}, {8, "fast wave"}, {9, "slow wave"}};
     for (int p : kGaitFigurePeriods) {
       sim::WalkSpec spec;
       spec.periods.assign(hexapod.legs.size(), p);
@@ -299,7 +306,8 @@ class Reproduction {
       film.finish();
       films.push_back(rel(out, o_.out));
     }
-    return {"walking", "Walking with all legs, and with R1 disabled",
+    return {"walking",
+            "Walking with all legs, and with R1 disabled",
             "With all legs working the robot walks straight; with p = 4, 5, 6, 8, 9 it walks "
             "with the tripod ... slow wave gait, slower as p grows. With R1 disabled and all "
             "periods 4 it turns right (≈38° per 400 steps in the paper's simulator, 42° on the "
@@ -308,7 +316,10 @@ class Reproduction {
                 " steps, the controller warmed up for " + std::to_string(sim::kControllerWarmup) +
                 " steps first so the robot starts in its gait (table). Videos: the tripod, and "
                 "R1 disabled from the start (R1 drawn red), real time.",
-            {}, films, {}, {speeds}};
+            {},
+            films,
+            {},
+            {speeds}};
   }
 
   Section learning_r1() {
@@ -351,9 +362,8 @@ class Reproduction {
       trace_row(t.trial, t.periods, t.deviation_deg, t.accepted ? "kept" : "rejected");
     }
     const fs::path figures = dir("figures");
-    const FigureFiles fig8 = plot_learning_trace(points, leg_names(morph),
-                                                 options.annealing.threshold_deg, figures,
-                                                 "fig08-learning-trace");
+    const FigureFiles fig8 = plot_learning_trace(
+        points, leg_names(morph), options.annealing.threshold_deg, figures, "fig08-learning-trace");
 
     // Figs. 9 and 10: the last steps, walking with the learned periods.
     const sim::WalkRecord& rec = run.record;
@@ -378,8 +388,8 @@ class Reproduction {
       notes.push_back(leg == 0 ? "disabled" : "p" + std::to_string(r.periods[leg]));
     }
     for (const auto& c : contact) r1_touches += c[0] ? 1 : 0;
-    const FigureFiles fig9 = plot_motor_outputs(motor, leg_names(morph), notes,
-                                                hexapod.control_dt, figures, "fig09-motor");
+    const FigureFiles fig9 = plot_motor_outputs(motor, leg_names(morph), notes, hexapod.control_dt,
+                                                figures, "fig09-motor");
     const FigureFiles fig10 = plot_foot_contacts(contact, leg_names(morph), hexapod.control_dt,
                                                  figures, "fig10-contacts");
 
@@ -394,7 +404,8 @@ class Reproduction {
       spec.record = false;
       const sim::WalkResult w = sim::walk(hexapod, spec);
       auto& path = learned ? paths.after : paths.before;
-      for (std::size_t i = 0; i < w.record.rows(); ++i) path.push_back({w.record.x[i], w.record.y[i]});
+      for (std::size_t i = 0; i < w.record.rows(); ++i)
+        path.push_back({w.record.x[i], w.record.y[i]});
     }
     paths.before_label = "all periods 4";
     paths.after_label = "learned: " + periods_text(morph, r.periods, options.disabled);
@@ -412,10 +423,13 @@ class Reproduction {
             "Seed " + std::to_string(o_.seed) + ": " + num(r.initial_deviation_deg, 2) +
                 "° detected, then " + r.status + " after " + std::to_string(r.trials) +
                 " trials at " + num(r.final_deviation_deg, 2) + "° with " +
-                periods_text(morph, r.periods, options.disabled) + ". R1's foot touched the "
-                "ground in " + std::to_string(r1_touches) + " of the " +
-                std::to_string(kMotorFigureSteps) + " steps of Fig. 10. The video shows the "
-                "whole run at " + std::to_string(sizes_.film_speed) + "× speed.",
+                periods_text(morph, r.periods, options.disabled) +
+                ". R1's foot touched the "
+                "ground in " +
+                std::to_string(r1_touches) + " of the " + std::to_string(kMotorFigureSteps) +
+                " steps of Fig. 10. The video shows the "
+                "whole run at " +
+                std::to_string(sizes_.film_speed) + "× speed.",
             {image(fig8), image(fig9), image(fig10), image(path_fig)},
             {rel(video, o_.out)},
             {rel(figures / "learning-r1.json", o_.out)},
@@ -454,11 +468,11 @@ class Reproduction {
                  "most frequent combination"},
                 {}};
     for (const experiments::GroupSummary& g : t.rows) {
-      table.rows.push_back({g.group, std::to_string(g.runs), std::to_string(g.converged),
-                            num(g.final_deviation_deg.mean, 2) + " ± " +
-                                num(g.final_deviation_deg.sd, 2),
-                            num(g.trials.mean, 1) + " ± " + num(g.trials.sd, 1),
-                            g.best_periods.empty() ? "-" : g.best_periods});
+      table.rows.push_back(
+          {g.group, std::to_string(g.runs), std::to_string(g.converged),
+           num(g.final_deviation_deg.mean, 2) + " ± " + num(g.final_deviation_deg.sd, 2),
+           num(g.trials.mean, 1) + " ± " + num(g.trials.sd, 1),
+           g.best_periods.empty() ? "-" : g.best_periods});
     }
     const std::string base = "experiments/" + name + "/";
     return {name + "-table",
@@ -469,8 +483,8 @@ class Reproduction {
                       "20 trials, below 8°."
                     : "R1, R2, L1, L2 disabled, 10 runs each: the controller finds feasible "
                       "combinations (no numbers in the text).",
-            std::to_string(runs) + " runs: " + std::to_string(converged) +
-                " converged below 8°, " + std::to_string(within) +
+            std::to_string(runs) + " runs: " + std::to_string(converged) + " converged below 8°, " +
+                std::to_string(within) +
                 " of them within 20 trials (mean ± SD over runs in the table).",
             {image(f)},
             {},
@@ -479,9 +493,9 @@ class Reproduction {
   }
 
   Section beta() {
-    const experiments::ExperimentTable t = experiments::run_beta_study(
-        experiment_spec(RobotKind::hexapod, "beta", sizes_.beta_runs),
-        experiments::kBetaStudyValues);
+    const experiments::ExperimentTable t =
+        experiments::run_beta_study(experiment_spec(RobotKind::hexapod, "beta", sizes_.beta_runs),
+                                    experiments::kBetaStudyValues);
     beta_ = t;
     std::vector<BetaSummary> bars;
     Table table{{"β", "runs", "converged", "trials", "final deviation (deg)"}, {}};
@@ -489,17 +503,18 @@ class Reproduction {
     double most_trials = -1.0;
     for (const experiments::GroupSummary& g : t.rows) {
       bars.push_back({std::stod(g.group), g.trials.mean, g.trials.sd, g.share_converged()});
-      table.rows.push_back({g.group, std::to_string(g.runs), std::to_string(g.converged),
-                            num(g.trials.mean, 1) + " ± " + num(g.trials.sd, 1),
-                            num(g.final_deviation_deg.mean, 2) + " ± " +
-                                num(g.final_deviation_deg.sd, 2)});
+      table.rows.push_back(
+          {g.group, std::to_string(g.runs), std::to_string(g.converged),
+           num(g.trials.mean, 1) + " ± " + num(g.trials.sd, 1),
+           num(g.final_deviation_deg.mean, 2) + " ± " + num(g.final_deviation_deg.sd, 2)});
       if (g.trials.mean > most_trials) {
         most_trials = g.trials.mean;
         most = g.group;
       }
     }
     const FigureFiles f = plot_beta_study(bars, "R1+R2", dir("figures"), "fig14-beta");
-    return {"beta", "Influence of β (Fig. 14)",
+    return {"beta",
+            "Influence of β (Fig. 14)",
             "R1 and R2 disabled, 50 runs per β: β = 0 (random search) needs the most trials; "
             "the search shortens as β grows; a large β (greedy) can get stuck above 8°.",
             std::to_string(t.rows.empty() ? 0 : t.rows.front().runs) +
@@ -517,8 +532,8 @@ class Reproduction {
     const robot::Morphology& morph = open.controller.morphology;
     const fs::path videos = dir("videos");
     const fs::path figures = dir("figures");
-    Table table{{"disabled", "periods", "source", "deviation (deg)", "forward (m)",
-                 "lateral (m)", "result", "paper (deg)"},
+    Table table{{"disabled", "periods", "source", "deviation (deg)", "forward (m)", "lateral (m)",
+                 "result", "paper (deg)"},
                 {}};
     std::vector<std::string> films;
     std::vector<std::string> images;
@@ -540,7 +555,8 @@ class Reproduction {
       const std::vector<Variant> variants{
           {"all 4", std::vector<int>(morph.size(), 4), sc.paper_before_deg},
           {"our learning", learned.result.periods, sc.paper_after_deg},
-          {"the paper's learning", parse_periods_text(morph, sc.paper_periods), sc.paper_after_deg}};
+          {"the paper's learning", parse_periods_text(morph, sc.paper_periods),
+           sc.paper_after_deg}};
       TrunkPaths paths;
       for (const Variant& v : variants) {
         const bool filmed = v.source != "the paper's learning";
@@ -548,22 +564,22 @@ class Reproduction {
         std::replace(stem.begin(), stem.end(), '+', '-');
         std::optional<Film> film;
         if (filmed) {
-          film.emplace(corridor, FilmSpec{videos / (stem + ".mp4"), kDefaultFrameWidth,
-                                          kDefaultFrameHeight, sizes_.film_speed / 2,
-                                          CameraSpec{"trunk", 2.5, 0.0, -45.0, {}}});
+          film.emplace(corridor,
+                       FilmSpec{videos / (stem + ".mp4"), kDefaultFrameWidth, kDefaultFrameHeight,
+                                sizes_.film_speed / 2, CameraSpec{"trunk", 2.5, 0.0, -45.0, {}}});
         }
-        const experiments::TunnelRun t = experiments::run_tunnel(
-            corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
-            [&](const sim::SimState& s) {
-              if (film) film->capture(s, sc.name + " disabled, " + v.source);
-            });
+        const experiments::TunnelRun t =
+            experiments::run_tunnel(corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
+                                    [&](const sim::SimState& s) {
+                                      if (film)
+                                        film->capture(s, sc.name + " disabled, " + v.source);
+                                    });
         if (film) {
           film->finish();
           films.push_back(rel(videos / (stem + ".mp4"), o_.out));
         }
         table.rows.push_back({sc.name, periods_text(morph, v.periods, disabled), v.source,
-                              num(t.deviation_deg, 2), num(t.forward_m, 2),
-                              num(t.lateral_m, 2),
+                              num(t.deviation_deg, 2), num(t.forward_m, 2), num(t.lateral_m, 2),
                               t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
                               "≈" + num(v.paper_deg, 2)});
         if (v.source == "the paper's learning") continue;
@@ -581,7 +597,8 @@ class Reproduction {
       std::replace(stem.begin(), stem.end(), '+', '-');
       images.push_back(image(plot_trunk_paths(paths, figures, stem)));
     }
-    return {"tunnel", "The tunnel (Table 1)",
+    return {"tunnel",
+            "The tunnel (Table 1)",
             "Tunnel 3.0 m × 1.2 m. Disabled R1, R1+R3, R1+R3+L2 with all periods 4: the robot "
             "deviated right and hit the wall (≈42°, 21°, 23°); with the learned periods it "
             "passed (≈7.97°, 0.95°, 2.67°).",
@@ -590,7 +607,10 @@ class Reproduction {
                 std::to_string(o_.seed) +
                 ") on open ground; rows \"the paper's learning\" replay the paper's combinations "
                 "on our robot.",
-            images, films, {}, {table}};
+            images,
+            films,
+            {},
+            {table}};
   }
 
   void write_results_page() {
@@ -619,9 +639,9 @@ class Reproduction {
 }  // namespace
 
 const std::vector<std::string>& reproduce_stages() {
-  static const std::vector<std::string> stages{"gaits",         "cpg-sync",        "walking",
-                                               "learning-r1",   "hexapod-table",   "quadruped-table",
-                                               "beta",          "tunnel"};
+  static const std::vector<std::string> stages{"gaits",       "cpg-sync",      "walking",
+                                               "learning-r1", "hexapod-table", "quadruped-table",
+                                               "beta",        "tunnel"};
   return stages;
 }
 

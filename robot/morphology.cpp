@@ -36,7 +36,9 @@ const Morphology& morphology(RobotKind kind) {
   return all[robot_index(kind)];
 }
 
-std::string_view to_string(RobotKind kind) { return morphology(kind).name; }
+std::string_view to_string(RobotKind kind) {
+  return morphology(kind).name;
+}
 
 std::string_view to_string(Joint joint) {
   switch (joint) {

@@ -11,9 +11,11 @@ namespace multicpg::robot {
 
 enum class RobotKind { hexapod, quadruped, octopod };
 inline constexpr std::array<RobotKind, 3> kRobotKinds{RobotKind::hexapod, RobotKind::quadruped,
-                                                    RobotKind::octopod};
+                                                      RobotKind::octopod};
 // Position of `kind` in kRobotKinds, for tables of per-robot values.
-constexpr std::size_t robot_index(RobotKind kind) { return static_cast<std::size_t>(kind); }
+constexpr std::size_t robot_index(RobotKind kind) {
+  return static_cast<std::size_t>(kind);
+}
 enum class Side { right, left };
 // Which AMOSII leg design a leg uses; decides its TC window and limit (reference §4.4, §6).
 enum class LegType { front, middle, hind };

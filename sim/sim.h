@@ -128,5 +128,4 @@ double joint_angle(const SimModel& model, const SimState& state, std::size_t leg
 double foot_force(const SimModel& model, const SimState& state, std::size_t leg);  // N
 bool foot_contact(const SimModel& model, const SimState& state, std::size_t leg);
 
-
 }  // namespace multicpg::sim

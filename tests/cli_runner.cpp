@@ -1,7 +1,6 @@
 #include "tests/cli_runner.h"
 
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <array>
@@ -58,7 +57,9 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+std::string first_line(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
 
 void expect_bad_input(const std::string& args, const std::string& must_mention) {
   const CliResult r = run_cli(args);

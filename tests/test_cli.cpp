@@ -10,9 +10,9 @@
 namespace {
 
 using multicpg::testing::count_lines;
-using multicpg::testing::make_temp_dir;
 using multicpg::testing::expect_bad_input;
 using multicpg::testing::first_line;
+using multicpg::testing::make_temp_dir;
 using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
 
@@ -30,11 +30,11 @@ TEST(CliGait, PrintsDiagramAndWritesCsv) {
 
 TEST(CliGait, QuadrupedAndOctopodColumns) {
   const std::string dir = make_temp_dir("gait-");
-  ASSERT_EQ(run_cli("gait --robot quadruped --period 4 --steps 10 --csv " + dir + "/q.csv")
-                .exit_code, 0);
+  ASSERT_EQ(
+      run_cli("gait --robot quadruped --period 4 --steps 10 --csv " + dir + "/q.csv").exit_code, 0);
   EXPECT_EQ(first_line(read_file(dir + "/q.csv")), "step,R1,R2,L1,L2");
-  ASSERT_EQ(run_cli("gait --robot octopod --period 5 --steps 10 --csv " + dir + "/o.csv")
-                .exit_code, 0);
+  ASSERT_EQ(run_cli("gait --robot octopod --period 5 --steps 10 --csv " + dir + "/o.csv").exit_code,
+            0);
   EXPECT_EQ(first_line(read_file(dir + "/o.csv")), "step,R1,R2,R3,R4,L1,L2,L3,L4");
   std::filesystem::remove_all(dir);
 }

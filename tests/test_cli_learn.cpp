@@ -15,9 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using multicpg::testing::count_lines;
-using multicpg::testing::make_temp_dir;
 using multicpg::testing::expect_bad_input;
 using multicpg::testing::first_line;
+using multicpg::testing::make_temp_dir;
 using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
 using multicpg::testing::run_shell;
@@ -131,8 +131,8 @@ TEST(CliExperiment, JobsDoNotChangeTheTableAndAKilledRunResumes) {
   for (const auto& [name, text] : before) EXPECT_EQ(after.at(name), text) << name;
 
   // Resuming with other arguments is refused.
-  const auto other = run_cli("experiment table --robot quadruped --runs 1 --seed 8 --out " +
-                             killed.string());
+  const auto other =
+      run_cli("experiment table --robot quadruped --runs 1 --seed 8 --out " + killed.string());
   EXPECT_EQ(other.exit_code, 2);
   fs::remove_all(dir);
 }

@@ -12,17 +12,19 @@ namespace {
 
 namespace fs = std::filesystem;
 using multicpg::testing::count_lines;
-using multicpg::testing::make_temp_dir;
 using multicpg::testing::expect_bad_input;
 using multicpg::testing::first_line;
+using multicpg::testing::make_temp_dir;
 using multicpg::testing::read_file;
 using multicpg::testing::run_cli;
 using multicpg::testing::run_shell;
 
 // Frames of a video, counted by decoding it (ffprobe).
 int video_frames(const fs::path& mp4) {
-  const auto r = run_shell("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                           "stream=nb_read_frames -of csv=p=0 " + mp4.string());
+  const auto r = run_shell(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=nb_read_frames -of csv=p=0 " +
+      mp4.string());
   return r.exit_code == 0 ? std::stoi(r.out) : -1;
 }
 
@@ -46,8 +48,7 @@ TEST(CliRender, PictureOfTheLastStepAndOfALearningRun) {
   const std::string dir = make_temp_dir("render-");
   ASSERT_EQ(run_cli("render --robot quadruped --steps 30 --out " + dir + "/q.png").exit_code, 0);
   EXPECT_TRUE(is_png(fs::path(dir) / "q.png"));
-  const auto learn =
-      run_cli("render --learn --disable R1 --speed 50 --out " + dir + "/learn.mp4");
+  const auto learn = run_cli("render --learn --disable R1 --speed 50 --out " + dir + "/learn.mp4");
   ASSERT_EQ(learn.exit_code, 0) << learn.err;
   EXPECT_NE(learn.out.find("converged"), std::string::npos) << learn.out;
   EXPECT_GT(video_frames(fs::path(dir) / "learn.mp4"), 10);
@@ -95,8 +96,11 @@ std::string open_in_chromium(const fs::path& page, std::string& log) {
   const auto r = run_shell(
       "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
       "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" + profile + " --enable-logging=stderr --v=0 "
-      "--virtual-time-budget=20000 --dump-dom file://" + fs::absolute(page).string());
+      "--user-data-dir=" +
+      profile +
+      " --enable-logging=stderr --v=0 "
+      "--virtual-time-budget=20000 --dump-dom file://" +
+      fs::absolute(page).string());
   log = r.err;
   fs::remove_all(profile);
   return r.out;
@@ -110,9 +114,9 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
   ASSERT_TRUE(fs::exists(root / "index.html"));
 
   // Every figure of the paper, as PNG and SVG with its CSV; not blank (gnuplot draws > 5 kB).
-  for (const char* stem : {"fig02-gaits", "fig06-cpg-sync", "fig08-learning-trace", "fig09-motor",
-                           "fig10-contacts", "fig11-hexapod", "fig13-quadruped", "fig14-beta",
-                           "trunk-path-r1", "tunnel-path-R1"}) {
+  for (const char* stem :
+       {"fig02-gaits", "fig06-cpg-sync", "fig08-learning-trace", "fig09-motor", "fig10-contacts",
+        "fig11-hexapod", "fig13-quadruped", "fig14-beta", "trunk-path-r1", "tunnel-path-R1"}) {
     const fs::path png = root / "figures" / (std::string(stem) + ".png");
     EXPECT_TRUE(is_png(png)) << png;
     EXPECT_GT(fs::file_size(png), 5000u) << png;
@@ -128,7 +132,8 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
   std::string log;
   const std::string dom = open_in_chromium(root / "index.html", log);
   EXPECT_NE(dom.find("data-media=\"ok\""), std::string::npos)
-      << dom.substr(0, dom.find("<h1>")) << "\n" << log;
+      << dom.substr(0, dom.find("<h1>")) << "\n"
+      << log;
   std::istringstream lines(log);
   for (std::string line; std::getline(lines, line);) {
     if (line.find(":CONSOLE") != std::string::npos) ADD_FAILURE() << "console: " << line;

@@ -2,10 +2,9 @@
 // of the periods of its working legs, plus the settle-time claim behind the default.
 #include <gtest/gtest.h>
 
-#include "common/angles.h"
-
 #include <cmath>
 
+#include "common/angles.h"
 #include "common/errors.h"
 #include "learning/compensation.h"
 #include "tests/fake_walker.h"

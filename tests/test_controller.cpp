@@ -1,4 +1,5 @@
-// The multi-CPG controller: gaits from the delay lines, synchronisation, disabled legs (SPEC §3-§5).
+// The multi-CPG controller: gaits from the delay lines, synchronisation, disabled legs (SPEC
+// §3-§5).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +15,9 @@ namespace {
 using namespace multicpg;
 using robot::RobotKind;
 
-long cycle_length(int p) { return static_cast<long>(p) * (2 * p + 1); }
+long cycle_length(int p) {
+  return static_cast<long>(p) * (2 * p + 1);
+}
 
 experiments::GaitRecord gait(RobotKind kind, int p, long cycles = 3) {
   const auto model = neural::make_controller_model(kind);
@@ -65,9 +68,10 @@ TEST(Gait, QuadrupedPeriodFourIsATrot) {
 
 TEST(Gait, SwingOnsetsMatchReferenceTable) {
   // Reference §4.3: swing onsets as fractions of the cycle after R3 (tau = 18, tau_L = 90).
-  const std::map<int, std::vector<double>> onsets{
-      {5, {0.655, 0.327, 0.0, 0.291, 0.964, 0.636}}, {6, {0.462, 0.231, 0.0, 0.615, 0.385, 0.154}},
-      {8, {0.265, 0.132, 0.0, 0.926, 0.794, 0.662}}, {9, {0.211, 0.105, 0.0, 0.737, 0.632, 0.526}}};
+  const std::map<int, std::vector<double>> onsets{{5, {0.655, 0.327, 0.0, 0.291, 0.964, 0.636}},
+                                                  {6, {0.462, 0.231, 0.0, 0.615, 0.385, 0.154}},
+                                                  {8, {0.265, 0.132, 0.0, 0.926, 0.794, 0.662}},
+                                                  {9, {0.211, 0.105, 0.0, 0.737, 0.632, 0.526}}};
   for (const auto& [p, expected] : onsets) {
     const auto r = gait(RobotKind::hexapod, p);
     const long T = cycle_length(p);

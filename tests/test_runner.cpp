@@ -36,10 +36,13 @@ nlohmann::json fake_result(const Task& task) {
   for (const robot::Leg& leg : hexapod().legs) {
     periods[leg.name] = 4 + static_cast<int>(learning::draw_below(rng, 2));
   }
-  return {{"converged", converged}, {"status", converged ? "converged" : "not converged"},
-          {"trials", trials},       {"final_deviation_deg", 20.0 * learning::draw_unit(rng)},
+  return {{"converged", converged},
+          {"status", converged ? "converged" : "not converged"},
+          {"trials", trials},
+          {"final_deviation_deg", 20.0 * learning::draw_unit(rng)},
           {"initial_deviation_deg", 40.0},
-          {"periods", periods},     {"disabled", task.params.at("disabled")}};
+          {"periods", periods},
+          {"disabled", task.params.at("disabled")}};
 }
 
 // A fresh directory under the system temp dir, removed at the end of the test.
