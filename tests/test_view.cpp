@@ -76,14 +76,14 @@ TEST(View, BadFlagsAreReportedBeforeTheDisplay) {
 }
 
 TEST(View, OpensARealWindowUnderXvfb) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/debian-packages.txt)";
+  ASSERT_TRUE(have_xvfb()) << "xvfb-run is missing: scripts/setup.sh installs it (xvfb, xauth)";
   const CliResult r = run_on_xvfb("view --steps 30");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("viewed 30 steps"), std::string::npos) << r.out;
 }
 
 TEST(View, OtherRobotsFaultsAndFreeClientsUnderXvfb) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/debian-packages.txt)";
+  ASSERT_TRUE(have_xvfb()) << "xvfb-run is missing: scripts/setup.sh installs it (xvfb, xauth)";
   const CliResult r = run_on_xvfb(
       "view --robot octopod --periods R1=5,L4=6 --disable L2 --disable-at 5 --steps 10");
   ASSERT_EQ(r.exit_code, 0) << r.err;
