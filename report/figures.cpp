@@ -386,12 +386,15 @@ FigureFiles plot_learning_summary(const std::vector<ScenarioSummary>& scenarios,
   require(threshold_deg > 0.0, info.name, "threshold must be positive");
   ensure_writable_dir(out_dir);
   Csv csv({"scenario", "mean_trials", "sd_trials", "mean_deviation_deg", "sd_deviation_deg",
-           "share_converged"});
+           "share_converged", "label"});
   for (const ScenarioSummary& s : scenarios) {
     require(s.share_converged >= 0.0 && s.share_converged <= 1.0, info.name,
             "share converged of " + s.scenario + " is outside 0..1");
+    const std::string label = s.no_deviation
+                                  ? "n/d"
+                                  : std::to_string(std::lround(100.0 * s.share_converged)) + "%";
     csv.row({s.scenario, number(s.mean_trials), number(s.sd_trials), number(s.mean_deviation_deg),
-             number(s.sd_deviation_deg), number(s.share_converged)});
+             number(s.sd_deviation_deg), number(s.share_converged), label});
   }
   Params params;
   params.text("robot", robot).num("threshold", threshold_deg);

@@ -97,6 +97,9 @@ struct ScenarioSummary {
   double mean_deviation_deg;
   double sd_deviation_deg;
   double share_converged;
+  // Every run stayed under the threshold (e.g. a symmetric loss such as R1+L1): nothing was
+  // learned, and the bar is labelled so instead of 0 % converged.
+  bool no_deviation = false;
 };
 // robot: "hexapod" (Fig. 11) or "quadruped" (Fig. 13).
 FigureFiles plot_learning_summary(const std::vector<ScenarioSummary>& scenarios,

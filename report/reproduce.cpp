@@ -457,7 +457,7 @@ class Reproduction {
     int converged = 0, runs = 0, within = 0;
     for (const experiments::GroupSummary& g : t.rows) {
       bars.push_back({g.group, g.trials.mean, g.trials.sd, g.final_deviation_deg.mean,
-                      g.final_deviation_deg.sd, g.share_converged()});
+                      g.final_deviation_deg.sd, g.share_converged(), g.no_deviation == g.runs});
       converged += g.converged;
       runs += g.runs;
       within += g.within_paper_trials;

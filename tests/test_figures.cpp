@@ -226,13 +226,17 @@ TEST_F(FiguresTest, LearningSummaryHexapodAndQuadruped) {
   const std::vector<ScenarioSummary> hexapod{
       {"R1", 6.2, 3.1, 5.1, 1.9, 1.0},         {"R2", 4.5, 2.0, 4.0, 2.2, 1.0},
       {"R1+R2", 18.3, 9.9, 6.4, 1.2, 0.9},     {"R1+R3", 12.0, 5.5, 5.9, 1.7, 1.0},
-      {"R1+R2+L3", 44.0, 30.1, 9.5, 4.4, 0.6},
+      {"R1+R2+L3", 44.0, 30.1, 9.5, 4.4, 0.6}, {"R1+L1", 0.0, 0.0, 0.1, 0.0, 0.0, true},
   };
   const auto hex = plot_learning_summary(hexapod, "hexapod", kPaperThresholdDeg, dir_);
   EXPECT_EQ(hex.png.filename(), "fig11_learning_hexapod.png");
   const std::string header =
-      "scenario,mean_trials,sd_trials,mean_deviation_deg,sd_deviation_deg,share_converged";
+      "scenario,mean_trials,sd_trials,mean_deviation_deg,sd_deviation_deg,share_converged,label";
   expect_figure(hex, "learning-hexapod", header, hexapod.size());
+  // A scenario that never deviated says so instead of "0%".
+  const std::string data = read_text(hex.csv);
+  EXPECT_NE(data.find("R1+L1,0,0,0.1,0,0,n/d"), std::string::npos) << data;
+  EXPECT_NE(data.find(",0.6,60%"), std::string::npos) << data;
 
   const std::vector<ScenarioSummary> quadruped{{"R1", 8.0, 4.0, 4.8, 2.0, 1.0},
                                                {"R2", 5.5, 2.5, 3.9, 1.5, 1.0},
