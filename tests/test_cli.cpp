@@ -9,12 +9,7 @@
 
 namespace {
 
-using multicpg::testing::count_lines;
-using multicpg::testing::expect_bad_input;
-using multicpg::testing::first_line;
-using multicpg::testing::make_temp_dir;
-using multicpg::testing::read_file;
-using multicpg::testing::run_cli;
+using namespace multicpg::testing;
 
 TEST(CliGait, PrintsDiagramAndWritesCsv) {
   const std::string dir = make_temp_dir("gait-");

@@ -11,13 +11,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using multicpg::testing::count_lines;
-using multicpg::testing::expect_bad_input;
-using multicpg::testing::first_line;
-using multicpg::testing::make_temp_dir;
-using multicpg::testing::read_file;
-using multicpg::testing::run_cli;
-using multicpg::testing::run_shell;
+using namespace multicpg::testing;
 
 // Frames of a video, counted by decoding it (ffprobe).
 int video_frames(const fs::path& mp4) {

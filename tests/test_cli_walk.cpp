@@ -10,12 +10,7 @@
 
 namespace {
 
-using multicpg::testing::count_lines;
-using multicpg::testing::expect_bad_input;
-using multicpg::testing::first_line;
-using multicpg::testing::make_temp_dir;
-using multicpg::testing::read_file;
-using multicpg::testing::run_cli;
+using namespace multicpg::testing;
 
 TEST(CliWalk, BadInput) {
   expect_bad_input("walk --robot spider", "spider");
