@@ -33,12 +33,15 @@ using robot::RobotKind;
 // Runs per experiment: the paper's (SPEC §8) or, with --quick, a few.
 struct Sizes {
   int hexapod_runs, quadruped_runs, beta_runs;
-  int film_speed;        // controller steps per video frame of long runs
-  long walk_film_steps;  // steps of the walking videos
+  int film_speed;         // controller steps per video frame of the learning film
+  int tunnel_film_speed;  // and of the tunnel films (slower: the walls are the point)
+  long walk_film_steps;   // steps of the walking videos, filmed in real time
 };
-constexpr Sizes kFull{experiments::kScenarioRuns, experiments::kScenarioRuns,
-                      experiments::kBetaRuns, 4, 400};
-constexpr Sizes kQuick{1, 2, 3, 8, 160};
+constexpr Sizes kFull{
+    experiments::kScenarioRuns, experiments::kScenarioRuns, experiments::kBetaRuns, 4, 2, 400};
+constexpr Sizes kQuick{1, 2, 3, 8, 4, 160};
+// The tunnel films look down the corridor from behind the robot, far enough to see both walls.
+const CameraSpec kTunnelCamera{"trunk", 2.5, 0.0, -45.0, {}};
 
 // Steps walked with the learned periods after learning, for Figs. 9 and 10 and the path.
 constexpr long kAfterLearningSteps = 400;
@@ -566,7 +569,7 @@ class Reproduction {
         if (filmed) {
           film.emplace(corridor,
                        FilmSpec{videos / (stem + ".mp4"), kDefaultFrameWidth, kDefaultFrameHeight,
-                                sizes_.film_speed / 2, CameraSpec{"trunk", 2.5, 0.0, -45.0, {}}});
+                                sizes_.tunnel_film_speed, kTunnelCamera});
         }
         const experiments::TunnelRun t =
             experiments::run_tunnel(corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
