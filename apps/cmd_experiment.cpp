@@ -6,6 +6,7 @@
 #include "apps/commands.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/sim_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_experiments.h"

@@ -5,6 +5,8 @@
 #include "apps/commands.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/sim_flags.h"
+#include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
 #include "report/film.h"
@@ -13,10 +15,7 @@ namespace multicpg::apps {
 namespace {
 
 struct RenderOptions {
-  std::string robot = "hexapod";
-  std::string periods = "4";
-  std::string disable;
-  long disable_at = 0;
+  WalkFlags walk;
   long steps = 400;
   long warmup = 0;
   bool learn = false;
@@ -30,15 +29,13 @@ struct RenderOptions {
 };
 
 void run_render(const RenderOptions& o) {
-  const robot::RobotKind kind = robot::parse_robot(o.robot);
-  const robot::Morphology& morph = robot::morphology(kind);
   report::film_format(o.out);  // an unknown file type fails before any work
-  const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, o.disable);
-  const std::vector<int> periods = parse_periods(morph, o.periods);
+  const WalkChoice choice = parse_walk_flags(o.walk);
+  const robot::RobotKind kind = choice.kind;
+  const robot::Morphology& morph = robot::morphology(kind);
   require_positive(o.steps, "--steps");
-  if (o.disable_at < 0) throw BadInput("--disable-at must not be negative");
   std::optional<learning::CompensationOptions> learn;
-  if (o.learn) learn = compensation_options(o.learning, morph, disabled, o.disable_at);
+  if (o.learn) learn = compensation_options(o.learning, morph, choice.disabled, choice.disable_at);
 
   sim::SimOptions sim_opts = sim_options(o.sim);
   sim_opts.scene.tunnel = o.tunnel;
@@ -61,9 +58,9 @@ void run_render(const RenderOptions& o) {
     return;
   }
   sim::WalkSpec walk;
-  walk.periods = periods;
-  walk.disabled = disabled;
-  walk.disable_at = o.disable_at;
+  walk.periods = choice.periods;
+  walk.disabled = choice.disabled;
+  walk.disable_at = choice.disable_at;
   walk.steps = o.steps;
   walk.controller_warmup = o.warmup;
   walk.record = false;
@@ -84,10 +81,7 @@ void register_render(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render", "render a walk or a learning run to a video (.mp4) or picture (.png), headless");
   cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
-  cmd->add_option("--robot", o->robot, "hexapod, quadruped or octopod")->capture_default_str();
-  cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")->capture_default_str();
-  cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1,R3");
-  cmd->add_option("--disable-at", o->disable_at, "step at which they fail")->capture_default_str();
+  add_walk_flags(*cmd, o->walk);
   cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")->capture_default_str();
   cmd->add_option("--warmup", o->warmup, "controller steps run before the robot moves")
       ->capture_default_str();

@@ -7,6 +7,8 @@
 
 #include "apps/commands.h"
 #include "apps/options.h"
+#include "apps/sim_flags.h"
+#include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "experiments/tunnel.h"
 #include "report/film.h"
@@ -27,7 +29,7 @@ void run_tunnel(const TunnelOptions& o) {
   const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
   experiments::TunnelSpec spec;
   spec.disabled = robot::parse_leg_list(morph, o.disable);
-  if (spec.disabled.size() == morph.size()) throw BadInput("--disable: every leg is disabled");
+  require_working_leg(morph, spec.disabled);
   spec.periods = parse_periods(morph, o.periods);
   require_positive(o.max_steps, "--max-steps");
   spec.max_steps = o.max_steps;

@@ -10,6 +10,7 @@
 #include "apps/commands.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
+#include "apps/walk_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "sim/record_csv.h"
@@ -22,10 +23,7 @@ namespace {
 constexpr long kDefaultSteps = 3 * sim::kDefaultWindow;
 
 struct WalkOptions {
-  std::string robot = "hexapod";
-  std::string periods = "4";
-  std::string disable;
-  long disable_at = 0;
+  WalkFlags walk;
   long settle = 0;
   long warmup = 0;
   long steps = kDefaultSteps;
@@ -98,19 +96,17 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
 }
 
 void run_walk(const WalkOptions& o) {
-  const robot::RobotKind kind = robot::parse_robot(o.robot);
+  const WalkChoice choice = parse_walk_flags(o.walk);
+  const robot::RobotKind kind = choice.kind;
   const robot::Morphology& morph = robot::morphology(kind);
   Run run{&morph, {}, 0.0, 0.0};
   sim::WalkSpec& spec = run.spec;
-  spec.periods = parse_periods(morph, o.periods);
-  spec.disabled = robot::parse_leg_list(morph, o.disable);
-  if (spec.disabled.size() == morph.size()) {
-    throw BadInput("--disable: cannot disable every leg of the " + morph.name);
-  }
+  spec.periods = choice.periods;
+  spec.disabled = choice.disabled;
   require_positive(o.steps, "--steps");
   require_positive(o.window, "--window");
   if (o.settle < 0) throw BadInput("--settle must not be negative");
-  spec.disable_at = o.disable_at;
+  spec.disable_at = choice.disable_at;
   spec.settle = o.settle;
   spec.controller_warmup = o.warmup;
   spec.steps = o.steps;
@@ -141,15 +137,7 @@ void register_walk(CLI::App& app) {
   auto opts = std::make_shared<WalkOptions>();
   CLI::App* cmd = app.add_subcommand(
       "walk", "walk a simulated robot; print distance, speed and yaw deviation per window");
-  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
-  cmd->add_option("--periods", opts->periods,
-                  "CPG period of every leg (1, 4, 5, 6, 8, 9), or per leg: R1=5,R2=4,... "
-                  "(unnamed legs 4)")
-      ->capture_default_str();
-  cmd->add_option("--disable", opts->disable, "legs that fail, e.g. R1,R3");
-  cmd->add_option("--disable-at", opts->disable_at,
-                  "controller step (from 0, settling included) at which they fail")
-      ->capture_default_str();
+  add_walk_flags(*cmd, opts->walk);
   cmd->add_option("--warmup", opts->warmup,
                   "controller steps run before the robot moves, so it starts in its gait "
                   "(1000 locks every CPG and fills the delay lines)")

@@ -5,7 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "apps/sim_flags.h"  // SimFlags, add_sim_flags, sim_options
 #include "robot/morphology.h"
 
 namespace multicpg::apps {
