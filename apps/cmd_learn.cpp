@@ -13,6 +13,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
+#include "experiments/scenarios.h"
 #include "sim/record_csv.h"
 
 namespace multicpg::apps {
@@ -118,15 +119,9 @@ void run_learn(const LearnOptions& o) {
   print_trace(std::cout, morph, run, options.disabled);
   std::cout << "\n" << r.status;
   if (r.detection_step) {
-    std::cout << " after " << r.trials << " trials: ";
-    for (std::size_t i = 0; i < r.periods.size(); ++i) {
-      if (std::find(options.disabled.begin(), options.disabled.end(), i) !=
-          options.disabled.end()) {
-        continue;
-      }
-      std::cout << morph.legs[i].name << "=" << r.periods[i] << " ";
-    }
-    std::cout << "(deviation " << std::fixed << std::setprecision(2) << r.initial_deviation_deg
+    std::cout << " after " << r.trials << " trials: "
+              << experiments::working_periods_text(morph, r.periods, options.disabled)
+              << " (deviation " << std::fixed << std::setprecision(2) << r.initial_deviation_deg
               << "° -> " << r.final_deviation_deg << "°)";
   }
   std::cout << "\n";

@@ -151,6 +151,17 @@ std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::ui
   return tasks;
 }
 
+std::string working_periods_text(const Morphology& morph, const std::vector<int>& periods,
+                                 const std::vector<std::size_t>& disabled) {
+  std::string out;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    if (std::find(disabled.begin(), disabled.end(), i) != disabled.end()) continue;
+    if (!out.empty()) out += ' ';
+    out += morph.legs.at(i).name + "=" + std::to_string(periods[i]);
+  }
+  return out;
+}
+
 std::string format_beta(double beta) {
   char buf[32];  // the shortest form of any double needs at most 24
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, beta).ptr);

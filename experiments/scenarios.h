@@ -50,6 +50,11 @@ std::vector<Task> scenario_tasks(const robot::Morphology& morph,
 std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::uint64_t base_seed);
 
 // Shortest text that reads back as the same double: "0.1", "10".
+// "R2=5 R3=4 L1=5 L2=6 L3=5": the periods of the working legs in leg order, as the paper lists
+// a learned combination (Figs. 10, 11).
+std::string working_periods_text(const robot::Morphology& morph, const std::vector<int>& periods,
+                                 const std::vector<std::size_t>& disabled);
+
 std::string format_beta(double beta);
 
 }  // namespace multicpg::experiments

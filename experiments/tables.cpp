@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <set>
 
 #include "common/errors.h"
+#include "experiments/scenarios.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -36,18 +36,14 @@ const nlohmann::json& field(const nlohmann::json& result, const Task& task, cons
 // "R2=5 R3=4 L1=5 L2=6 L3=5": the final periods of the working legs in leg order.
 std::string working_periods(const robot::Morphology& morph, const nlohmann::json& result,
                             const Task& task) {
-  const nlohmann::json& periods = field(result, task, "periods");
-  std::set<std::string> disabled;
+  const nlohmann::json& by_name = field(result, task, "periods");
+  std::vector<int> periods;
+  std::vector<std::size_t> disabled;
+  for (const robot::Leg& leg : morph.legs) periods.push_back(by_name.at(leg.name).get<int>());
   for (const nlohmann::json& name : field(result, task, "disabled")) {
-    disabled.insert(name.get<std::string>());
+    disabled.push_back(robot::leg_index(morph, name.get<std::string>()));
   }
-  std::string out;
-  for (const robot::Leg& leg : morph.legs) {
-    if (disabled.contains(leg.name) || !periods.contains(leg.name)) continue;
-    out +=
-        (out.empty() ? "" : " ") + leg.name + "=" + std::to_string(periods.at(leg.name).get<int>());
-  }
-  return out;
+  return working_periods_text(morph, periods, disabled);
 }
 
 std::string best_cell(const GroupSummary& row) {

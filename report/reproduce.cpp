@@ -77,16 +77,6 @@ std::vector<std::string> leg_names(const robot::Morphology& morph) {
   return out;
 }
 
-std::string periods_text(const robot::Morphology& morph, const std::vector<int>& periods,
-                         const std::vector<std::size_t>& disabled) {
-  std::string out;
-  for (std::size_t i = 0; i < periods.size(); ++i) {
-    if (std::find(disabled.begin(), disabled.end(), i) != disabled.end()) continue;
-    out += (out.empty() ? "" : " ") + morph.legs[i].name + "=" + std::to_string(periods[i]);
-  }
-  return out;
-}
-
 // "R2=4 L1=6" on top of all-4 periods.
 std::vector<int> parse_periods_text(const robot::Morphology& morph, const std::string& text) {
   std::vector<int> periods(morph.size(), learning::kStartPeriod);
@@ -411,7 +401,8 @@ class Reproduction {
         path.push_back({w.record.x[i], w.record.y[i]});
     }
     paths.before_label = "all periods 4";
-    paths.after_label = "learned: " + periods_text(morph, r.periods, options.disabled);
+    paths.after_label =
+        "learned: " + experiments::working_periods_text(morph, r.periods, options.disabled);
     const FigureFiles path_fig = plot_trunk_paths(paths, figures, "trunk-path-r1");
 
     write_file_atomic(figures / "learning-r1.json",
@@ -426,7 +417,7 @@ class Reproduction {
             "Seed " + std::to_string(o_.seed) + ": " + num(r.initial_deviation_deg, 2) +
                 "° detected, then " + r.status + " after " + std::to_string(r.trials) +
                 " trials at " + num(r.final_deviation_deg, 2) + "° with " +
-                periods_text(morph, r.periods, options.disabled) +
+                experiments::working_periods_text(morph, r.periods, options.disabled) +
                 ". R1's foot touched the "
                 "ground in " +
                 std::to_string(r1_touches) + " of the " + std::to_string(kMotorFigureSteps) +
@@ -581,10 +572,11 @@ class Reproduction {
           film->finish();
           films.push_back(rel(videos / (stem + ".mp4"), o_.out));
         }
-        table.rows.push_back({sc.name, periods_text(morph, v.periods, disabled), v.source,
-                              num(t.deviation_deg, 2), num(t.forward_m, 2), num(t.lateral_m, 2),
-                              t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
-                              "≈" + num(v.paper_deg, 2)});
+        table.rows.push_back(
+            {sc.name, experiments::working_periods_text(morph, v.periods, disabled), v.source,
+             num(t.deviation_deg, 2), num(t.forward_m, 2), num(t.lateral_m, 2),
+             t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
+             "≈" + num(v.paper_deg, 2)});
         if (v.source == "the paper's learning") continue;
         auto& path = v.source == "all 4" ? paths.before : paths.after;
         for (std::size_t i = 0; i < t.record.rows(); ++i) {
