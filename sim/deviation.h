@@ -1,0 +1,31 @@
+// What one measuring window says about the robot's course (SPEC §6, issue 8): the yaw change of
+// the paper's criterion, and the path angle of its Table 1 (the trunk's displacement against the
+// heading at the window's start), which sees a sideways crab that the yaw change cannot.
+#pragma once
+
+namespace multicpg::sim {
+
+// Trunk pose at one instant: position in the ground plane (m) and yaw (deg, + = left).
+struct Pose2 {
+  double x = 0.0;
+  double y = 0.0;
+  double yaw_deg = 0.0;
+};
+
+struct WindowMeasure {
+  double yaw_deg = 0.0;      // wrap(yaw(end) - yaw(start)), + = left turn (SPEC §6)
+  double path_deg = 0.0;     // atan2(lateral, forward) of the displacement, + = left (Table 1)
+  double forward_m = 0.0;    // displacement along the heading at the window's start
+  double lateral_m = 0.0;    // and to its left
+  // The larger of |yaw_deg| and |path_deg|: what the robust criterion compares with the
+  // threshold (a window holds when both are under it).
+  double worst_deg() const;
+};
+
+// Below this forward displacement (m) the path angle is not defined (the robot stands or walks
+// backwards): it is reported as +-90 deg, so a robot that does not advance never "holds".
+inline constexpr double kMinForwardForPathM = 1e-3;
+
+WindowMeasure measure_window(const Pose2& start, const Pose2& end);
+
+}  // namespace multicpg::sim
