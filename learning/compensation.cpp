@@ -59,11 +59,22 @@ nlohmann::json periods_json(const robot::Morphology& morph, const Periods& perio
 
 }  // namespace
 
+namespace {
+int longest_delay(const neural::ControllerModel& model) {
+  int longest = 0;
+  for (const neural::LegCircuit& leg : model.legs) longest = std::max(longest, leg.delay);
+  return longest;
+}
+}  // namespace
+
 long default_settle_steps(const neural::ControllerModel& model) {
-  int longest_delay = 0;
-  for (const neural::LegCircuit& leg : model.legs)
-    longest_delay = std::max(longest_delay, leg.delay);
-  return kSlowestLockSteps + longest_delay;
+  return kSlowestLockSteps + longest_delay(model);
+}
+
+long locked_settle_steps(const neural::ControllerModel& model, const Periods& periods) {
+  long slowest = 0;
+  for (int p : periods) slowest = std::max(slowest, neural::lock_steps(p));
+  return slowest + longest_delay(model);
 }
 
 void validate(const CompensationOptions& options, const robot::Morphology& morph) {

@@ -48,6 +48,11 @@ inline constexpr long kSlowestLockSteps = 211;
 // quadruped 211 + 108 = 319, octopod 211 + 144 = 355.
 long default_settle_steps(const neural::ControllerModel& model);
 
+// Steps after a reset of every CPG to `periods` until no window can see a transient: the
+// slowest of these periods to lock exactly (neural::lock_steps; 737 for p = 4) plus the longest
+// delay line, so the joints carry only locked signals. Hexapod with a leg at 4: 737 + 126 = 863.
+long locked_settle_steps(const neural::ControllerModel& model, const Periods& periods);
+
 // How a compensation run is made.
 struct CompensationOptions {
   AnnealingParams annealing;

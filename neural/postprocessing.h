@@ -25,6 +25,12 @@ struct PostProcessingState {
 // Window length N = 2p + 1 steps (reference §2.1).
 int window_length(int period);
 
+// Controller steps after a CPG reset (x = 0, mu = -1) until this period's post-processed output
+// is exactly periodic (reference §1.3, reproduced by tests/test_postprocessing.cpp): 737 for
+// p = 4, 43 / 64 / 84 / 208 for p = 5 / 6 / 8 / 9, 0 for the constant output of p = 1. Periods
+// that never lock (2, 3, 7) throw BadInput.
+long lock_steps(int period);
+
 // Advances this leg's window counter; true when this step is a window step (k mod N == 0).
 bool advance_window(PostProcessingState& state, int period);
 
