@@ -38,7 +38,8 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
   spec.jobs = o.jobs.value_or(0);
   spec.out = o.out;
   // Every leg set is overwritten per task; the validation needs one working leg set.
-  spec.base = compensation_options(o.learning, robot::morphology(kind), {0}, 0);
+  spec.base =
+      compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
   spec.sim = sim_options(o.sim);
   ensure_writable_dir(spec.out);
   return spec;

@@ -10,6 +10,7 @@
 #include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
+#include "apps/walk_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
@@ -21,8 +22,7 @@ namespace {
 
 struct LearnOptions {
   std::string robot = "hexapod";
-  std::string disable;
-  long disable_at = 0;
+  WalkFlags faults;  // only the fault flags are declared
   LearningFlags learning;
   SimFlags sim;
   bool json = false;
@@ -65,6 +65,25 @@ void print_trace(std::ostream& out, const robot::Morphology& morph,
   }
 }
 
+// Robust runs: one line per learning episode, then the windows walked after the last one.
+void print_episodes(std::ostream& out, const robot::Morphology& morph,
+                    const learning::LearningResult& r, const std::vector<std::size_t>& failing) {
+  if (r.mode != learning::Mode::robust) return;
+  out << std::fixed << std::setprecision(2);
+  for (std::size_t i = 0; i < r.episodes.size(); ++i) {
+    const learning::Episode& e = r.episodes[i];
+    out << "episode " << i + 1 << ": detected " << e.detection_deg << "° at step "
+        << e.detection_step << ", " << e.trials << " trials, "
+        << experiments::working_periods_text(morph, e.periods, failing) << ", "
+        << (e.held ? "held" : (e.interrupted ? "interrupted by a fault" : "not held")) << "\n";
+  }
+  out << "windows after the last fault or episode (yaw / path angle, deg):";
+  for (const sim::WindowMeasure& m : r.final_windows) {
+    out << "  " << m.yaw_deg << " / " << m.path_deg;
+  }
+  out << "\n";
+}
+
 std::string trace_csv(const robot::Morphology& morph, const learning::LearningResult& r) {
   std::ostringstream f;
   f << "trial";
@@ -83,22 +102,23 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearningRe
 void run_learn(const LearnOptions& o) {
   const robot::RobotKind kind = robot::parse_robot(o.robot);
   const robot::Morphology& morph = robot::morphology(kind);
-  if (o.disable_at < 0) throw BadInput("--disable-at must not be negative");
-  const learning::CompensationOptions options = compensation_options(
-      o.learning, morph, robot::parse_leg_list(morph, o.disable), o.disable_at);
+  const learning::CompensationOptions options =
+      compensation_options(o.learning, morph, parse_faults(morph, o.faults));
+  const std::vector<std::size_t> failing = learning::failing_legs(options);
   if (!o.out.empty()) ensure_writable_dir(o.out);
   const sim::SimModel model = sim::make_sim_model(kind, sim_options(o.sim));
 
   const experiments::LearningRun run =
       experiments::run_learning(model, options, /*record=*/!o.out.empty());
   const learning::LearningResult& r = run.result;
-  nlohmann::json json = learning::to_json(r, morph, options.disabled);
+  nlohmann::json json = learning::to_json(r, morph, failing);
   json["robot"] = morph.name;
   json["seed"] = o.learning.seed;
   json["beta"] = o.learning.beta;
   json["threshold_deg"] = o.learning.threshold;
   json["window_steps"] = o.learning.window;
-  json["disable_at"] = o.disable_at;
+  json["disable_at"] = o.faults.disable_at;
+  json["options"] = learning::to_json(options, morph);
 
   if (!o.out.empty()) {
     const std::filesystem::path dir(o.out);
@@ -112,15 +132,25 @@ void run_learn(const LearnOptions& o) {
     std::cout << json.dump(2) << "\n";
     return;
   }
-  std::cout << morph.name << ", disabled " << robot::leg_list_name(morph, options.disabled)
-            << " at step " << o.disable_at << ", beta " << o.learning.beta << ", threshold "
-            << o.learning.threshold << "°, window " << options.window_steps << ", settle "
-            << r.settle_steps << ", seed " << o.learning.seed << "\n\n";
-  print_trace(std::cout, morph, run, options.disabled);
+  std::cout << morph.name << ", " << learning::to_string(options.mode) << " mode";
+  if (options.mode == learning::Mode::robust) {
+    std::cout << " (steering " << learning::to_string(options.steering) << ", "
+              << options.hold_windows << " windows to hold)";
+  }
+  std::cout << ", faults";
+  for (const sim::Fault& f : learning::fault_timeline(options)) {
+    std::cout << " " << robot::leg_list_name(morph, f.legs) << (f.recover ? " recover" : " fail")
+              << "@" << f.step;
+  }
+  std::cout << ", beta " << o.learning.beta << ", threshold " << o.learning.threshold
+            << "°, window " << options.window_steps << ", settle " << r.settle_steps << ", seed "
+            << o.learning.seed << "\n\n";
+  print_trace(std::cout, morph, run, failing);
+  print_episodes(std::cout, morph, r, failing);
   std::cout << "\n" << r.status;
   if (r.detection_step) {
-    std::cout << " after " << r.trials << " trials: "
-              << experiments::working_periods_text(morph, r.periods, options.disabled)
+    std::cout << " after " << r.trials
+              << " trials: " << experiments::working_periods_text(morph, r.periods, failing)
               << " (deviation " << std::fixed << std::setprecision(2) << r.initial_deviation_deg
               << "° -> " << r.final_deviation_deg << "°)";
   }
@@ -135,9 +165,7 @@ void register_learn(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "learn", "disable legs and learn periods that walk straight again (paper Fig. 8)");
   cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
-  cmd->add_option("--disable", opts->disable, "legs that fail, e.g. R1 or R1,R3")->required();
-  cmd->add_option("--disable-at", opts->disable_at, "step at which they fail")
-      ->capture_default_str();
+  add_fault_flags(*cmd, opts->faults);
   add_learning_flags(*cmd, opts->learning);
   add_sim_flags(*cmd, opts->sim);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");

@@ -17,7 +17,6 @@ namespace {
 struct RenderOptions {
   WalkFlags walk;
   long steps = 400;
-  long warmup = 0;
   bool learn = false;
   bool tunnel = false;
   LearningFlags learning;
@@ -35,7 +34,7 @@ void run_render(const RenderOptions& o) {
   const robot::Morphology& morph = robot::morphology(kind);
   require_positive(o.steps, "--steps");
   std::optional<learning::CompensationOptions> learn;
-  if (o.learn) learn = compensation_options(o.learning, morph, choice.disabled, choice.disable_at);
+  if (o.learn) learn = compensation_options(o.learning, morph, choice.faults);
 
   sim::SimOptions sim_opts = sim_options(o.sim);
   sim_opts.scene.tunnel = o.tunnel;
@@ -48,8 +47,9 @@ void run_render(const RenderOptions& o) {
   report::Film film(model, spec);
 
   if (learn) {
+    report::FilmObserver observer(film);
     const experiments::LearningRun run =
-        experiments::run_learning(model, *learn, false, 0, report::film_learning(film));
+        experiments::run_learning(model, *learn, false, 0, &observer);
     const std::string summary =
         run.result.status + " after " + std::to_string(run.result.trials) + " trials";
     if (film.format() == report::FilmFormat::picture) film.picture(run.final_state, summary);
@@ -58,17 +58,16 @@ void run_render(const RenderOptions& o) {
     return;
   }
   sim::WalkSpec walk;
-  walk.periods = choice.periods;
-  walk.disabled = choice.disabled;
-  walk.disable_at = choice.disable_at;
+  walk.start = {choice.periods, choice.warmup};
+  walk.faults = choice.faults;
   walk.steps = o.steps;
-  walk.controller_warmup = o.warmup;
   walk.record = false;
-  walk.on_step = [&](const sim::SimState& s) {
-    film.capture(s);
-    if (film.format() == report::FilmFormat::picture && s.step == o.steps) film.picture(s);
-  };
+  report::FilmObserver observer(film, "walking");
+  walk.observer = &observer;
   const sim::WalkResult r = sim::walk(model, walk);
+  if (film.format() == report::FilmFormat::picture) {
+    film.picture(r.final_state, observer.caption());
+  }
   film.finish();
   std::cout << "walked " << r.distance_m << " m; wrote " << o.out << " (" << film.frames()
             << " frames)\n";
@@ -83,8 +82,6 @@ void register_render(CLI::App& app) {
   cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
   add_walk_flags(*cmd, o->walk);
   cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")->capture_default_str();
-  cmd->add_option("--warmup", o->warmup, "controller steps run before the robot moves")
-      ->capture_default_str();
   cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
   add_learning_flags(*cmd, o->learning);

@@ -21,14 +21,15 @@ struct ViewOptions {
 void run_view(const ViewOptions& o, bool steps_given) {
   const WalkChoice choice = parse_walk_flags(o.walk);
   report::ViewerSpec spec;
-  spec.periods = choice.periods;
-  spec.disabled = choice.disabled;
-  spec.disable_at = choice.disable_at;
+  spec.start = {choice.periods, choice.warmup};
+  spec.faults = choice.faults;
   if (steps_given) {
     require_positive(o.steps, "--steps");
-    if (!spec.disabled.empty() && spec.disable_at >= o.steps) {
-      throw BadInput("--disable-at must be in 0.." + std::to_string(o.steps - 1) + ", got " +
-                     std::to_string(spec.disable_at));
+    for (const sim::Fault& f : spec.faults) {
+      if (f.step >= o.steps) {
+        throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +
+                       std::to_string(o.steps - 1) + ", got " + std::to_string(f.step));
+      }
     }
     spec.steps = o.steps;
   }

@@ -25,7 +25,6 @@ constexpr long kDefaultSteps = 3 * sim::kDefaultWindow;
 struct WalkOptions {
   WalkFlags walk;
   long settle = 0;
-  long warmup = 0;
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
   SimFlags sim;
@@ -43,13 +42,22 @@ struct Run {
 nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
   const robot::Morphology& morph = *run.morph;
   nlohmann::json periods = nlohmann::json::object();
-  for (std::size_t i = 0; i < morph.size(); ++i) periods[morph.legs[i].name] = run.spec.periods[i];
-  nlohmann::json disabled = nlohmann::json::array();
-  for (std::size_t leg : run.spec.disabled) disabled.push_back(morph.legs[leg].name);
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    periods[morph.legs[i].name] = run.spec.start.periods[i];
+  }
+  nlohmann::json faults = nlohmann::json::array();
+  for (const sim::Fault& f : run.spec.faults) {
+    faults.push_back(
+        {{"step", f.step}, {"legs", robot::leg_list_name(morph, f.legs)}, {"recover", f.recover}});
+  }
+  nlohmann::json windows = nlohmann::json::array();
+  for (const sim::WindowMeasure& m : result.windows) {
+    windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
+  }
   return {{"robot", morph.name},
           {"periods", periods},
-          {"disabled", disabled},
-          {"disable_at", run.spec.disable_at},
+          {"faults", faults},
+          {"warmup", run.spec.start.warmup},
           {"settle", run.spec.settle},
           {"steps", run.spec.steps},
           {"window", run.spec.window},
@@ -61,6 +69,7 @@ nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
           {"lateral_m", result.lateral_m},
           {"speed_m_s", result.speed_m_s},
           {"window_deviations_deg", result.window_deviations_deg},
+          {"windows", windows},
           {"final_yaw_deg", result.final_yaw_deg}};
 }
 
@@ -74,23 +83,25 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
       << run.physics_dt << " s\n";
   out << "periods: ";
   for (std::size_t i = 0; i < morph.size(); ++i) {
-    out << (i == 0 ? "" : "  ") << morph.legs[i].name << " " << s.periods[i];
+    out << (i == 0 ? "" : "  ") << morph.legs[i].name << " " << s.start.periods[i];
   }
-  out << "\ndisabled: ";
-  if (s.disabled.empty()) {
-    out << "none\n";
-  } else {
-    out << robot::leg_list_name(morph, s.disabled) << " from step " << s.disable_at << "\n";
+  out << (s.start.warmup > 0 ? " (warmed-up controller)" : " (cold controller)") << "\nfaults: ";
+  if (s.faults.empty()) out << "none";
+  for (const sim::Fault& f : s.faults) {
+    out << robot::leg_list_name(morph, f.legs) << (f.recover ? " recover" : " fail") << " at step "
+        << f.step << "  ";
   }
+  out << "\n";
   out << std::setprecision(3) << "distance " << r.distance_m << " m (forward " << r.forward_m
       << " m, lateral " << r.lateral_m << " m), speed " << std::setprecision(2)
       << 100.0 * r.speed_m_s << " cm/s\n";
-  out << "yaw deviation per " << s.window << "-step window (deg, + = left turn):\n";
-  if (r.window_deviations_deg.empty()) out << "  (no complete window)\n";
-  for (std::size_t w = 0; w < r.window_deviations_deg.size(); ++w) {
+  out << "per " << s.window << "-step window: yaw change and path angle (deg, + = left):\n";
+  if (r.windows.empty()) out << "  (no complete window)\n";
+  for (std::size_t w = 0; w < r.windows.size(); ++w) {
     const long first = s.settle + static_cast<long>(w) * s.window;
     out << "  steps " << std::setw(6) << first << "-" << std::left << std::setw(6)
-        << first + s.window << std::right << std::setw(9) << r.window_deviations_deg[w] << "\n";
+        << first + s.window << std::right << std::setw(9) << r.windows[w].yaw_deg << std::setw(9)
+        << r.windows[w].path_deg << "\n";
   }
   out << "final yaw " << r.final_yaw_deg << " deg\n";
 }
@@ -101,14 +112,12 @@ void run_walk(const WalkOptions& o) {
   const robot::Morphology& morph = robot::morphology(kind);
   Run run{&morph, {}, 0.0, 0.0};
   sim::WalkSpec& spec = run.spec;
-  spec.periods = choice.periods;
-  spec.disabled = choice.disabled;
+  spec.start = {choice.periods, choice.warmup};
+  spec.faults = choice.faults;
   require_positive(o.steps, "--steps");
   require_positive(o.window, "--window");
   if (o.settle < 0) throw BadInput("--settle must not be negative");
-  spec.disable_at = choice.disable_at;
   spec.settle = o.settle;
-  spec.controller_warmup = o.warmup;
   spec.steps = o.steps;
   spec.window = o.window;
   spec.record = !o.csv.empty();
@@ -138,10 +147,6 @@ void register_walk(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "walk", "walk a simulated robot; print distance, speed and yaw deviation per window");
   add_walk_flags(*cmd, opts->walk);
-  cmd->add_option("--warmup", opts->warmup,
-                  "controller steps run before the robot moves, so it starts in its gait "
-                  "(1000 locks every CPG and fills the delay lines)")
-      ->capture_default_str();
   cmd->add_option("--settle", opts->settle,
                   "steps walked before measuring (delay lines fill after 126 steps for the "
                   "hexapod; p = 4 CPGs lock after about 740)")

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "common/errors.h"
+#include "sim/walk.h"
 
 namespace multicpg::apps {
 namespace {
@@ -71,6 +72,16 @@ std::vector<int> parse_periods(const robot::Morphology& morph, const std::string
     start = comma + 1;
   }
   return periods;
+}
+
+long parse_step(const std::string& text, const std::string& flag) {
+  long value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || value < 0 || value > sim::kMaxSteps) {
+    throw BadInput(flag + ": '" + text + "' is not a step in 0.." + std::to_string(sim::kMaxSteps));
+  }
+  return value;
 }
 
 }  // namespace multicpg::apps

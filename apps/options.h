@@ -21,6 +21,9 @@ void require_cpg_period(int period, const std::string& flag);
 // Throws unless `period` is a gait period, naming the allowed ones.
 void require_gait_period(int period, const std::string& flag);
 
+// A step number: a whole number in 0..sim::kMaxSteps, nothing else (no sign, no junk).
+long parse_step(const std::string& text, const std::string& flag);
+
 // "--periods 4" (every leg) or "--periods R1=5,R2=4" (unnamed legs keep `fallback`).
 std::vector<int> parse_periods(const robot::Morphology& morph, const std::string& spec,
                                int fallback = 4);

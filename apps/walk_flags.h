@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "robot/morphology.h"
+#include "sim/stepper.h"
 
 namespace multicpg::apps {
 
@@ -15,19 +16,32 @@ struct WalkFlags {
   std::string periods = "4";
   std::string disable;
   long disable_at = 0;
+  std::vector<std::string> faults;      // --fault LEGS@STEP, repeatable
+  std::vector<std::string> recoveries;  // --recover LEGS@STEP, repeatable
+  long warmup = sim::kControllerWarmup;
+  bool cold = false;
 };
 
-// Adds --robot, --periods, --disable and --disable-at.
+// Adds --robot, --periods, --disable, --disable-at, --fault, --recover, --warmup and --cold.
 void add_walk_flags(CLI::App& cmd, WalkFlags& flags);
+// Adds only the fault flags (--disable, --disable-at, --fault, --recover).
+void add_fault_flags(CLI::App& cmd, WalkFlags& flags);
 
 struct WalkChoice {
   robot::RobotKind kind;
   std::vector<int> periods;           // one per leg, gait periods only
-  std::vector<std::size_t> disabled;  // never every leg
+  std::vector<std::size_t> disabled;  // legs of --disable (never every leg)
   long disable_at;                    // >= 0
+  sim::FaultTimeline faults;          // --disable/--disable-at and every --fault/--recover
+  long warmup;                        // 0 with --cold
 };
 
 WalkChoice parse_walk_flags(const WalkFlags& flags);
+
+// The fault timeline of --disable/--disable-at, --fault and --recover, in step order (a
+// recovery before a failure at the same step); throws BadInput (sim::validate) when it cannot
+// happen.
+sim::FaultTimeline parse_faults(const robot::Morphology& morph, const WalkFlags& flags);
 
 // Throws unless some leg of `morph` stays working.
 void require_working_leg(const robot::Morphology& morph, const std::vector<std::size_t>& disabled);

@@ -12,19 +12,16 @@ namespace multicpg::experiments {
 namespace {
 
 nlohmann::json arguments(const ExperimentSpec& spec, const std::string& experiment) {
-  const learning::CompensationOptions& b = spec.base;
+  // Every learning option (learning::to_json, the same record a learn run keeps); each task
+  // sets its own legs, seed and (beta study) beta.
   return {{"experiment", experiment},
           {"robot", robot::to_string(spec.kind)},
           {"runs", spec.runs},
           {"seed", spec.seed},
-          {"beta", b.annealing.beta},
-          {"threshold_deg", b.annealing.threshold_deg},
-          {"max_trials", b.annealing.max_trials},
-          {"window_steps", b.window_steps},
-          {"settle_steps", b.settle_steps ? nlohmann::json(*b.settle_steps) : nlohmann::json()},
-          {"fail_step", b.fail_step},
+          {"learning", learning::to_json(spec.base, robot::morphology(spec.kind))},
           {"control_dt", spec.sim.control_dt},
-          {"physics_dt", spec.sim.physics_dt}};
+          {"physics_dt", spec.sim.physics_dt},
+          {"servo_gain", spec.sim.servo_gain}};
 }
 
 // One learning run of a task: its disabled legs, seed and (beta study) beta.
@@ -33,6 +30,7 @@ nlohmann::json run_task(const sim::SimModel& model, const learning::Compensation
   const robot::Morphology& morph = model.controller.morphology;
   learning::CompensationOptions options = base;
   options.disabled.clear();
+  options.faults.clear();
   for (const nlohmann::json& name : task.params.at("disabled")) {
     options.disabled.push_back(robot::leg_index(morph, name.get<std::string>()));
   }

@@ -1,46 +1,56 @@
 #include "experiments/learning_run.h"
 
 namespace multicpg::experiments {
+namespace {
 
-SimWalker::SimWalker(const sim::SimModel& model, sim::WalkRecord* record, StepHook on_step)
-    : model_(model),
-      state_(sim::make_sim_state(model)),
-      record_(record),
-      on_step_(std::move(on_step)) {
-  if (record_ != nullptr) {
-    record_->legs = model.legs.size();
-    sim::append_record(model_, state_, true, *record_);
+// Where each trial's last window ended, from the learner's own trial_end events.
+class TrialEnds final : public sim::Observer {
+ public:
+  explicit TrialEnds(sim::Observer* next) : next_(next) {}
+  void on_step(const sim::SimModel& model, const sim::SimState& state) override {
+    if (next_ != nullptr) next_->on_step(model, state);
   }
+  void on_event(const sim::SimModel& model, const sim::SimState& state,
+                const sim::Event& event) override {
+    if (event.kind == sim::EventKind::trial_end) ends.push_back(event.step);
+    if (next_ != nullptr) next_->on_event(model, state, event);
+  }
+  std::vector<long> ends;
+
+ private:
+  sim::Observer* next_;
+};
+
+}  // namespace
+
+void SimWalker::set_disabled(const std::vector<std::size_t>& legs, bool disabled) {
+  for (std::size_t leg : legs) neural::set_disabled(stepper_.state().controller, leg, disabled);
 }
 
-void SimWalker::step() {
-  sim::sim_step(model_, state_);
-  if (record_ != nullptr) sim::append_record(model_, state_, true, *record_);
-  if (on_step_) on_step_(state_);
-}
-
-double SimWalker::yaw_deg() const {
-  return sim::trunk_yaw_deg(model_, state_);
-}
-
-void SimWalker::disable(const std::vector<std::size_t>& legs) {
-  for (std::size_t leg : legs) neural::set_disabled(state_.controller, leg, true);
+sim::StartSpec learning_start(const learning::CompensationOptions& options) {
+  sim::StartSpec start;
+  if (options.mode == learning::Mode::paper) start.warmup = 0;
+  return start;
 }
 
 LearningRun run_learning(const sim::SimModel& model, const learning::CompensationOptions& options,
-                         bool record, long after_steps, const StepHook& on_step) {
+                         bool record, long after_steps, sim::Observer* observer) {
   LearningRun run;
-  SimWalker walker(model, record ? &run.record : nullptr, on_step);
+  TrialEnds ends(observer);
+  sim::Stepper stepper(model, learning_start(options), {}, &ends, record ? &run.record : nullptr);
+  SimWalker walker(stepper);
   run.result = learning::compensate(walker, options);
-  run.learning_end_step = walker.step_count();
-  for (long t = 0; t < after_steps; ++t) walker.step();
-  // Each trial is settle + one window long and the last one ends where learning stopped.
-  const long trial_steps = run.result.settle_steps + options.window_steps;
-  for (std::size_t i = 0; i < run.result.trace.size(); ++i) {
-    const auto from_end = static_cast<long>(run.result.trace.size() - 1 - i);
-    run.trial_end_steps.push_back(run.learning_end_step - from_end * trial_steps);
+  run.learning_end_step = stepper.step_count();
+  if (run.result.steering) {
+    // Walk on as the learner left the robot: its periods and its steering reflex.
+    stepper.set_before_step([&run, &options](sim::Stepper& s) {
+      neural::ControllerState& c = s.state().controller;
+      c.drive = learning::steer(options.steering_params, *run.result.steering, s.pose(), c.drive);
+    });
   }
-  run.final_state = walker.release();
+  stepper.steps(after_steps);
+  run.trial_end_steps = std::move(ends.ends);
+  run.final_state = std::move(stepper.state());
   return run;
 }
 

@@ -1,40 +1,38 @@
-// Online learning on the simulated robot (issue 4): learning::compensate driving a MuJoCo walk.
+// Online learning on the simulated robot (issue 4, issue 8): learning::compensate driving a
+// MuJoCo robot through the one stepping loop (sim::Stepper).
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "learning/compensation.h"
 #include "sim/sim.h"
+#include "sim/stepper.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
 
-// Called after every controller step with the robot's state (e.g. to film it).
-using StepHook = std::function<void(const sim::SimState&)>;
-
-// learning::Walker over one simulated robot, recording every step when asked.
+// learning::Walker over a sim::Stepper: the learner's events go to the stepper's observer.
 class SimWalker final : public learning::Walker {
  public:
-  // `record` may be null: no per-step record (the experiments' hot path).
-  SimWalker(const sim::SimModel& model, sim::WalkRecord* record, StepHook on_step = {});
+  explicit SimWalker(sim::Stepper& stepper) : stepper_(stepper) {}
 
-  void step() override;
-  double yaw_deg() const override;
-  long step_count() const override { return state_.step; }
-  neural::ControllerState& controller() override { return state_.controller; }
-  const neural::ControllerModel& controller_model() const override { return model_.controller; }
-  void disable(const std::vector<std::size_t>& legs) override;
-
-  const sim::SimState& state() const { return state_; }
-  sim::SimState release() { return std::move(state_); }
+  void step() override { stepper_.step(); }
+  sim::Pose2 pose() const override { return stepper_.pose(); }
+  long step_count() const override { return stepper_.step_count(); }
+  neural::ControllerState& controller() override { return stepper_.state().controller; }
+  const neural::ControllerModel& controller_model() const override {
+    return stepper_.model().controller;
+  }
+  void set_disabled(const std::vector<std::size_t>& legs, bool disabled) override;
+  void emit(const sim::Event& event) override { stepper_.emit(event); }
 
  private:
-  const sim::SimModel& model_;
-  sim::SimState state_;
-  sim::WalkRecord* record_;
-  StepHook on_step_;
+  sim::Stepper& stepper_;
 };
+
+// How a learning run starts: paper mode as the reference did (every CPG reset at the start,
+// a cold controller, SPEC §6), robust mode from a running, locked controller (issue 8).
+sim::StartSpec learning_start(const learning::CompensationOptions& options);
 
 struct LearningRun {
   learning::LearningResult result;
@@ -45,8 +43,9 @@ struct LearningRun {
 };
 
 // Runs compensation from a healthy, synchronised robot; afterwards walks `after_steps` more
-// with the final periods (for "after learning" figures and the tunnel).
+// with the final periods (for "after learning" figures and the tunnel). `observer` (may be null)
+// sees every step, fault, detection, trial and episode.
 LearningRun run_learning(const sim::SimModel& model, const learning::CompensationOptions& options,
-                         bool record, long after_steps = 0, const StepHook& on_step = {});
+                         bool record, long after_steps = 0, sim::Observer* observer = nullptr);
 
 }  // namespace multicpg::experiments

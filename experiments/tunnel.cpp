@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "common/errors.h"
+#include "experiments/learning_run.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -36,37 +37,52 @@ bool touches_wall(const mjModel* m, const mjData* d, const Walls& walls) {
 
 }  // namespace
 
-TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
-                     const std::function<void(const sim::SimState&)>& on_step) {
+TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Observer* observer) {
   const Walls walls = find_walls(model.mj.get());
   const double length = model.scene.tunnel_length;
-  sim::SimState state = sim::start_walk_state(model, spec.periods);
-  for (std::size_t leg : spec.disabled) neural::set_disabled(state.controller, leg, true);
-  sim::warm_up_controller(model, state, spec.controller_warmup);
-
   TunnelRun run;
-  run.record.legs = model.legs.size();
-  sim::append_record(model, state, /*joints=*/false, run.record);
-  const sim::Position start = sim::trunk_position(model, state);
+  sim::Stepper stepper(model, {spec.periods, spec.controller_warmup},
+                       sim::fail_at(spec.disabled, 0), observer, &run.record,
+                       /*record_joints=*/false);
+  const sim::Pose2 start = stepper.pose();
+  if (spec.steering) {
+    stepper.set_before_step([params = *spec.steering,
+                             reflex = learning::start_steering(start)](sim::Stepper& s) mutable {
+      neural::ControllerState& c = s.state().controller;
+      c.drive = learning::steer(params, reflex, s.pose(), c.drive);
+    });
+  }
   while (run.steps < spec.max_steps) {
-    sim::sim_step(model, state);
+    stepper.step();
     ++run.steps;
-    sim::append_record(model, state, false, run.record);
-    if (on_step) on_step(state);
-    if (touches_wall(model.mj.get(), state.data.get(), walls)) {
+    if (touches_wall(model.mj.get(), stepper.state().data.get(), walls)) {
       run.touched_wall = true;
       break;
     }
-    if (sim::trunk_position(model, state).x >= length) {
+    if (stepper.pose().x >= length) {
       run.passed = true;
       break;
     }
   }
-  const sim::Position end = sim::trunk_position(model, state);
+  const sim::Pose2 end = stepper.pose();
   run.forward_m = end.x - start.x;
   run.lateral_m = end.y - start.y;
   run.deviation_deg = std::atan2(run.lateral_m, run.forward_m) * 180.0 / std::numbers::pi;
   return run;
+}
+
+LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim::SimModel& corridor,
+                                           const learning::CompensationOptions& options,
+                                           long max_steps, sim::Observer* observer) {
+  LearnedTunnelRun out;
+  out.learning = run_learning(open, options, /*record=*/false).result;
+  TunnelSpec spec;
+  spec.disabled = learning::failing_legs(options);
+  spec.periods = out.learning.periods;
+  spec.max_steps = max_steps;
+  if (out.learning.steering) spec.steering = options.steering_params;
+  out.tunnel = run_tunnel(corridor, spec, observer);
+  return out;
 }
 
 }  // namespace multicpg::experiments

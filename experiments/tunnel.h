@@ -3,16 +3,21 @@
 // a wall, or runs out of steps.
 #pragma once
 
-#include <functional>
+#include <optional>
 #include <vector>
 
+#include "learning/compensation.h"
+#include "learning/steering.h"
 #include "sim/sim.h"
+#include "sim/stepper.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
 
-// Steps allowed to cross the tunnel: 3 m at 1.25 cm/s, the slow wave gait's speed (222 s).
-inline constexpr long kTunnelMaxSteps = 6000;
+// Steps allowed to cross the tunnel: 3 m at 0.7 cm/s (444 s). The slow wave gait walks 1.25
+// cm/s; a steering reflex that cuts one side's swing slows a learned gait further (measured
+// down to about 0.8 cm/s for R1+R3+L2 with slow periods, docs/learning.md).
+inline constexpr long kTunnelMaxSteps = 12000;
 
 struct TunnelSpec {
   std::vector<std::size_t> disabled;
@@ -20,6 +25,8 @@ struct TunnelSpec {
   long max_steps = kTunnelMaxSteps;
   // The robot is placed at the entrance with its controller running, as the paper's robot was.
   long controller_warmup = sim::kControllerWarmup;
+  // The orientation reflex (learning/steering.h) holding the tunnel's axis; none = periods only.
+  std::optional<learning::SteeringParams> steering;
 };
 
 struct TunnelRun {
@@ -34,9 +41,21 @@ struct TunnelRun {
   sim::WalkRecord record;  // trunk path, every step
 };
 
-// `model` must have the tunnel in its scene (SimOptions::scene.tunnel). `on_step` is called
-// after every controller step (e.g. to film it).
+// `model` must have the tunnel in its scene (SimOptions::scene.tunnel). `observer` (may be null)
+// sees every controller step (e.g. to film it).
 TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
-                     const std::function<void(const sim::SimState&)>& on_step = {});
+                     sim::Observer* observer = nullptr);
+
+// Paper §5 after learning (issue 8): learns in the open field (`open`, no tunnel) from the
+// options' start, then walks the learned controller (its periods and, if the learner used it,
+// its steering reflex) through the tunnel of `corridor` from a warmed start.
+struct LearnedTunnelRun {
+  learning::LearningResult learning;
+  TunnelRun tunnel;
+};
+LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim::SimModel& corridor,
+                                           const learning::CompensationOptions& options,
+                                           long max_steps = kTunnelMaxSteps,
+                                           sim::Observer* observer = nullptr);
 
 }  // namespace multicpg::experiments

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "common/angles.h"
 #include "common/errors.h"
@@ -10,39 +11,99 @@
 namespace multicpg::learning {
 namespace {
 
-// Walks the robot on, failing the legs at the configured step (SPEC §4: faults at any step).
+// Walks the robot on, applying the fault timeline before the steps it names (SPEC §4: faults
+// at any step) and, when asked, the steering reflex on every step.
 class Walk {
  public:
   Walk(Walker& walker, const CompensationOptions& options)
-      : walker_(walker), options_(options), start_(walker.step_count()) {}
+      : walker_(walker),
+        options_(options),
+        timeline_(fault_timeline(options)),
+        start_(walker.step_count()),
+        failed_(walker.controller_model().size(), false) {
+    if (options.mode == Mode::robust && options.steering == Steering::reflex) {
+      steering_ = start_steering(walker.pose());
+    }
+  }
 
   void steps(long n) {
     for (long i = 0; i < n; ++i) {
-      if (!failed_ && walked() >= options_.fail_step) {
-        walker_.disable(options_.disabled);
-        failed_ = true;
+      apply_due_faults();
+      if (steering_) {
+        neural::ControllerState& c = walker_.controller();
+        c.drive = steer(options_.steering_params, *steering_, walker_.pose(), c.drive);
+        cut_sum_ += std::abs(steering_->last_cut);
       }
       walker_.step();
     }
   }
 
   // E of one measured window (SPEC §6): |yaw(end) - yaw(start)| wrapped.
-  double window() {
-    const double start_yaw = walker_.yaw_deg();
+  double window() { return std::abs(measured_window().yaw_deg); }
+
+  // Yaw change and path angle of one window (robust mode).
+  sim::WindowMeasure measured_window() {
+    const sim::Pose2 start = walker_.pose();
+    cut_sum_ = 0.0;
     steps(options_.window_steps);
-    const double e = std::abs(wrap_degrees(walker_.yaw_deg() - start_yaw));
-    if (!std::isfinite(e)) throw RuntimeFailure("the walker's yaw is not a finite number");
-    return e;
+    const sim::WindowMeasure m = sim::measure_window(start, walker_.pose());
+    if (!std::isfinite(m.yaw_deg) || !std::isfinite(m.path_deg)) {
+      throw RuntimeFailure("the walker's pose is not a finite number");
+    }
+    effort_ = cut_sum_ / static_cast<double>(options_.window_steps);
+    return m;
   }
 
   long walked() const { return walker_.step_count() - start_; }
-  bool failed() const { return failed_; }
+  // Paper mode's "after the failure": the fault has been applied (with no legs named: the
+  // healthy robot's run, whose fail step still starts the count of windows).
+  bool failed() const {
+    return any_failed_ever_ || (timeline_.empty() && walked() > options_.fail_step);
+  }
+  bool any_failed_now() const {
+    return std::any_of(failed_.begin(), failed_.end(), [](bool b) { return b; });
+  }
+  std::vector<std::size_t> failed_now() const {
+    std::vector<std::size_t> legs;
+    for (std::size_t i = 0; i < failed_.size(); ++i)
+      if (failed_[i]) legs.push_back(i);
+    return legs;
+  }
+  bool faults_pending() const { return next_ < timeline_.size(); }
+  // Faults and recoveries since the last call.
+  int take_fault_count() { return std::exchange(fault_count_, 0); }
+  bool take_full_recovery() { return std::exchange(full_recovery_, false); }
+  double effort() const { return effort_; }
+  const std::optional<SteeringState>& steering() const { return steering_; }
 
  private:
+  void apply_due_faults() {
+    while (next_ < timeline_.size() && timeline_[next_].step <= walked()) {
+      const sim::Fault& f = timeline_[next_++];
+      walker_.set_disabled(f.legs, !f.recover);
+      for (std::size_t leg : f.legs) failed_[leg] = !f.recover;
+      any_failed_ever_ = any_failed_ever_ || !f.recover;
+      ++fault_count_;
+      sim::Event e;
+      e.kind = f.recover ? sim::EventKind::recovery : sim::EventKind::fault;
+      e.legs = f.legs;
+      walker_.emit(e);
+      if (f.recover && !any_failed_now()) full_recovery_ = true;
+    }
+  }
+
   Walker& walker_;
   const CompensationOptions& options_;
+  sim::FaultTimeline timeline_;
+  std::size_t next_ = 0;
   long start_;
-  bool failed_ = false;
+  std::vector<bool> failed_;
+  bool any_failed_ever_ = false;
+  int fault_count_ = 0;
+  bool full_recovery_ = false;
+  std::optional<SteeringState> steering_;
+  double cut_sum_ = 0.0;
+  double effort_ = 0.0;
 };
 
 Periods current_periods(Walker& walker) {
@@ -77,6 +138,42 @@ long locked_settle_steps(const neural::ControllerModel& model, const Periods& pe
   return slowest + longest_delay(model);
 }
 
+std::string_view to_string(Mode mode) {
+  return mode == Mode::paper ? "paper" : "robust";
+}
+
+std::string_view to_string(Steering steering) {
+  return steering == Steering::reflex ? "reflex" : "off";
+}
+
+Mode parse_mode(std::string_view text) {
+  if (text == "paper") return Mode::paper;
+  if (text == "robust") return Mode::robust;
+  throw BadInput("unknown mode '" + std::string(text) + "' (paper or robust)");
+}
+
+Steering parse_steering(std::string_view text) {
+  if (text == "off") return Steering::off;
+  if (text == "reflex") return Steering::reflex;
+  throw BadInput("unknown steering '" + std::string(text) + "' (off or reflex)");
+}
+
+sim::FaultTimeline fault_timeline(const CompensationOptions& options) {
+  if (!options.faults.empty()) return options.faults;
+  if (options.disabled.empty()) return {};
+  return {sim::Fault{options.fail_step, options.disabled, false}};
+}
+
+std::vector<std::size_t> failing_legs(const CompensationOptions& options) {
+  std::vector<std::size_t> legs;
+  for (const sim::Fault& f : fault_timeline(options)) {
+    if (!f.recover) legs.insert(legs.end(), f.legs.begin(), f.legs.end());
+  }
+  std::sort(legs.begin(), legs.end());
+  legs.erase(std::unique(legs.begin(), legs.end()), legs.end());
+  return legs;
+}
+
 void validate(const CompensationOptions& options, const robot::Morphology& morph) {
   validate(options.annealing);
   if (options.window_steps < 1) {
@@ -104,12 +201,35 @@ void validate(const CompensationOptions& options, const robot::Morphology& morph
   if (options.disabled.size() == morph.size()) {
     throw BadInput("every leg of the " + morph.name + " is disabled: there is nothing to learn");
   }
+  if (!options.faults.empty() && !options.disabled.empty()) {
+    throw BadInput("give either a fault timeline or --disable, not both");
+  }
+  sim::validate(morph, options.faults);
+  if (options.mode == Mode::paper && options.faults.size() > 1) {
+    throw BadInput("--mode paper takes one fault (the paper's experiment); use --mode robust");
+  }
+  if (options.mode == Mode::paper && !options.faults.empty() && options.faults.front().recover) {
+    throw BadInput("--mode paper takes no recovery; use --mode robust");
+  }
+  if (options.hold_windows < 1) {
+    throw BadInput("hold windows must be at least 1, got " + std::to_string(options.hold_windows));
+  }
+  if (options.monitor_windows < 1) {
+    throw BadInput("monitor windows must be at least 1, got " +
+                   std::to_string(options.monitor_windows));
+  }
+  if (options.max_episodes < 1) {
+    throw BadInput("max episodes must be at least 1, got " + std::to_string(options.max_episodes));
+  }
+  validate(options.steering_params);
 }
 
-LearningResult compensate(Walker& walker, const CompensationOptions& options) {
+namespace {
+
+LearningResult compensate_paper(Walker& walker, const CompensationOptions& options) {
   const neural::ControllerModel& model = walker.controller_model();
-  validate(options, model.morphology);
   LearningResult result;
+  result.mode = Mode::paper;
   result.settle_steps = options.settle_steps.value_or(default_settle_steps(model));
   const AnnealingParams& params = options.annealing;
   Walk walk(walker, options);
@@ -132,14 +252,33 @@ LearningResult compensate(Walker& walker, const CompensationOptions& options) {
     return result;
   }
   result.detection_step = walk.walked();
+  sim::Event detected;
+  detected.kind = sim::EventKind::detection;
+  detected.episode = 1;
+  detected.deviation_deg = e;
+  detected.periods = result.periods;
+  walker.emit(detected);
 
   // SPEC §5: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
-  AnnealingState state = start_annealing(params, result.periods, options.disabled, e, options.seed);
+  AnnealingState state =
+      start_annealing(params, result.periods, failing_legs(options), e, options.seed);
   while (std::optional<Candidate> candidate = propose(params, state)) {
+    sim::Event start;
+    start.kind = sim::EventKind::trial_start;
+    start.episode = 1;
+    start.trial = state.trials + 1;
+    start.periods = candidate->periods;
+    walker.emit(start);
     neural::set_periods(model, walker.controller(), candidate->periods);
     walk.steps(result.settle_steps);
-    if (decide(params, state, walk.window()).stop != StopReason::running) break;
+    const Decision d = decide(params, state, walk.window());
+    sim::Event end = start;
+    end.kind = sim::EventKind::trial_end;
+    end.deviation_deg = state.trace.back().deviation_deg;
+    end.accepted = d.accepted;
+    walker.emit(end);
+    if (d.stop != StopReason::running) break;
   }
   // A run that did not converge keeps walking with the accepted combination, the one reported.
   if (current_periods(walker) != state.accepted) {
@@ -154,8 +293,245 @@ LearningResult compensate(Walker& walker, const CompensationOptions& options) {
   result.periods = state.accepted;
   result.trace = std::move(state.trace);
   result.steps_walked = walk.walked();
+  Episode episode;
+  episode.detection_step = *result.detection_step;
+  episode.detection_deg = result.initial_deviation_deg;
+  episode.trials = result.trials;
+  episode.held = result.converged;
+  episode.reason = result.reason;
+  episode.periods = result.periods;
+  episode.final_deviation_deg = result.final_deviation_deg;
+  sim::Event done;
+  done.kind = sim::EventKind::episode_end;
+  done.episode = 1;
+  done.trial = episode.trials;
+  done.periods = episode.periods;
+  done.deviation_deg = episode.final_deviation_deg;
+  done.accepted = episode.held;
+  walker.emit(done);
+  result.episodes.push_back(std::move(episode));
   return result;
 }
+
+// Robust mode (issue 8): see compensate() in the header.
+class RobustRun {
+ public:
+  RobustRun(Walker& walker, const CompensationOptions& options)
+      : walker_(walker),
+        options_(options),
+        model_(walker.controller_model()),
+        params_(options.annealing),
+        walk_(walker, options) {}
+
+  LearningResult run() {
+    result_.mode = Mode::robust;
+    result_.settle_steps = settle_for(std::vector<int>(model_.size(), kStartPeriod));
+    long clean = 0;
+    while (clean < options_.monitor_windows || walk_.faults_pending()) {
+      const sim::WindowMeasure m = walk_.measured_window();
+      const int faults = walk_.take_fault_count();
+      if (walk_.take_full_recovery()) {
+        resynchronise();
+        clean = 0;
+        result_.final_windows.clear();
+        continue;
+      }
+      if (faults > 0) {
+        clean = 0;
+        result_.final_windows.clear();
+      }
+      if (m.worst_deg() > params_.threshold_deg && faults == 0 && options_.learn_periods &&
+          static_cast<int>(result_.episodes.size()) < options_.max_episodes) {
+        episode(m.worst_deg());
+        clean = 0;
+        result_.final_windows.clear();
+        continue;
+      }
+      result_.final_windows.push_back(m);
+      if (m.worst_deg() <= params_.threshold_deg) {
+        ++clean;
+      } else if (faults == 0) {
+        // Steering alone, or no episode left: the run ends once the last fault is past and
+        // monitor_windows more windows were walked, held or not.
+        ++clean;
+      } else {
+        clean = 0;
+      }
+    }
+    finish();
+    return std::move(result_);
+  }
+
+ private:
+  long settle_for(const Periods& periods) const {
+    return options_.settle_steps.value_or(locked_settle_steps(model_, periods));
+  }
+
+  Periods periods() {
+    Periods p;
+    for (const neural::LegState& leg : walker_.controller().legs) p.push_back(leg.cpg.period);
+    return p;
+  }
+
+  void set(const Periods& p) {
+    neural::set_periods(model_, walker_.controller(), p);
+    walk_.steps(settle_for(p));
+  }
+
+  // SPEC §5: every leg works again: all legs at the master's period, clients synchronised.
+  void resynchronise() {
+    neural::ControllerState& c = walker_.controller();
+    neural::set_period(model_, c, c.legs.front().cpg.period);
+    neural::set_synchronised(c, true);
+    walk_.steps(settle_for(periods()));
+    walk_.take_fault_count();
+  }
+
+  // Measures up to hold_windows windows; E is the worst, and the trial stops at the first
+  // window over the threshold.
+  double judge() {
+    double e = 0.0;
+    for (int w = 0; w < options_.hold_windows; ++w) {
+      e = std::max(e, walk_.measured_window().worst_deg());
+      if (e > params_.threshold_deg) break;
+    }
+    return e;
+  }
+
+  void episode(double detection_deg) {
+    const int number = static_cast<int>(result_.episodes.size()) + 1;
+    Episode ep;
+    ep.detection_step = walk_.walked();
+    ep.detection_deg = detection_deg;
+    if (!result_.detection_step) {
+      result_.detection_step = ep.detection_step;
+      result_.initial_deviation_deg = detection_deg;
+    }
+    sim::Event detected;
+    detected.kind = sim::EventKind::detection;
+    detected.episode = number;
+    detected.deviation_deg = detection_deg;
+    detected.periods = periods();
+    walker_.emit(detected);
+
+    neural::set_synchronised(walker_.controller(), false);  // SPEC §5
+    // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
+    const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
+    AnnealingState state =
+        start_annealing(params_, periods(), walk_.failed_now(), detection_deg, seed);
+    walk_.take_fault_count();
+    while (std::optional<Candidate> candidate = propose(params_, state)) {
+      sim::Event start;
+      start.kind = sim::EventKind::trial_start;
+      start.episode = number;
+      start.trial = state.trials + 1;
+      start.periods = candidate->periods;
+      walker_.emit(start);
+      set(candidate->periods);
+      const Decision d = decide(params_, state, judge());
+      const TrialRecord& t = state.trace.back();
+      sim::Event end = start;
+      end.kind = sim::EventKind::trial_end;
+      end.deviation_deg = t.deviation_deg;
+      end.accepted = d.accepted;
+      walker_.emit(end);
+      if (walk_.take_fault_count() > 0) {
+        ep.interrupted = true;
+        break;
+      }
+      if (d.stop != StopReason::running) break;
+    }
+    if (periods() != state.accepted) set(state.accepted);
+    ep.trials = state.trials;
+    ep.held = state.stop == StopReason::below_threshold;
+    if (state.stop != StopReason::running) ep.reason = state.stop;
+    ep.periods = state.accepted;
+    ep.final_deviation_deg = state.e_ref;
+    for (TrialRecord& t : state.trace) result_.trace.push_back(std::move(t));
+    result_.trials += state.trials;
+    sim::Event done;
+    done.kind = sim::EventKind::episode_end;
+    done.episode = number;
+    done.trial = ep.trials;
+    done.periods = ep.periods;
+    done.deviation_deg = ep.final_deviation_deg;
+    done.accepted = ep.held;
+    walker_.emit(done);
+    result_.episodes.push_back(std::move(ep));
+  }
+
+  void finish() {
+    result_.periods = periods();
+    result_.steps_walked = walk_.walked();
+    result_.steering_effort = walk_.effort();
+    result_.steering = walk_.steering();
+    const bool held = std::all_of(
+        result_.final_windows.begin(), result_.final_windows.end(),
+        [&](const sim::WindowMeasure& m) { return m.worst_deg() <= params_.threshold_deg; });
+    if (result_.episodes.empty()) {
+      result_.status = held ? "no deviation" : "not converged";
+      result_.converged = false;
+      if (!result_.final_windows.empty()) {
+        result_.initial_deviation_deg = result_.final_windows.front().worst_deg();
+      }
+    } else {
+      const Episode& last = result_.episodes.back();
+      result_.converged = last.held && held;
+      result_.status = result_.converged ? "converged" : "not converged";
+      result_.reason = last.reason;
+    }
+    double worst = 0.0;
+    for (const sim::WindowMeasure& m : result_.final_windows)
+      worst = std::max(worst, m.worst_deg());
+    result_.final_deviation_deg = worst;
+  }
+
+  Walker& walker_;
+  const CompensationOptions& options_;
+  const neural::ControllerModel& model_;
+  const AnnealingParams& params_;
+  Walk walk_;
+  LearningResult result_;
+};
+
+}  // namespace
+
+LearningResult compensate(Walker& walker, const CompensationOptions& options) {
+  validate(options, walker.controller_model().morphology);
+  if (options.mode == Mode::paper) return compensate_paper(walker, options);
+  return RobustRun(walker, options).run();
+}
+
+namespace {
+
+nlohmann::json windows_json(const std::vector<sim::WindowMeasure>& windows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const sim::WindowMeasure& m : windows) {
+    out.push_back({{"yaw_deg", m.yaw_deg},
+                   {"path_deg", m.path_deg},
+                   {"forward_m", m.forward_m},
+                   {"lateral_m", m.lateral_m}});
+  }
+  return out;
+}
+
+nlohmann::json episodes_json(const LearningResult& result, const robot::Morphology& morph) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Episode& e : result.episodes) {
+    out.push_back({{"detection_step", e.detection_step},
+                   {"detection_deg", e.detection_deg},
+                   {"trials", e.trials},
+                   {"held", e.held},
+                   {"interrupted", e.interrupted},
+                   {"reason", e.reason ? nlohmann::json(std::string(to_string(*e.reason)))
+                                       : nlohmann::json(nullptr)},
+                   {"periods", periods_json(morph, e.periods)},
+                   {"final_deviation_deg", e.final_deviation_deg}});
+  }
+  return out;
+}
+
+}  // namespace
 
 nlohmann::json to_json(const LearningResult& result, const robot::Morphology& morph,
                        const std::vector<std::size_t>& disabled) {
@@ -185,7 +561,41 @@ nlohmann::json to_json(const LearningResult& result, const robot::Morphology& mo
           {"detection_step", result.detection_step ? nlohmann::json(*result.detection_step)
                                                    : nlohmann::json(nullptr)},
           {"settle_steps", result.settle_steps},
+          {"mode", to_string(result.mode)},
+          {"episodes", episodes_json(result, morph)},
+          {"final_windows", windows_json(result.final_windows)},
+          {"steering_effort", result.steering_effort},
           {"trace", trace}};
+}
+
+nlohmann::json to_json(const CompensationOptions& o, const robot::Morphology& morph) {
+  nlohmann::json faults = nlohmann::json::array();
+  for (const sim::Fault& f : fault_timeline(o)) {
+    nlohmann::json legs = nlohmann::json::array();
+    for (std::size_t leg : f.legs) legs.push_back(morph.legs.at(leg).name);
+    faults.push_back({{"step", f.step}, {"legs", legs}, {"recover", f.recover}});
+  }
+  const SteeringParams& sp = o.steering_params;
+  return {{"mode", to_string(o.mode)},
+          {"beta", o.annealing.beta},
+          {"threshold_deg", o.annealing.threshold_deg},
+          {"max_trials", o.annealing.max_trials},
+          {"period_set", o.annealing.period_set},
+          {"faults", faults},
+          {"window_steps", o.window_steps},
+          {"settle_steps", o.settle_steps ? nlohmann::json(*o.settle_steps) : nlohmann::json()},
+          {"detection_windows", o.detection_windows},
+          {"hold_windows", o.hold_windows},
+          {"monitor_windows", o.monitor_windows},
+          {"max_episodes", o.max_episodes},
+          {"learn_periods", o.learn_periods},
+          {"steering", to_string(o.steering)},
+          {"steering_params",
+           {{"heading_gain", sp.heading_gain},
+            {"lateral_gain", sp.lateral_gain},
+            {"integral_gain", sp.integral_gain},
+            {"max_heading_offset_deg", sp.max_heading_offset_deg}}},
+          {"seed", o.seed}};
 }
 
 }  // namespace multicpg::learning

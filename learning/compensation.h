@@ -8,11 +8,15 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "learning/annealing.h"
+#include "learning/steering.h"
 #include "neural/controller.h"
 #include "robot/morphology.h"
+#include "sim/deviation.h"
+#include "sim/events.h"
 
 namespace multicpg::learning {
 
@@ -23,15 +27,30 @@ class Walker {
   virtual ~Walker() = default;
   // One controller step and the physics it drives.
   virtual void step() = 0;
-  // Trunk yaw in degrees, (-180, 180] (SPEC §6).
-  virtual double yaw_deg() const = 0;
+  // Trunk position (m) and yaw in degrees, (-180, 180] (SPEC §6): the orientation sensor and
+  // odometry (in simulation, the trunk's position).
+  virtual sim::Pose2 pose() const = 0;
   // Controller steps taken so far.
   virtual long step_count() const = 0;
   virtual neural::ControllerState& controller() = 0;
   virtual const neural::ControllerModel& controller_model() const = 0;
-  // Legs fail from the next step on: they hold the disabled posture (SPEC §4).
-  virtual void disable(const std::vector<std::size_t>& legs) = 0;
+  // Legs fail (or work again) from the next step on: a failed leg holds the disabled posture
+  // (SPEC §4).
+  virtual void set_disabled(const std::vector<std::size_t>& legs, bool disabled) = 0;
+  // Shows what the learner is doing to whoever watches (a film, the viewer, Python).
+  virtual void emit(const sim::Event& /*event*/) {}
 };
+
+// Which algorithm compensates (issue 8).
+enum class Mode {
+  paper,  // paper §3 exactly as SPEC §6: one window judges a trial, yaw only, learning ends there
+  robust,  // yaw and path angle, several windows to accept, monitoring on, optional steering
+};
+enum class Steering { off, reflex };  // learning/steering.h
+std::string_view to_string(Mode mode);
+std::string_view to_string(Steering steering);
+Mode parse_mode(std::string_view text);          // throws BadInput naming the choices
+Steering parse_steering(std::string_view text);  // throws BadInput naming the choices
 
 inline constexpr long kDefaultWindowSteps = 400;  // paper §3 step 2
 // Windows walked after the failure without a deviation above the threshold before the run
@@ -53,23 +72,58 @@ long default_settle_steps(const neural::ControllerModel& model);
 // delay line, so the joints carry only locked signals. Hexapod with a leg at 4: 737 + 126 = 863.
 long locked_settle_steps(const neural::ControllerModel& model, const Periods& periods);
 
+// Robust mode: consecutive windows a combination must hold to be accepted.
+inline constexpr int kDefaultHoldWindows = 3;
+// Robust mode: clean windows after the last fault or learning episode before the run ends.
+inline constexpr long kDefaultMonitorWindows = 6;
+// Robust mode: learning episodes at most in one run (each restarts learning after a deviation).
+inline constexpr int kDefaultMaxEpisodes = 10;
+
 // How a compensation run is made.
 struct CompensationOptions {
+  Mode mode = Mode::robust;
   AnnealingParams annealing;
-  std::vector<std::size_t> disabled;  // legs that fail
-  long fail_step = 0;                 // steps after the run starts at which they fail
+  // The shorthand fault: these legs fail `fail_step` steps after the run starts. `faults`, when
+  // not empty, is the whole timeline instead (robust mode: any legs fail or recover at any
+  // step, several times).
+  std::vector<std::size_t> disabled;
+  long fail_step = 0;
+  sim::FaultTimeline faults;
   long window_steps = kDefaultWindowSteps;
-  // Unmeasured steps after every period change, and before the first detection window (the
-  // run starts from a CPG reset too). Empty = default_settle_steps(model).
+  // Unmeasured steps after every period change (paper: and before the first detection window).
+  // Empty = paper: default_settle_steps(model); robust: locked_settle_steps(model, periods).
   std::optional<long> settle_steps;
-  long detection_windows = kDefaultDetectionWindows;
+  long detection_windows = kDefaultDetectionWindows;  // paper mode (see above)
+  int hold_windows = kDefaultHoldWindows;             // robust mode
+  long monitor_windows = kDefaultMonitorWindows;      // robust mode
+  int max_episodes = kDefaultMaxEpisodes;             // robust mode
+  bool learn_periods = true;                          // robust mode; false = steering alone
+  Steering steering = Steering::reflex;               // robust mode
+  SteeringParams steering_params;
   std::uint64_t seed = 0;
 };
 
+// The timeline the options describe: `faults`, or the shorthand fault.
+sim::FaultTimeline fault_timeline(const CompensationOptions& options);
+// Every leg that fails at some point, in leg order (for labels).
+std::vector<std::size_t> failing_legs(const CompensationOptions& options);
+
 // Throws BadInput (one line, naming legs) for invalid annealing params, window < 1,
-// settle < 0, fail step < 0, detection windows < 1, an unknown or repeated leg, or every leg
-// disabled.
+// settle < 0, fail step < 0, detection windows < 1, an unknown or repeated leg, every leg
+// disabled, a bad timeline (sim::validate), or a paper-mode run with more than one fault.
 void validate(const CompensationOptions& options, const robot::Morphology& morph);
+
+// One learning episode: from a detecting window to the end of its annealing.
+struct Episode {
+  long detection_step = 0;     // steps after the start when the deviation was seen
+  double detection_deg = 0.0;  // E of the detecting window (C0's E_ref)
+  int trials = 0;
+  bool held = false;  // its last combination held under the threshold
+  std::optional<StopReason> reason;
+  bool interrupted = false;  // a fault or recovery came while it learned
+  Periods periods;           // the accepted combination when it ended
+  double final_deviation_deg = 0.0;
+};
 
 struct LearningResult {
   bool converged = false;
@@ -82,11 +136,28 @@ struct LearningResult {
   std::vector<TrialRecord> trace;
   long steps_walked = 0;
   std::optional<long> detection_step;  // steps after the start when the deviation was seen
-  long settle_steps = 0;               // as used
+  long settle_steps = 0;               // as used (robust: after a change to all-4 periods)
+  Mode mode = Mode::robust;
+  std::vector<Episode> episodes;  // robust mode: one per detection (paper: at most one)
+  // Robust mode: each window walked after the last episode or fault, as measured.
+  std::vector<sim::WindowMeasure> final_windows;
+  // Mean |swing cut| of the steering reflex over the last window (0 = no steering used).
+  double steering_effort = 0.0;
+  // The reflex as the run left it (robust mode with Steering::reflex), to walk on with.
+  std::optional<SteeringState> steering;
 };
 
 // Runs the whole online loop on `walker`, which should be walking forward with every leg
-// working and every client synchronised (as make_controller_state leaves it).
+// working and every client synchronised (as make_controller_state leaves it). Paper mode is
+// SPEC §6 exactly; robust mode (issue 8):
+// - a window is judged on both its yaw change and its path angle (sim::measure_window);
+// - a combination is accepted only when it holds for hold_windows consecutive windows (a trial
+//   stops at its first window over the threshold, whose deviation is the trial's E);
+// - after an episode the robot keeps walking and monitoring, and a window over the threshold
+//   starts a new episode; the run ends after monitor_windows clean windows past the last fault;
+// - a recovery that leaves every leg working sets every period back to the master's and
+//   resynchronises the clients (SPEC §5), then settles;
+// - with Steering::reflex, learning/steering.h holds the course set where the run started.
 LearningResult compensate(Walker& walker, const CompensationOptions& options);
 
 // JSON with converged, status, reason, trials, initial/final_deviation_deg, periods
@@ -95,5 +166,8 @@ LearningResult compensate(Walker& walker, const CompensationOptions& options);
 // legs_changed, redraws, tabu_redraw).
 nlohmann::json to_json(const LearningResult& result, const robot::Morphology& morph,
                        const std::vector<std::size_t>& disabled);
+
+// The options as recorded with a result (every field that changes it).
+nlohmann::json to_json(const CompensationOptions& options, const robot::Morphology& morph);
 
 }  // namespace multicpg::learning

@@ -1,6 +1,7 @@
 #include "report/film.h"
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <sstream>
 
@@ -8,6 +9,15 @@
 #include "common/errors.h"
 
 namespace multicpg::report {
+namespace {
+
+std::string fmt_deviation(const std::string& prefix, double deg) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f deg", deg);
+  return prefix + text;
+}
+
+}  // namespace
 
 FilmFormat film_format(const std::filesystem::path& out) {
   const std::string ext = out.extension().string();
@@ -71,21 +81,35 @@ void Film::picture(const sim::SimState& state, const std::string& caption) {
   write_png(frame(state, caption), spec_.out);
 }
 
-experiments::StepHook film_learning(Film& film) {
-  struct Progress {
-    int trial = 0;
-    std::vector<int> periods;
-  };
-  auto progress = std::make_shared<Progress>();
-  return [&film, progress](const sim::SimState& state) {
-    std::vector<int> periods;
-    for (const neural::LegState& leg : state.controller.legs) periods.push_back(leg.cpg.period);
-    if (!progress->periods.empty() && periods != progress->periods) ++progress->trial;
-    progress->periods = std::move(periods);
-    film.capture(state, progress->trial == 0
-                            ? "walking, measuring the deviation"
-                            : "learning: trial " + std::to_string(progress->trial));
-  };
+void FilmObserver::on_step(const sim::SimModel& /*model*/, const sim::SimState& state) {
+  film_.capture(state, caption_);
+}
+
+void FilmObserver::on_event(const sim::SimModel& model, const sim::SimState& /*state*/,
+                            const sim::Event& e) {
+  const robot::Morphology& morph = model.controller.morphology;
+  switch (e.kind) {
+    case sim::EventKind::fault:
+      caption_ = robot::leg_list_name(morph, e.legs) + " failed";
+      break;
+    case sim::EventKind::recovery:
+      caption_ = robot::leg_list_name(morph, e.legs) + " works again";
+      break;
+    case sim::EventKind::detection:
+      caption_ = fmt_deviation("deviation ", e.deviation_deg) + ": learning starts";
+      break;
+    case sim::EventKind::trial_start:
+      caption_ = "learning: trial " + std::to_string(e.trial);
+      break;
+    case sim::EventKind::trial_end:
+      caption_ = "trial " + std::to_string(e.trial) + fmt_deviation(": ", e.deviation_deg) +
+                 (e.accepted ? ", kept" : ", rejected");
+      break;
+    case sim::EventKind::episode_end:
+      caption_ = std::string(e.accepted ? "walks straight" : "learning stopped") + " after " +
+                 std::to_string(e.trial) + " trials";
+      break;
+  }
 }
 
 int Film::frames() const {

@@ -7,10 +7,10 @@
 #include <optional>
 #include <string>
 
-#include "experiments/learning_run.h"
 #include "report/render.h"
 #include "report/video.h"
 #include "sim/sim.h"
+#include "sim/stepper.h"
 
 namespace multicpg::report {
 
@@ -57,9 +57,21 @@ class Film {
   std::optional<VideoWriter> video_;
 };
 
-// A step hook for experiments::run_learning that films the run, each frame captioned with
-// what the robot is doing: walking while the deviation is measured, then the trial number (a
-// trial starts whenever the periods change). `film` must outlive the run.
-experiments::StepHook film_learning(Film& film);
+// Films a run through the one stepping loop (sim::Stepper), each frame captioned with what the
+// robot is doing as the run itself reports it: walking, a fault, the detection, the learner's
+// trial and its verdict, the end of an episode. `film` must outlive the observer.
+class FilmObserver final : public sim::Observer {
+ public:
+  explicit FilmObserver(Film& film, std::string walking = "walking, measuring the deviation")
+      : film_(film), caption_(std::move(walking)) {}
+  void on_step(const sim::SimModel& model, const sim::SimState& state) override;
+  void on_event(const sim::SimModel& model, const sim::SimState& state,
+                const sim::Event& event) override;
+  const std::string& caption() const { return caption_; }
+
+ private:
+  Film& film_;
+  std::string caption_;
+};
 
 }  // namespace multicpg::report

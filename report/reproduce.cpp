@@ -274,8 +274,7 @@ class Reproduction {
                                            {6, "transition"}, {8, "fast wave"}, {9, "slow wave"}};
     for (int p : kGaitFigurePeriods) {
       sim::WalkSpec spec;
-      spec.periods.assign(hexapod.legs.size(), p);
-      spec.controller_warmup = sim::kControllerWarmup;
+      spec.start.periods.assign(hexapod.legs.size(), p);
       spec.steps = kSpeedWalkSteps;
       spec.record = false;
       const sim::WalkResult r = sim::walk(hexapod, spec);
@@ -291,10 +290,10 @@ class Reproduction {
       Film film(hexapod, {out, kDefaultFrameWidth, kDefaultFrameHeight, 1, {}});
       sim::WalkSpec spec;
       spec.steps = sizes_.walk_film_steps;
-      spec.controller_warmup = sim::kControllerWarmup;
       spec.record = false;
-      if (broken) spec.disabled = {0};
-      spec.on_step = [&](const sim::SimState& s) { film.capture(s); };
+      if (broken) spec.faults = sim::fail_at({0}, 0);
+      FilmObserver observer(film, broken ? "R1 disabled" : "all legs working");
+      spec.observer = &observer;
       sim::walk(hexapod, spec);
       film.finish();
       films.push_back(rel(out, o_.out));
@@ -319,6 +318,7 @@ class Reproduction {
     const sim::SimModel& hexapod = model(RobotKind::hexapod);
     const robot::Morphology& morph = hexapod.controller.morphology;
     learning::CompensationOptions options;
+    options.mode = learning::Mode::paper;  // the paper's figures show the paper's algorithm
     options.disabled = {robot::leg_index(morph, "R1")};
     // R1 fails as the first measured window starts, after the robot walked healthy while its
     // CPGs settled: that window's deviation is the paper's "after 400 time steps" (§4.1).
@@ -326,8 +326,9 @@ class Reproduction {
     options.seed = o_.seed;
     const fs::path video = dir("videos") / "learning-r1.mp4";
     Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, sizes_.film_speed, {}});
+    FilmObserver observer(film);
     const experiments::LearningRun run = experiments::run_learning(
-        hexapod, options, /*record=*/true, kAfterLearningSteps, film_learning(film));
+        hexapod, options, /*record=*/true, kAfterLearningSteps, &observer);
     film.finish();
     const learning::LearningResult& r = run.result;
 
@@ -390,10 +391,9 @@ class Reproduction {
     TrunkPaths paths;
     for (bool learned : {false, true}) {
       sim::WalkSpec spec;
-      spec.periods = learned ? r.periods : std::vector<int>(legs, 4);
-      spec.disabled = options.disabled;
+      spec.start.periods = learned ? r.periods : std::vector<int>(legs, 4);
+      spec.faults = sim::fail_at(options.disabled, 0);
       spec.steps = kSpeedWalkSteps;
-      spec.controller_warmup = sim::kControllerWarmup;
       spec.record = false;
       const sim::WalkResult w = sim::walk(hexapod, spec);
       auto& path = learned ? paths.after : paths.before;
@@ -538,6 +538,7 @@ class Reproduction {
         return s;
       }());
       learning::CompensationOptions options;
+      options.mode = learning::Mode::paper;
       options.disabled = disabled;
       options.seed = o_.seed;
       const experiments::LearningRun learned = experiments::run_learning(open, options, false);
@@ -557,17 +558,18 @@ class Reproduction {
         std::string stem = "tunnel-" + sc.name + (v.source == "all 4" ? "-before" : "-after");
         std::replace(stem.begin(), stem.end(), '+', '-');
         std::optional<Film> film;
+        std::optional<FilmObserver> observer;
         if (filmed) {
           film.emplace(corridor,
                        FilmSpec{videos / (stem + ".mp4"), kDefaultFrameWidth, kDefaultFrameHeight,
                                 sizes_.tunnel_film_speed, kTunnelCamera});
+          observer.emplace(*film, sc.name + " disabled, " + v.source);
         }
+        experiments::TunnelSpec tunnel_spec;
+        tunnel_spec.disabled = disabled;
+        tunnel_spec.periods = v.periods;
         const experiments::TunnelRun t =
-            experiments::run_tunnel(corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
-                                    [&](const sim::SimState& s) {
-                                      if (film)
-                                        film->capture(s, sc.name + " disabled, " + v.source);
-                                    });
+            experiments::run_tunnel(corridor, tunnel_spec, observer ? &*observer : nullptr);
         if (film) {
           film->finish();
           films.push_back(rel(videos / (stem + ".mp4"), o_.out));

@@ -98,7 +98,8 @@ class Viewer {
       : model_(model),
         spec_(spec),
         window_(open_window("multicpg view: " + model.controller.morphology.name)),
-        state_(sim::start_walk_state(model, spec.periods)),
+        stepper_(model, spec.start, spec.faults),
+        state_(stepper_.state()),
         synchronised_(neural::follows_master(state_.controller, kFirstClient)) {
     const mjModel* m = model_.mj.get();
     const CameraSpec view;  // the viewpoint of the rendered videos
@@ -181,15 +182,10 @@ class Viewer {
 
   static Viewer& of(GLFWwindow* w) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
 
-  bool done() const { return spec_.steps > 0 && state_.step >= spec_.steps; }
+  bool done() const { return spec_.steps > 0 && stepper_.step_count() >= spec_.steps; }
 
-  // One controller step, with the fault schedule of sim::WalkSpec.
-  void advance() {
-    if (state_.step == spec_.disable_at) {
-      for (std::size_t leg : spec_.disabled) neural::set_disabled(state_.controller, leg, true);
-    }
-    sim::sim_step(model_, state_);
-  }
+  // One controller step, with the fault timeline.
+  void advance() { stepper_.step(); }
 
   // Callbacks only change flags, the camera and the controller's switches: a step may throw,
   // and exceptions must not cross GLFW's C frames, so steps are taken in run().
@@ -293,7 +289,8 @@ class Viewer {
   const ViewerSpec& spec_;
   GlfwSession glfw_;
   WindowPtr window_;
-  sim::SimState state_;
+  sim::Stepper stepper_;  // the one stepping loop: start, faults
+  sim::SimState& state_;
   bool synchronised_;
   mjvCamera camera_{};
   mjvOption option_{};

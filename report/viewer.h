@@ -7,17 +7,17 @@
 #include <vector>
 
 #include "sim/sim.h"
+#include "sim/stepper.h"
 
 namespace multicpg::report {
 
 // Step numbers count controller steps from the start, as in sim::WalkSpec.
 struct ViewerSpec {
-  // One per leg (empty = every leg 4); as sim::walk, equal periods keep the clients
-  // synchronised and unequal ones free them (sim::start_walk_state).
-  std::vector<int> periods;
-  std::vector<std::size_t> disabled;  // legs that fail...
-  long disable_at = 0;                // ...before this step
-  long steps = 0;                     // quit after this many steps; 0 = when the user quits
+  // Periods (as sim::walk: equal periods keep the clients synchronised, unequal ones free them)
+  // and warm-up (default: a running, locked controller).
+  sim::StartSpec start;
+  sim::FaultTimeline faults;
+  long steps = 0;  // quit after this many steps; 0 = when the user quits
 };
 
 // Opens a window on the display and runs until the user quits (Esc, Q, closing the window) or

@@ -13,10 +13,10 @@ struct Pose2 {
 };
 
 struct WindowMeasure {
-  double yaw_deg = 0.0;      // wrap(yaw(end) - yaw(start)), + = left turn (SPEC §6)
-  double path_deg = 0.0;     // atan2(lateral, forward) of the displacement, + = left (Table 1)
-  double forward_m = 0.0;    // displacement along the heading at the window's start
-  double lateral_m = 0.0;    // and to its left
+  double yaw_deg = 0.0;    // wrap(yaw(end) - yaw(start)), + = left turn (SPEC §6)
+  double path_deg = 0.0;   // atan2(lateral, forward) of the displacement, + = left (Table 1)
+  double forward_m = 0.0;  // displacement along the heading at the window's start
+  double lateral_m = 0.0;  // and to its left
   // The larger of |yaw_deg| and |path_deg|: what the robust criterion compares with the
   // threshold (a window holds when both are under it).
   double worst_deg() const;

@@ -11,40 +11,42 @@ namespace multicpg::sim {
 namespace {
 
 void check_spec(const SimModel& model, const WalkSpec& spec) {
-  const std::size_t legs = model.legs.size();
-  if (spec.steps <= 0) {
-    throw BadInput("--steps must be positive, got " + std::to_string(spec.steps));
+  if (spec.steps <= 0 || spec.steps > kMaxSteps) {
+    throw BadInput("--steps must be in 1.." + std::to_string(kMaxSteps) + ", got " +
+                   std::to_string(spec.steps));
   }
-  if (spec.window <= 0) {
-    throw BadInput("--window must be positive, got " + std::to_string(spec.window));
+  if (spec.window <= 0 || spec.window > kMaxSteps) {
+    throw BadInput("--window must be in 1.." + std::to_string(kMaxSteps) + ", got " +
+                   std::to_string(spec.window));
   }
-  if (!spec.periods.empty() && spec.periods.size() != legs) {
-    throw BadInput("expected " + std::to_string(legs) + " periods, got " +
-                   std::to_string(spec.periods.size()));
+  if (spec.settle < 0 || spec.settle > kMaxSteps) {
+    throw BadInput("--settle must be in 0.." + std::to_string(kMaxSteps) + ", got " +
+                   std::to_string(spec.settle));
   }
-  for (std::size_t leg : spec.disabled) {
-    if (leg >= legs) throw BadInput("leg index " + std::to_string(leg) + " out of range");
+  if (spec.start.warmup < 0 || spec.start.warmup > kMaxSteps) {
+    throw BadInput("--warmup must be in 0.." + std::to_string(kMaxSteps) + ", got " +
+                   std::to_string(spec.start.warmup));
   }
-  std::vector<std::size_t> unique = spec.disabled;
-  std::sort(unique.begin(), unique.end());
-  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-  if (unique.size() == legs) {
-    throw BadInput("cannot disable every leg of the " + model.controller.morphology.name);
+  if (!spec.start.periods.empty() && spec.start.periods.size() != model.legs.size()) {
+    throw BadInput("expected " + std::to_string(model.legs.size()) + " periods, got " +
+                   std::to_string(spec.start.periods.size()));
   }
-  if (spec.controller_warmup < 0) {
-    throw BadInput("--warmup must not be negative, got " + std::to_string(spec.controller_warmup));
-  }
-  if (spec.settle < 0) {
-    throw BadInput("--settle must not be negative, got " + std::to_string(spec.settle));
-  }
+  validate(model.controller.morphology, spec.faults);
   const long total = spec.settle + spec.steps;
-  if (!spec.disabled.empty() && (spec.disable_at < 0 || spec.disable_at >= total)) {
-    throw BadInput("--disable-at must be in 0.." + std::to_string(total - 1) + ", got " +
-                   std::to_string(spec.disable_at));
+  for (const Fault& f : spec.faults) {
+    if (f.step >= total) {
+      throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +
+                     std::to_string(total - 1) + ", got " + std::to_string(f.step));
+    }
   }
 }
 
 }  // namespace
+
+FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step) {
+  if (legs.empty()) return {};
+  return {Fault{step, legs, false}};
+}
 
 SimState start_walk_state(const SimModel& model, const std::vector<int>& periods) {
   if (periods.empty()) return make_sim_state(model);
@@ -91,43 +93,46 @@ std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::s
   return out;
 }
 
+std::vector<WindowMeasure> window_measures(const WalkRecord& r, std::size_t first, long window) {
+  std::vector<WindowMeasure> out;
+  const auto w = static_cast<std::size_t>(window);
+  for (std::size_t end = first + w; end < r.rows(); end += w) {
+    const std::size_t begin = end - w;
+    out.push_back(measure_window({r.x[begin], r.y[begin], r.yaw_deg[begin]},
+                                 {r.x[end], r.y[end], r.yaw_deg[end]}));
+  }
+  return out;
+}
+
 WalkResult walk(const SimModel& model, const WalkSpec& spec) {
   check_spec(model, spec);
-  SimState state = start_walk_state(model, spec.periods);
-  warm_up_controller(model, state, spec.controller_warmup);
   WalkResult result;
   WalkRecord& r = result.record;
-  r.legs = model.legs.size();
   const long total = spec.settle + spec.steps;
   const auto rows = static_cast<std::size_t>(total) + 1;
   for (auto* v : {&r.time, &r.x, &r.y, &r.z, &r.yaw_deg}) v->reserve(rows);
   if (spec.record) {
-    r.command.reserve(rows * r.legs * robot::kJointsPerLeg);
-    r.target.reserve(rows * r.legs * robot::kJointsPerLeg);
-    r.actual.reserve(rows * r.legs * robot::kJointsPerLeg);
-    r.contact.reserve(rows * r.legs);
+    const std::size_t legs = model.legs.size();
+    r.command.reserve(rows * legs * robot::kJointsPerLeg);
+    r.target.reserve(rows * legs * robot::kJointsPerLeg);
+    r.actual.reserve(rows * legs * robot::kJointsPerLeg);
+    r.contact.reserve(rows * legs);
   }
-  append_record(model, state, spec.record, r);
-  for (long step = 0; step < total; ++step) {
-    if (step == spec.disable_at) {
-      for (std::size_t leg : spec.disabled) neural::set_disabled(state.controller, leg, true);
-    }
-    sim_step(model, state);
-    append_record(model, state, spec.record, r);
-    if (spec.on_step) spec.on_step(state);
-  }
+  Stepper stepper(model, spec.start, spec.faults, spec.observer, &r, spec.record);
+  stepper.steps(total);
 
   const auto first = static_cast<std::size_t>(spec.settle);
   result.duration_s = static_cast<double>(spec.steps) * model.control_dt;
-  const double dx = r.x.back() - r.x[first];
-  const double dy = r.y.back() - r.y[first];
-  const double heading = r.yaw_deg[first] * std::numbers::pi / 180.0;
-  result.distance_m = std::hypot(dx, dy);
-  result.forward_m = dx * std::cos(heading) + dy * std::sin(heading);
-  result.lateral_m = -dx * std::sin(heading) + dy * std::cos(heading);
+  const WindowMeasure whole = measure_window({r.x[first], r.y[first], r.yaw_deg[first]},
+                                             {r.x.back(), r.y.back(), r.yaw_deg.back()});
+  result.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
+  result.forward_m = whole.forward_m;
+  result.lateral_m = whole.lateral_m;
   result.speed_m_s = result.distance_m / result.duration_s;
   result.window_deviations_deg = window_deviations(r.yaw_deg, first, spec.window);
+  result.windows = window_measures(r, first, spec.window);
   result.final_yaw_deg = r.yaw_deg.back();
+  result.final_state = std::move(stepper.state());
   return result;
 }
 

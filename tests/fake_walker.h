@@ -1,6 +1,10 @@
 // A stand-in for the simulated robot, for tests of the learning loop without physics.
 #pragma once
 
+#include <cmath>
+#include <numbers>
+#include <vector>
+
 #include "common/angles.h"
 #include "learning/compensation.h"
 #include "neural/controller.h"
@@ -19,17 +23,26 @@ class FakeWalker : public Walker {
         state_(neural::make_controller_state(model_)),
         bias_(bias_deg_per_step) {}
 
+  // It walks kSpeedMPerStep along its heading, so its path angle equals its mean heading.
+  static constexpr double kSpeedMPerStep = 0.002;
+
   void step() override {
     yaw_ = wrap_degrees(yaw_ + rate());
+    const double heading = yaw_ * std::numbers::pi / 180.0;
+    x_ += kSpeedMPerStep * std::cos(heading);
+    y_ += kSpeedMPerStep * std::sin(heading);
     ++state_.step;
   }
-  double yaw_deg() const override { return yaw_; }
+  sim::Pose2 pose() const override { return {x_, y_, yaw_}; }
   long step_count() const override { return state_.step; }
   neural::ControllerState& controller() override { return state_; }
   const neural::ControllerModel& controller_model() const override { return model_; }
-  void disable(const std::vector<std::size_t>& legs) override {
-    for (std::size_t leg : legs) neural::set_disabled(state_, leg, true);
+  void set_disabled(const std::vector<std::size_t>& legs, bool disabled) override {
+    for (std::size_t leg : legs) neural::set_disabled(state_, leg, disabled);
   }
+  void emit(const sim::Event& event) override { events.push_back(event); }
+
+  std::vector<sim::Event> events;  // what the learner reported
 
  private:
   double rate() const {
@@ -49,6 +62,8 @@ class FakeWalker : public Walker {
   neural::ControllerState state_;
   double bias_;
   double yaw_ = 0.0;
+  double x_ = 0.0;
+  double y_ = 0.0;
 };
 
 }  // namespace multicpg::learning

@@ -2,6 +2,7 @@
 // of the periods of its working legs, plus the settle-time claim behind the default.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/angles.h"
@@ -14,8 +15,10 @@ namespace {
 
 using robot::RobotKind;
 
+// The paper's algorithm (SPEC §6); robust mode has its own tests below.
 CompensationOptions options_for(std::vector<std::size_t> disabled, std::uint64_t seed) {
   CompensationOptions o;
+  o.mode = Mode::paper;
   o.disabled = std::move(disabled);
   o.seed = seed;
   return o;
@@ -205,6 +208,97 @@ TEST(Compensation, DefaultSettleCoversCpgLockAndDelays) {
   }
   EXPECT_EQ(default_settle_steps(neural::make_controller_model(RobotKind::hexapod)), 337);
   EXPECT_EQ(default_settle_steps(neural::make_controller_model(RobotKind::quadruped)), 319);
+}
+
+// Robust mode (issue 8) on the fake walker: faults that come and go.
+CompensationOptions robust_options(sim::FaultTimeline faults, std::uint64_t seed) {
+  CompensationOptions o;
+  o.mode = Mode::robust;
+  o.steering = Steering::off;  // the fake walker has no VRN
+  o.faults = std::move(faults);
+  o.seed = seed;
+  return o;
+}
+
+int count(const std::vector<sim::Event>& events, sim::EventKind kind) {
+  return static_cast<int>(std::count_if(events.begin(), events.end(),
+                                        [&](const sim::Event& e) { return e.kind == kind; }));
+}
+
+TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
+  FakeWalker walker(RobotKind::hexapod);
+  const LearningResult r = compensate(walker, robust_options({{0, {0}, false}}, 1));
+  ASSERT_TRUE(r.converged);
+  ASSERT_EQ(r.episodes.size(), 1u);
+  EXPECT_TRUE(r.episodes[0].held);
+  // The run ends with the monitored windows, every one under the threshold on yaw and path.
+  ASSERT_EQ(r.final_windows.size(), static_cast<std::size_t>(kDefaultMonitorWindows));
+  for (const sim::WindowMeasure& m : r.final_windows) EXPECT_LT(m.worst_deg(), 8.0);
+  EXPECT_EQ(count(walker.events, sim::EventKind::detection), 1);
+  EXPECT_EQ(count(walker.events, sim::EventKind::trial_end), r.trials);
+  EXPECT_EQ(count(walker.events, sim::EventKind::episode_end), 1);
+}
+
+TEST(RobustCompensation, SecondFaultLearnsTwice) {
+  FakeWalker walker(RobotKind::hexapod);
+  const LearningResult r =
+      compensate(walker, robust_options({{0, {0}, false}, {30000, {4}, false}}, 2));
+  ASSERT_EQ(r.episodes.size(), 2u);
+  EXPECT_LT(r.episodes[0].detection_step, 30000);
+  EXPECT_GT(r.episodes[1].detection_step, 30000);
+  EXPECT_TRUE(r.episodes[1].held);
+  EXPECT_TRUE(r.converged);
+  // The second episode never changes a failed leg (R1, L2).
+  EXPECT_EQ(r.periods[0], kStartPeriod);
+  EXPECT_EQ(r.periods[4], r.episodes[0].periods[4]);
+  EXPECT_EQ(count(walker.events, sim::EventKind::fault), 2);
+}
+
+TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
+  FakeWalker walker(RobotKind::hexapod);
+  const LearningResult r =
+      compensate(walker, robust_options({{0, {0}, false}, {30000, {0}, true}}, 3));
+  ASSERT_EQ(r.episodes.size(), 1u);
+  EXPECT_EQ(count(walker.events, sim::EventKind::recovery), 1);
+  const neural::ControllerState& c = walker.controller();
+  for (std::size_t i = 0; i < c.legs.size(); ++i) {
+    EXPECT_EQ(c.legs[i].cpg.period, c.legs[0].cpg.period) << "leg " << i;
+    if (i > 0) EXPECT_TRUE(neural::follows_master(c, i)) << "leg " << i;
+  }
+  for (const sim::WindowMeasure& m : r.final_windows) EXPECT_LT(std::abs(m.yaw_deg), 1e-9);
+}
+
+TEST(RobustCompensation, PaperModeRefusesTimelines) {
+  FakeWalker walker(RobotKind::hexapod);
+  CompensationOptions o = robust_options({{0, {0}, false}, {900, {0}, true}}, 1);
+  o.mode = Mode::paper;
+  EXPECT_THROW(compensate(walker, o), BadInput);
+  o = robust_options({{900, {0}, true}}, 1);
+  EXPECT_THROW(compensate(walker, o), BadInput);  // recovery before its fault
+  o = robust_options({{0, {0, 0}, false}}, 1);
+  EXPECT_THROW(compensate(walker, o), BadInput);  // a leg listed twice
+  o = robust_options({{0, {0}, false}}, 1);
+  o.hold_windows = 0;
+  EXPECT_THROW(compensate(walker, o), BadInput);
+}
+
+TEST(Steering, CutsTheSideTowardWhichTheRobotMustTurn) {
+  const SteeringParams p;
+  SteeringState s = start_steering({0.0, 0.0, 0.0});
+  // Pointing 5 deg right of the course: turn left, so the left side swings less.
+  neural::DriveInputs d = steer(p, s, {0.0, 0.0, -5.0}, {});
+  EXPECT_GT(d.turn_left, -1.0);
+  EXPECT_EQ(d.turn_right, -1.0);
+  // On course, on the line: both sides full forward.
+  s = start_steering({0.0, 0.0, 0.0});
+  d = steer(p, s, {0.0, 0.0, 0.0}, {});
+  EXPECT_EQ(d.turn_left, -1.0);
+  EXPECT_EQ(d.turn_right, -1.0);
+  // Left of the line, heading along it: turn right (the right side swings less).
+  s = start_steering({0.0, 0.0, 0.0});
+  d = steer(p, s, {0.0, 0.2, 0.0}, {});
+  EXPECT_GT(d.turn_right, -1.0);
+  EXPECT_EQ(d.turn_left, -1.0);
 }
 
 }  // namespace

@@ -223,6 +223,7 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
   auto learn = [&](const Task& t) {
     learning::FakeWalker walker(RobotKind::quadruped);
     learning::CompensationOptions o;
+    o.mode = learning::Mode::paper;
     for (const nlohmann::json& leg : t.params.at("disabled")) {
       o.disabled.push_back(robot::leg_index(quad, leg.get<std::string>()));
     }

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "common/errors.h"
+#include "sim/stepper.h"
 #include "sim/walk.h"
 
 namespace {
@@ -31,8 +32,8 @@ sim::WalkResult walk(RobotKind kind, int period, std::vector<std::size_t> disabl
                      long steps, bool record = false) {
   const sim::SimModel& m = model(kind);
   sim::WalkSpec spec;
-  spec.periods.assign(m.legs.size(), period);
-  spec.disabled = std::move(disabled);
+  spec.start.periods.assign(m.legs.size(), period);
+  spec.faults = sim::fail_at(disabled, 0);
   spec.settle = settle;
   spec.steps = steps;
   spec.record = record;
@@ -123,9 +124,8 @@ TEST(Walk, OctopodWalksForward) {
 
 sim::WalkSpec mixed_spec() {
   sim::WalkSpec spec;
-  spec.periods = {4, 5, 4, 6, 4, 9};
-  spec.disabled = {2};
-  spec.disable_at = 100;
+  spec.start.periods = {4, 5, 4, 6, 4, 9};
+  spec.faults = sim::fail_at({2}, 100);
   spec.steps = 250;
   return spec;
 }
@@ -193,18 +193,79 @@ TEST(Walk, UnequalPeriodsFreeTheClients) {
 TEST(Walk, BadSpecsAreRejected) {
   const sim::SimModel& m = model(RobotKind::quadruped);
   sim::WalkSpec spec;
-  spec.disabled = {0, 1, 2, 3};
+  spec.faults = sim::fail_at({0, 1, 2, 3}, 0);
   EXPECT_THROW(sim::walk(m, spec), BadInput);
-  spec.disabled = {};
+  spec.faults = {};
   spec.steps = 0;
   EXPECT_THROW(sim::walk(m, spec), BadInput);
+  spec.steps = sim::kMaxSteps + 1;
+  EXPECT_THROW(sim::walk(m, spec), BadInput);
   spec.steps = 10;
-  spec.periods = {4, 4};
+  spec.start.periods = {4, 4};
   EXPECT_THROW(sim::walk(m, spec), BadInput);
-  spec.periods = {};
-  spec.disabled = {1};
-  spec.disable_at = 10;
+  spec.start.periods = {};
+  spec.faults = sim::fail_at({1}, 10);  // past the run
   EXPECT_THROW(sim::walk(m, spec), BadInput);
+  spec.faults = {{0, {1}, false}, {5, {1}, false}};  // fails twice
+  EXPECT_THROW(sim::walk(m, spec), BadInput);
+  spec.faults = {{3, {1}, true}};  // recovers before it failed
+  EXPECT_THROW(sim::walk(m, spec), BadInput);
+  spec.faults = {};
+  spec.start.warmup = -1;
+  EXPECT_THROW(sim::walk(m, spec), BadInput);
+}
+
+// Issue 8: without any option the robot starts from a running, locked controller, so the
+// intact hexapod walks straight in every window from the first, by heading and by path.
+TEST(Walk, IntactHexapodWithDefaultsIsStraightFromTheFirstWindow) {
+  const sim::SimModel& m = model(RobotKind::hexapod);
+  const sim::WalkResult r = sim::walk(m, sim::WalkSpec{});
+  ASSERT_EQ(r.windows.size(), 3u);
+  for (const sim::WindowMeasure& w : r.windows) {
+    EXPECT_LT(std::abs(w.yaw_deg), 8.0) << w.yaw_deg;
+    EXPECT_LT(std::abs(w.path_deg), 8.0) << w.path_deg;
+  }
+}
+
+// R1 disabled turns right and L1 disabled left, by magnitudes within 10 % of each other.
+TEST(Walk, R1AndL1TurnsMirrorEachOther) {
+  const sim::SimModel& m = model(RobotKind::hexapod);
+  const auto mean_turn = [&](std::size_t leg) {
+    sim::WalkSpec spec;
+    spec.faults = sim::fail_at({leg}, 0);
+    spec.record = false;
+    return mean(sim::walk(m, spec).window_deviations_deg);
+  };
+  const double r1 = mean_turn(0);
+  const double l1 = mean_turn(3);
+  EXPECT_LT(r1, -8.0);
+  EXPECT_GT(l1, 8.0);
+  EXPECT_NEAR(-r1 / l1, 1.0, 0.1) << "R1 " << r1 << ", L1 " << l1;
+  RecordProperty("r1_deg_per_window", std::to_string(r1));
+  RecordProperty("l1_deg_per_window", std::to_string(l1));
+}
+
+TEST(Stepper, FaultsAndRecoveriesReachTheObserverAtTheirSteps) {
+  const sim::SimModel& m = model(RobotKind::hexapod);
+  struct Log final : sim::Observer {
+    std::vector<sim::Event> events;
+    long steps = 0;
+    void on_step(const sim::SimModel&, const sim::SimState&) override { ++steps; }
+    void on_event(const sim::SimModel&, const sim::SimState&, const sim::Event& e) override {
+      events.push_back(e);
+    }
+  } log;
+  sim::Stepper stepper(m, {{}, 0}, {{0, {0}, false}, {5, {2}, false}, {8, {0}, true}}, &log);
+  EXPECT_TRUE(stepper.state().controller.legs[0].disabled);  // failed from the start
+  stepper.steps(10);
+  EXPECT_EQ(log.steps, 10);
+  ASSERT_EQ(log.events.size(), 3u);
+  EXPECT_EQ(log.events[1].kind, sim::EventKind::fault);
+  EXPECT_EQ(log.events[1].step, 5);
+  EXPECT_EQ(log.events[2].kind, sim::EventKind::recovery);
+  EXPECT_EQ(log.events[2].step, 8);
+  EXPECT_FALSE(stepper.state().controller.legs[0].disabled);
+  EXPECT_TRUE(stepper.state().controller.legs[2].disabled);
 }
 
 TEST(Walk, WindowDeviationsWrapAndSign) {

@@ -1,0 +1,58 @@
+#include "learning/steering.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/angles.h"
+#include "common/errors.h"
+
+namespace multicpg::learning {
+namespace {
+
+// The VRN's steering weight (reference §3.2): u1 = tanh(5 input).
+constexpr double kSteerWeight = 5.0;
+// Forward walking: input3 = input4 = -1 (reference §3).
+constexpr double kForward = -1.0;
+
+// The steering input that leaves `amplitude` (0..1) of a side's swing: u1 = -amplitude.
+double input_for_amplitude(double amplitude) {
+  const double full = std::tanh(kSteerWeight);  // what input -1 gives
+  return -std::atanh(std::min(amplitude, full)) / kSteerWeight;
+}
+
+}  // namespace
+
+void validate(const SteeringParams& p) {
+  for (double g : {p.heading_gain, p.lateral_gain, p.integral_gain}) {
+    if (!std::isfinite(g) || g < 0.0) throw BadInput("steering gains must be finite and >= 0");
+  }
+  if (!(p.max_heading_offset_deg > 0.0 && p.max_heading_offset_deg <= 90.0)) {
+    throw BadInput("the steering heading offset must be in (0, 90] deg");
+  }
+}
+
+SteeringState start_steering(const sim::Pose2& course) {
+  return SteeringState{course, 0.0, 0.0};
+}
+
+neural::DriveInputs steer(const SteeringParams& p, SteeringState& s, const sim::Pose2& now,
+                          neural::DriveInputs drive) {
+  constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+  const double heading = s.course.yaw_deg * kRadPerDeg;
+  const double offset_m =
+      -(now.x - s.course.x) * std::sin(heading) + (now.y - s.course.y) * std::cos(heading);
+  s.offset_integral_m_steps += offset_m;
+  const double wanted =
+      std::clamp(-(p.lateral_gain * offset_m + p.integral_gain * s.offset_integral_m_steps),
+                 -p.max_heading_offset_deg, p.max_heading_offset_deg);
+  const double error = wrap_degrees(now.yaw_deg - s.course.yaw_deg) - wanted;  // + = too far left
+  const double cut = std::clamp(p.heading_gain * error, -1.0, 1.0);
+  s.last_cut = cut;
+  const double reduced = input_for_amplitude(1.0 - std::abs(cut));
+  drive.turn_left = cut < 0.0 ? reduced : kForward;   // turn left: the left side swings less
+  drive.turn_right = cut > 0.0 ? reduced : kForward;  // turn right: the right side swings less
+  return drive;
+}
+
+}  // namespace multicpg::learning

@@ -1,0 +1,43 @@
+// The orientation reflex on the VRN's steering inputs (issue 8, beyond the paper). SPEC §2 and
+// reference §3.2: the VRN acts like u0 * u1 with u1 = tanh(5 input3/4), so a side's steering
+// input scales that side's TC swing from full (-1) to none (0). The paper names these inputs as
+// the place for sensory feedback; this reflex feeds them the orientation sensor and odometry.
+//
+// A cascade, chosen with measurements (docs/learning.md): an outer loop turns the lateral offset
+// from the course line (and its integral, which removes the steady offset that a sideways crab
+// would leave) into a wanted heading; an inner loop cuts the swing of the side toward which the
+// robot must turn in proportion to the heading error. A heading loop alone leaves the crab
+// (-6 to -11 deg between heading and path); a loop on the path direction alone oscillates, since
+// a steering change reaches the legs only through the delay lines (up to 126 steps).
+#pragma once
+
+#include "neural/drive.h"
+#include "sim/deviation.h"
+
+namespace multicpg::learning {
+
+struct SteeringParams {
+  double heading_gain = 0.1;    // swing cut per degree of heading error (10 deg: full cut)
+  double lateral_gain = 20.0;   // wanted heading change per metre off the course line, deg/m
+  double integral_gain = 0.02;  // and per metre-step of accumulated offset, deg/(m step)
+  double max_heading_offset_deg = 30.0;  // the wanted heading stays this close to the course
+};
+
+// Throws BadInput (one line) for a negative or non-finite gain or an offset outside (0, 90].
+void validate(const SteeringParams& params);
+
+// The line to keep: a point on it and its heading, set when the reflex starts (where the robot
+// was walking), and the integral of the offset from it.
+struct SteeringState {
+  sim::Pose2 course;
+  double offset_integral_m_steps = 0.0;
+  double last_cut = 0.0;  // swing cut of the last step, 0..1, + = right side cut (turn right)
+};
+
+SteeringState start_steering(const sim::Pose2& course);
+
+// One reflex step: reads the pose, returns the drive inputs with turn_left / turn_right set.
+neural::DriveInputs steer(const SteeringParams& params, SteeringState& state, const sim::Pose2& now,
+                          neural::DriveInputs drive);
+
+}  // namespace multicpg::learning

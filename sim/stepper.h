@@ -1,0 +1,90 @@
+// The one stepping loop (issue 8): a simulated robot started as it should be, its faults applied
+// on schedule, every step recorded and shown to an observer. walk, the tunnel, learning, films,
+// the viewer and the Python API all step through it, so they agree on how a run starts and what
+// happened when.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "sim/deviation.h"
+#include "sim/events.h"
+#include "sim/sim.h"
+#include "sim/walk_record.h"
+
+namespace multicpg::sim {
+
+// Controller steps that lock the CPGs (p = 4 locks exactly at step 737, neural::lock_steps) and
+// fill the delay lines (126 steps at most) before the robot moves. A fresh controller's empty
+// delay lines move the right legs alone for the first tau_L = 90 steps and swerve the robot
+// about 26 deg left, and p = 4 slips phase until step 737; a warmed-up controller starts the
+// robot in its gait, as the paper's robot was walking before anything failed.
+inline constexpr long kControllerWarmup = 1000;
+
+// How a run starts.
+struct StartSpec {
+  std::vector<int> periods;  // one per leg; empty = every leg 4. Unequal periods free the clients
+  // Controller steps run alone before the physics starts; 0 = a cold controller (--cold).
+  long warmup = kControllerWarmup;
+};
+
+// Sees every step and every event of a run; the default does nothing.
+class Observer {
+ public:
+  virtual ~Observer() = default;
+  virtual void on_step(const SimModel& /*model*/, const SimState& /*state*/) {}
+  virtual void on_event(const SimModel& /*model*/, const SimState& /*state*/,
+                        const Event& /*event*/) {}
+};
+
+class Stepper {
+ public:
+  // Makes the start state: make_sim_state, `start.periods`, the faults due at step 0, then the
+  // warm-up (so a leg failed from the start is already still while the controller warms up).
+  // `observer` and `record` may be null and must outlive the stepper.
+  Stepper(const SimModel& model, const StartSpec& start, FaultTimeline faults = {},
+          Observer* observer = nullptr, WalkRecord* record = nullptr, bool record_joints = true);
+
+  // Applies the faults due before this step, then one controller step with its physics
+  // (sim_step), records it and shows it to the observer.
+  void step();
+  void steps(long n);
+  // Tells the observer (the learner's detections, trials and episodes).
+  void emit(Event event);
+  // Called before every step, after the faults: sets the controller's drive inputs from the
+  // sensors (the steering reflex of learning/steering.h). Empty = forward walking as it is.
+  void set_before_step(std::function<void(Stepper&)> hook) { before_step_ = std::move(hook); }
+
+  const SimModel& model() const { return model_; }
+  SimState& state() { return state_; }
+  const SimState& state() const { return state_; }
+  long step_count() const {
+    return walked_;
+  }  // controller steps since the start (warm-up excluded)
+  Pose2 pose() const;
+  // Legs failed now.
+  const std::vector<bool>& failed() const { return failed_; }
+  // Faults applied by the last step() (empty on most steps).
+  const std::vector<Fault>& last_faults() const { return last_faults_; }
+  // The faults still to come.
+  bool faults_pending() const { return next_fault_ < faults_.size(); }
+  long last_fault_step() const { return faults_.empty() ? 0 : faults_.back().step; }
+
+ private:
+  void apply_due_faults();
+
+  const SimModel& model_;
+  SimState state_;
+  FaultTimeline faults_;
+  std::size_t next_fault_ = 0;
+  std::vector<bool> failed_;
+  std::vector<Fault> last_faults_;
+  std::function<void(Stepper&)> before_step_;
+  Observer* observer_;
+  WalkRecord* record_;
+  bool record_joints_;
+  long walked_ = 0;
+};
+
+}  // namespace multicpg::sim
