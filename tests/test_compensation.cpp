@@ -263,7 +263,9 @@ TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
   const neural::ControllerState& c = walker.controller();
   for (std::size_t i = 0; i < c.legs.size(); ++i) {
     EXPECT_EQ(c.legs[i].cpg.period, c.legs[0].cpg.period) << "leg " << i;
-    if (i > 0) EXPECT_TRUE(neural::follows_master(c, i)) << "leg " << i;
+    if (i > 0) {
+      EXPECT_TRUE(neural::follows_master(c, i)) << "leg " << i;
+    }
   }
   for (const sim::WindowMeasure& m : r.final_windows) EXPECT_LT(std::abs(m.yaw_deg), 1e-9);
 }
