@@ -10,7 +10,10 @@
 #include <array>
 #include <cmath>
 #include <ctime>
+#include <memory>
 #include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/walk.h"
@@ -107,8 +110,8 @@ BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
 // tolerance 1e-8, every geom colliding with every other but its parent). A box trunk of our
 // trunk's size (0.31 x 0.07 x 0.065 m), six legs at x = 0.13, 0, -0.13 m, each a vertical-axis
 // hip, a knee and an ankle about the leg's long axis (3 DOF per leg, 18 + the free joint = 24
-// DOF), capsule segments of our coxa, femur and tibia lengths, one position servo per joint. It
-// walks a sinusoidal tripod gait (1 Hz, hip +-0.35 rad, knee lifted 0.4 rad in swing), standing
+// DOF), capsule segments about as long as ours, one position servo per joint. It
+// walks a sinusoidal tripod gait (1 Hz, hip +-0.35 rad, knee lifted 0.8 rad in swing), standing
 // on about three feet like our hexapod.
 constexpr const char* kPlainHexapodXml = R"(
 <mujoco model="plain-hexapod">
@@ -132,22 +135,30 @@ constexpr const char* kPlainHexapodXml = R"(
 </mujoco>
 )";
 
+// Plain hexapod leg geometry (m): roughly our hexapod's (docs/robots.md "Geometry").
+constexpr double kPlainRootY = 0.035;        // trunk side
+constexpr double kPlainCoxaLength = 0.05;    // our shoulder + coxa reach 0.08 from the centre
+constexpr double kPlainCoxaRadius = 0.0172;  // our coxa
+constexpr double kPlainFemurLength = 0.06;   // our femur
+constexpr double kPlainTibiaOut = 0.02;      // the tibia points down and a little out,
+constexpr double kPlainTibiaDown = 0.1;      // about our tibia + foot length
+constexpr std::array<double, 3> kPlainLegX{0.13, 0.0, -0.13};  // front, middle, hind
+
 // One leg of the plain hexapod: side +1 = left, -1 = right; axes mirrored so that positive
 // angles are forward (hip) and up (knee, ankle) on both sides.
 std::string plain_leg(const std::string& name, double x, double side) {
   const auto n = [](double v) { return std::to_string(v); };
-  const std::string out = n(side * 0.05);
-  const std::string femur = n(side * 0.06);
+  const std::string out = n(side * kPlainCoxaLength);
+  const std::string femur = n(side * kPlainFemurLength);
   const std::string lift = n(side) + " 0 0";
-  return "<body name=\"" + name + "\" pos=\"" + n(x) + " " + n(side * 0.035) + " 0\">" +
+  return "<body name=\"" + name + "\" pos=\"" + n(x) + " " + n(side * kPlainRootY) + " 0\">" +
          "<joint name=\"" + name + "_hip\" axis=\"0 0 " + n(-side) + "\" range=\"-0.6 0.6\"/>" +
-         "<geom fromto=\"0 0 0 0 " + out + " 0\" size=\"0.0172\"/>" +  //
-         "<body pos=\"0 " + out + " 0\">" +                            //
-         "<joint name=\"" + name + "_knee\" axis=\"" + lift + "\" range=\"-1.3 1.3\"/>" +
-         "<geom fromto=\"0 0 0 0 " + femur + " 0\"/>" +  //
-         "<body pos=\"0 " + femur + " 0\">" +            //
-         "<joint name=\"" + name + "_ankle\" axis=\"" + lift + "\" range=\"-1.3 1.3\"/>" +
-         "<geom fromto=\"0 0 0 0 " + n(side * 0.02) + " -0.1\"/></body></body></body>";
+         "<geom fromto=\"0 0 0 0 " + out + " 0\" size=\"" + n(kPlainCoxaRadius) + "\"/>" +
+         "<body pos=\"0 " + out + " 0\">" + "<joint name=\"" + name + "_knee\" axis=\"" + lift +
+         "\" range=\"-1.3 1.3\"/>" + "<geom fromto=\"0 0 0 0 " + femur + " 0\"/>" +
+         "<body pos=\"0 " + femur + " 0\">" + "<joint name=\"" + name + "_ankle\" axis=\"" + lift +
+         "\" range=\"-1.3 1.3\"/>" + "<geom fromto=\"0 0 0 0 " + n(side * kPlainTibiaOut) + " " +
+         n(-kPlainTibiaDown) + "\"/></body></body></body>";
 }
 
 struct PlainHexapod {
@@ -159,10 +170,9 @@ const PlainHexapod& plain_hexapod() {
   static const PlainHexapod plain = [] {
     const std::array<std::pair<const char*, double>, 6> legs{
         {{"R1", -1}, {"R2", -1}, {"R3", -1}, {"L1", 1}, {"L2", 1}, {"L3", 1}}};
-    const std::array<double, 3> xs{0.13, 0.0, -0.13};
     std::string body, actuators;
     for (std::size_t i = 0; i < legs.size(); ++i) {
-      body += plain_leg(legs[i].first, xs[i % 3], legs[i].second);
+      body += plain_leg(legs[i].first, kPlainLegX[i % 3], legs[i].second);
       for (const char* joint : {"_hip", "_knee", "_ankle"}) {
         const std::string name = std::string(legs[i].first) + joint;
         actuators += "<position name=\"" + name + "\" joint=\"" + name + "\"/>";

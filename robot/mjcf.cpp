@@ -20,12 +20,12 @@ constexpr const char* kCone = "elliptic";
 // Torsional and rolling friction: MuJoCo's defaults (they only act with condim > 3, unused).
 constexpr double kTorsionalFriction = 0.005;
 constexpr double kRollingFriction = 0.0001;
-// Contacts (issue 12; docs/robots.md "Contacts"). The ground touches only the trunk boxes and the
-// lower legs (tibia and foot): explicit contact pairs, which skip MuJoCo's broad phase. In 90 walks
-// (every robot, every period, up to three disabled legs) only feet and trunk boxes touched it.
-// The walls of the tunnel may meet any part, so they collide dynamically: the world class (walls)
-// with the robot class, the robot's parts not with each other (their TC windows keep neighbouring
-// legs apart). The ground is in neither class.
+// Contacts (issue 12; docs/robots.md "Contacts and materials"). The ground touches only the trunk
+// boxes and the lower legs (tibia and foot): explicit contact pairs, which skip MuJoCo's broad
+// phase. In 90 walks (every robot, every period, up to three disabled legs) only feet and trunk
+// boxes touched it. The walls of the tunnel may meet any part, so they collide dynamically: the
+// world class (walls) with the robot class, the robot's parts not with each other (their TC windows
+// keep neighbouring legs apart). The ground is in neither class.
 constexpr const char* kFlatCollision = "predefined";  // the pairs alone
 constexpr const char* kTunnelCollision = "all";       // the pairs and the dynamic wall contacts
 constexpr int kWorldClass = 1;
@@ -33,7 +33,7 @@ constexpr int kRobotClass = 2;
 constexpr const char* kGroundLegParts[] = {"_tibia", "_foot"};
 // Sparse constraint Jacobians: each row touches one leg's chain and the trunk, a third of the 31
 // (hexapod) degrees of freedom; MuJoCo's "auto" picks dense below 60. Same solution, ~15 % less
-// work per step (docs/benchmarks.md).
+// work per step (docs/robots.md "Cost of the physics").
 constexpr const char* kJacobian = "sparse";
 // Start clearance between the lowest foot and the ground, so the robot settles onto its feet.
 constexpr double kStartClearance = 0.001;  // m
