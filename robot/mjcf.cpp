@@ -22,7 +22,7 @@ constexpr double kTorsionalFriction = 0.005;
 constexpr double kRollingFriction = 0.0001;
 // Contacts (issue 12; docs/robots.md "Contacts and materials"). The ground touches only the trunk
 // boxes and the lower legs (tibia and foot): explicit contact pairs, which skip MuJoCo's broad
-// phase. In 90 walks (every robot, every period, up to three disabled legs) only feet and trunk
+// phase. In 102 walks (every robot, every period, up to three disabled legs) only feet and trunk
 // boxes touched it. The walls of the tunnel may meet any part, so they collide dynamically: the
 // world class (walls) with the robot class, the robot's parts not with each other (their TC windows
 // keep neighbouring legs apart). The ground is in neither class.
