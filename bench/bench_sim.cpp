@@ -1,11 +1,19 @@
 // A 400-step hexapod trial (SPEC §6 window) in MuJoCo, against bare mj_step on the same model
-// for the same simulated time: what the controller, servo law, sensing and checks cost.
+// for the same simulated time: what the controller, servo law, sensing and checks cost; and
+// both against a plain MuJoCo hexapod (issue 12): what our model and solver settings cost.
 //
 // The bare run replays, physics step by physics step, the ctrl values the trial computed, so it
 // follows the identical trajectory with the same contacts; only our work is missing.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <ctime>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/walk.h"
@@ -94,5 +102,171 @@ void BM_BareMjStep(benchmark::State& state) {
   set_rate_counters(state);
 }
 BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
+
+// --- Side by side with a plain MuJoCo hexapod (issue 12) ---
+//
+// The plain hexapod: what a MuJoCo user would write for a robot of our size, with every MuJoCo
+// default (semi-implicit Euler at 5 ms, pyramidal cones, condim 3, Newton solver, 100 iterations,
+// tolerance 1e-8, every geom colliding with every other but its parent). A box trunk of our
+// trunk's size (0.31 x 0.07 x 0.065 m), six legs at x = 0.13, 0, -0.13 m, each a vertical-axis
+// hip, a knee and an ankle about the leg's long axis (3 DOF per leg, 18 + the free joint = 24
+// DOF), capsule segments about as long as ours, one position servo per joint. It
+// walks a sinusoidal tripod gait (1 Hz, hip +-0.35 rad, knee lifted 0.8 rad in swing), standing
+// on about three feet like our hexapod.
+constexpr const char* kPlainHexapodXml = R"(
+<mujoco model="plain-hexapod">
+  <option timestep="0.005"/>
+  <default>
+    <joint type="hinge" limited="true" damping="0.5" armature="0.01"/>
+    <geom type="capsule" size="0.013"/>
+    <position kp="40" ctrllimited="true" ctrlrange="-1.3 1.3"/>
+  </default>
+  <worldbody>
+    <geom name="floor" type="plane" size="0 0 1"/>
+    <body name="trunk" pos="0 0 0.14">
+      <freejoint/>
+      <geom type="box" size="0.155 0.035 0.0325" mass="2.5"/>
+      LEGS
+    </body>
+  </worldbody>
+  <actuator>
+    ACTUATORS
+  </actuator>
+</mujoco>
+)";
+
+// Plain hexapod leg geometry (m): roughly our hexapod's (docs/robots.md "Geometry").
+constexpr double kPlainRootY = 0.035;        // trunk side
+constexpr double kPlainCoxaLength = 0.05;    // our shoulder + coxa reach 0.08 from the centre
+constexpr double kPlainCoxaRadius = 0.0172;  // our coxa
+constexpr double kPlainFemurLength = 0.06;   // our femur
+constexpr double kPlainTibiaOut = 0.02;      // the tibia points down and a little out,
+constexpr double kPlainTibiaDown = 0.1;      // about our tibia + foot length
+constexpr std::array<double, 3> kPlainLegX{0.13, 0.0, -0.13};  // front, middle, hind
+
+// One leg of the plain hexapod: side +1 = left, -1 = right; axes mirrored so that positive
+// angles are forward (hip) and up (knee, ankle) on both sides.
+std::string plain_leg(const std::string& name, double x, double side) {
+  const auto n = [](double v) { return std::to_string(v); };
+  const std::string out = n(side * kPlainCoxaLength);
+  const std::string femur = n(side * kPlainFemurLength);
+  const std::string lift = n(side) + " 0 0";
+  return "<body name=\"" + name + "\" pos=\"" + n(x) + " " + n(side * kPlainRootY) + " 0\">" +
+         "<joint name=\"" + name + "_hip\" axis=\"0 0 " + n(-side) + "\" range=\"-0.6 0.6\"/>" +
+         "<geom fromto=\"0 0 0 0 " + out + " 0\" size=\"" + n(kPlainCoxaRadius) + "\"/>" +
+         "<body pos=\"0 " + out + " 0\">" + "<joint name=\"" + name + "_knee\" axis=\"" + lift +
+         "\" range=\"-1.3 1.3\"/>" + "<geom fromto=\"0 0 0 0 " + femur + " 0\"/>" +
+         "<body pos=\"0 " + femur + " 0\">" + "<joint name=\"" + name + "_ankle\" axis=\"" + lift +
+         "\" range=\"-1.3 1.3\"/>" + "<geom fromto=\"0 0 0 0 " + n(side * kPlainTibiaOut) + " " +
+         n(-kPlainTibiaDown) + "\"/></body></body></body>";
+}
+
+struct PlainHexapod {
+  std::unique_ptr<mjModel, sim::MjModelDeleter> model;
+  std::array<double, 6> phase;  // tripods R1 L2 R3 and L1 R2 L3 half a cycle apart
+};
+
+const PlainHexapod& plain_hexapod() {
+  static const PlainHexapod plain = [] {
+    const std::array<std::pair<const char*, double>, 6> legs{
+        {{"R1", -1}, {"R2", -1}, {"R3", -1}, {"L1", 1}, {"L2", 1}, {"L3", 1}}};
+    std::string body, actuators;
+    for (std::size_t i = 0; i < legs.size(); ++i) {
+      body += plain_leg(legs[i].first, kPlainLegX[i % 3], legs[i].second);
+      for (const char* joint : {"_hip", "_knee", "_ankle"}) {
+        const std::string name = std::string(legs[i].first) + joint;
+        actuators += "<position name=\"" + name + "\" joint=\"" + name + "\"/>";
+      }
+    }
+    std::string xml = kPlainHexapodXml;
+    xml.replace(xml.find("LEGS"), 4, body);
+    xml.replace(xml.find("ACTUATORS"), 9, actuators);
+    return PlainHexapod{sim::compile_mjcf(xml),
+                        {0.0, std::numbers::pi, 0.0, std::numbers::pi, 0.0, std::numbers::pi}};
+  }();
+  return plain;
+}
+
+// Tripod gait targets of the plain hexapod at time t: the hip swings forward while the knee
+// lifts, and pushes back on the ground in stance; the ankle holds the tibia down.
+void plain_gait(const PlainHexapod& plain, mjData* d) {
+  constexpr double kFrequency = 1.0;      // Hz
+  constexpr double kHipAmplitude = 0.35;  // rad
+  constexpr double kKneeLift = 0.8;       // rad
+  for (std::size_t leg = 0; leg < plain.phase.size(); ++leg) {
+    const double theta = 2.0 * std::numbers::pi * kFrequency * d->time + plain.phase[leg];
+    d->ctrl[3 * leg] = kHipAmplitude * std::sin(theta);
+    d->ctrl[3 * leg + 1] = kKneeLift * std::max(0.0, std::cos(theta));
+    d->ctrl[3 * leg + 2] = 0.0;
+  }
+}
+
+double thread_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Each iteration runs, one after the other on this thread, (1) our 400-step trial (sim_step x
+// 400 from the walk's start state), (2) bare mj_step replaying that trial's ctrl on our model,
+// (3) the plain hexapod for the same simulated time. Times are this thread's CPU time, so other
+// processes on the core hurt all three alike; the ratios are the result.
+void BM_SideBySide(benchmark::State& state) {
+  const sim::SimModel& model = hexapod();
+  const mjModel* m = model.mj.get();
+  const TrialControls trial = trial_controls();
+  const long physics_steps = kTrialSteps * model.substeps;
+  const mjModel* pm = plain_hexapod().model.get();
+  const double simulated = kTrialSteps * model.control_dt;
+  const auto plain_steps = std::lround(simulated / pm->opt.timestep);
+  mjData* d = mj_makeData(m);
+  mjData* pd = mj_makeData(pm);
+  double ours = 0.0, bare = 0.0, plain = 0.0;
+  long our_contacts = 0, plain_contacts = 0;
+  for (auto _ : state) {
+    sim::SimState s = sim::start_walk_state(model, {});
+    const double t0 = thread_seconds();
+    for (long k = 0; k < kTrialSteps; ++k) sim::sim_step(model, s);
+    const double t1 = thread_seconds();
+    ours += t1 - t0;
+
+    mj_resetDataKeyframe(m, d, model.start_key);
+    mj_forward(m, d);
+    const double t2 = thread_seconds();
+    for (long k = 0; k < physics_steps; ++k) {
+      std::copy_n(trial.ctrl.data() + k * m->nu, m->nu, d->ctrl);
+      mj_step(m, d);
+      our_contacts += d->ncon;
+    }
+    const double t3 = thread_seconds();
+    bare += t3 - t2;
+
+    mj_resetData(pm, pd);
+    mj_forward(pm, pd);
+    const double t4 = thread_seconds();
+    for (long k = 0; k < plain_steps; ++k) {
+      plain_gait(plain_hexapod(), pd);
+      mj_step(pm, pd);
+      plain_contacts += pd->ncon;
+    }
+    const double t5 = thread_seconds();
+    plain += t5 - t4;
+    benchmark::DoNotOptimize(s.data->qpos[0]);
+    benchmark::DoNotOptimize(pd->qpos[0]);
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["trial_ms"] = 1e3 * ours / n;
+  state.counters["bare_ms"] = 1e3 * bare / n;
+  state.counters["plain_ms"] = 1e3 * plain / n;
+  state.counters["trial/plain"] = ours / plain;
+  state.counters["bare/plain"] = bare / plain;
+  state.counters["trial/bare"] = ours / bare;
+  state.counters["contacts"] = static_cast<double>(our_contacts) / (n * physics_steps);
+  state.counters["plain_contacts"] = static_cast<double>(plain_contacts) / (n * plain_steps);
+  state.counters["plain_forward_m"] = pd->qpos[0];
+  mj_deleteData(pd);
+  mj_deleteData(d);
+}
+BENCHMARK(BM_SideBySide)->Unit(benchmark::kMillisecond);
 
 }  // namespace

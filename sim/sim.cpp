@@ -81,25 +81,6 @@ double resolved_physics_dt(const SimOptions& options) {
   return options.physics_dt == 0.0 ? default_physics_dt(options.control_dt) : options.physics_dt;
 }
 
-// Compiles MJCF text through MuJoCo's virtual file system. The XML parser is not documented as
-// thread-safe, so loads are serialised.
-mjModel* compile(const std::string& xml) {
-  static std::mutex mutex;
-  const std::lock_guard<std::mutex> lock(mutex);
-  constexpr const char* kFile = "multicpg.xml";
-  auto vfs = std::make_unique<mjVFS>();
-  mj_defaultVFS(vfs.get());
-  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0) {
-    throw RuntimeFailure("MuJoCo: cannot make the in-memory model file");
-  }
-  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), kFile)], xml.data(), xml.size());
-  std::array<char, 1000> error{};
-  mjModel* m = mj_loadXML(kFile, vfs.get(), error.data(), static_cast<int>(error.size()));
-  mj_deleteVFS(vfs.get());
-  if (m == nullptr) throw RuntimeFailure(std::string("MuJoCo rejected the model: ") + error.data());
-  return m;
-}
-
 int id_of(const mjModel* m, mjtObj type, const std::string& name) {
   const int id = mj_name2id(m, type, name.c_str());
   if (id < 0) throw RuntimeFailure("MuJoCo model has no '" + name + "'");
@@ -154,6 +135,24 @@ void check_physics(const SimModel& model, const SimState& state, double previous
 
 }  // namespace
 
+// The XML parser is not documented as thread-safe, so loads are serialised.
+std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml) {
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  constexpr const char* kFile = "multicpg.xml";
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0) {
+    throw RuntimeFailure("MuJoCo: cannot make the in-memory model file");
+  }
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), kFile)], xml.data(), xml.size());
+  std::array<char, 1000> error{};
+  mjModel* m = mj_loadXML(kFile, vfs.get(), error.data(), static_cast<int>(error.size()));
+  mj_deleteVFS(vfs.get());
+  if (m == nullptr) throw RuntimeFailure(std::string("MuJoCo rejected the model: ") + error.data());
+  return std::unique_ptr<mjModel, MjModelDeleter>(m);
+}
+
 double default_physics_dt(double control_dt) {
   if (!(control_dt > 0.0)) throw BadInput("--control-dt must be positive");
   // Tolerance so that 0.037 / 0.004625 = 8 exactly is not rounded up to 9.
@@ -203,7 +202,7 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   model.start_pose = start_pose(model.controller);
   model.xml =
       robot::make_mjcf(*model.body, mjcf_options(options, model.physics_dt, model.start_pose));
-  model.mj.reset(compile(model.xml));
+  model.mj = compile_mjcf(model.xml);
   const mjModel* m = model.mj.get();
 
   const robot::RobotBody& body = *model.body;

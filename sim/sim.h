@@ -91,6 +91,10 @@ struct SimModel {
   int start_key = -1;
 };
 
+// Compiles MJCF text (through MuJoCo's in-memory file system). Throws RuntimeFailure if MuJoCo
+// rejects it.
+std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml);
+
 // Builds the MJCF from robot::robot_body(kind), compiles it and indexes it. Throws BadInput for
 // bad time steps or servo gain, RuntimeFailure if MuJoCo rejects the model.
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options = {});

@@ -214,6 +214,30 @@ TEST(Model, TunnelHasWalls) {
             0);
 }
 
+// The ground meets only its contact pairs (robot/mjcf.cpp), the walls any part of the robot: a
+// femur pushed into the right wall touches it.
+TEST(Model, WallsTouchAnyPartOfTheRobot) {
+  sim::SimOptions options;
+  options.scene.tunnel = true;
+  const sim::SimModel model = sim::make_sim_model(RobotKind::hexapod, options);
+  const mjModel* m = model.mj.get();
+  sim::SimState state = sim::make_sim_state(model);
+  mjData* d = state.data.get();
+  const int femur = mj_name2id(m, mjOBJ_GEOM, "R1_femur");
+  const int wall = mj_name2id(m, mjOBJ_GEOM, "wall_right");
+  ASSERT_GE(femur, 0);
+  const double wall_face = m->geom_pos[3 * wall + 1] + m->geom_size[3 * wall + 1];
+  d->qpos[model.root_qpos] = 1.0;  // inside the tunnel
+  d->qpos[model.root_qpos + 1] += wall_face - d->geom_xpos[3 * femur + 1];
+  mj_forward(m, d);
+  bool touched = false;
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    touched |= (c.geom1 == wall && c.geom2 == femur) || (c.geom1 == femur && c.geom2 == wall);
+  }
+  EXPECT_TRUE(touched);
+}
+
 TEST(CliModel, PrintsMjcfThatMujocoCompiles) {
   const std::string dir = multicpg::testing::make_temp_dir("model-");
   for (const std::string robot : {"hexapod", "quadruped", "octopod"}) {
