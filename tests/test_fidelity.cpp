@@ -38,9 +38,8 @@ const sim::SimModel& hexapod() {
 
 sim::WalkResult walk(int period, std::vector<std::size_t> disabled = {}) {
   sim::WalkSpec spec;
-  spec.periods.assign(hexapod().legs.size(), period);
-  spec.disabled = std::move(disabled);
-  spec.controller_warmup = sim::kControllerWarmup;
+  spec.start.periods.assign(hexapod().legs.size(), period);
+  spec.faults = sim::fail_at(disabled, 0);
   spec.settle = kSettle;
   spec.steps = kSteps;
   spec.record = false;
