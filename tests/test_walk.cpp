@@ -74,9 +74,10 @@ TEST(Walk, SlowerGaitsWalkForwardSlower) {
 }
 
 TEST(Walk, PeriodOneStands) {
-  // From the start the legs move into the p = 1 posture and the trunk settles; then it stays.
+  // From the start the legs move into the p = 1 posture and the trunk settles (a warmed-up
+  // controller commands the posture at once, so the trunk shifts by about 2.3 cm); then it stays.
   const sim::WalkResult r = walk(RobotKind::hexapod, 1, {}, 0, 800);
-  EXPECT_LT(r.distance_m, 0.02);
+  EXPECT_LT(r.distance_m, 0.03);
   const sim::WalkResult settled = walk(RobotKind::hexapod, 1, {}, 200, 600);
   EXPECT_LT(settled.distance_m, 0.002);
 }
