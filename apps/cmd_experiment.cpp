@@ -22,6 +22,7 @@ struct ExperimentOptions {
   std::optional<int> jobs;  // empty = every core
   std::string out;
   LearningFlags learning;
+  long check_windows = 0;
   SimFlags sim;
 };
 
@@ -40,6 +41,10 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
   // Every leg set is overwritten per task; the validation needs one working leg set.
   spec.base =
       compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
+  if (o.check_windows < 0 || o.check_windows > 1000) {
+    throw BadInput("--check-windows must be in 0..1000, got " + std::to_string(o.check_windows));
+  }
+  spec.check_windows = o.check_windows;
   spec.sim = sim_options(o.sim);
   ensure_writable_dir(spec.out);
   return spec;
@@ -53,11 +58,17 @@ void print_table(const experiments::ExperimentTable& t, const std::string& out) 
 
 void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with_beta) {
   o.runs = default_runs;
+  // These are the paper's experiments: its algorithm unless --mode robust is asked for.
+  o.learning.mode = "paper";
   cmd.add_option("--runs", o.runs, "learning runs per scenario")->capture_default_str();
   cmd.add_option("--out", o.out, "directory for the runs and tables (resumes what is there)")
       ->required();
   cmd.add_option("--jobs", o.jobs, "parallel runs (default: every core)");
   add_learning_flags(cmd, o.learning, with_beta);
+  cmd.add_option("--check-windows", o.check_windows,
+                 "windows walked after each run with its final controller; the run files say "
+                 "whether every one held (holds_after)")
+      ->capture_default_str();
   add_sim_flags(cmd, o.sim);
 }
 

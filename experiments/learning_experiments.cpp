@@ -19,6 +19,7 @@ nlohmann::json arguments(const ExperimentSpec& spec, const std::string& experime
           {"runs", spec.runs},
           {"seed", spec.seed},
           {"learning", learning::to_json(spec.base, robot::morphology(spec.kind))},
+          {"check_windows", spec.check_windows},
           {"control_dt", spec.sim.control_dt},
           {"physics_dt", spec.sim.physics_dt},
           {"servo_gain", spec.sim.servo_gain}};
@@ -26,7 +27,7 @@ nlohmann::json arguments(const ExperimentSpec& spec, const std::string& experime
 
 // One learning run of a task: its disabled legs, seed and (beta study) beta.
 nlohmann::json run_task(const sim::SimModel& model, const learning::CompensationOptions& base,
-                        const Task& task) {
+                        long check_windows, const Task& task) {
   const robot::Morphology& morph = model.controller.morphology;
   learning::CompensationOptions options = base;
   options.disabled.clear();
@@ -36,8 +37,20 @@ nlohmann::json run_task(const sim::SimModel& model, const learning::Compensation
   }
   if (task.params.contains("beta")) options.annealing.beta = task.params.at("beta").get<double>();
   options.seed = task.seed;
-  const LearningRun run = run_learning(model, options, /*record=*/false);
-  return learning::to_json(run.result, morph, options.disabled);
+  const LearningRun run =
+      run_learning(model, options, /*record=*/false, check_windows * options.window_steps);
+  nlohmann::json out = learning::to_json(run.result, morph, options.disabled);
+  if (check_windows > 0) {
+    nlohmann::json windows = nlohmann::json::array();
+    bool holds = true;
+    for (const sim::WindowMeasure& m : run.after_windows) {
+      windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
+      holds = holds && m.worst_deg() <= options.annealing.threshold_deg;
+    }
+    out["after_windows"] = windows;
+    out["holds_after"] = holds;
+  }
+  return out;
 }
 
 ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string& experiment,
@@ -50,7 +63,7 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string
   validate(runner);
   const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
   const RunnerOutcome outcome = run_tasks(
-      tasks, [&](const Task& task) { return run_task(model, spec.base, task); }, runner);
+      tasks, [&](const Task& task) { return run_task(model, spec.base, spec.check_windows, task); }, runner);
 
   ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
                         summarize(model.controller.morphology, tasks, outcome.results)};

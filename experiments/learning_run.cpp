@@ -1,5 +1,7 @@
 #include "experiments/learning_run.h"
 
+#include <algorithm>
+
 namespace multicpg::experiments {
 namespace {
 
@@ -48,7 +50,15 @@ LearningRun run_learning(const sim::SimModel& model, const learning::Compensatio
       c.drive = learning::steer(options.steering_params, *run.result.steering, s.pose(), c.drive);
     });
   }
-  stepper.steps(after_steps);
+  for (long walked = 0; walked < after_steps;) {
+    const long n = std::min(options.window_steps, after_steps - walked);
+    const sim::Pose2 start = stepper.pose();
+    stepper.steps(n);
+    if (n == options.window_steps) {
+      run.after_windows.push_back(sim::measure_window(start, stepper.pose()));
+    }
+    walked += n;
+  }
   run.trial_end_steps = std::move(ends.ends);
   run.final_state = std::move(stepper.state());
   return run;

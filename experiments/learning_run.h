@@ -39,7 +39,10 @@ struct LearningRun {
   sim::WalkRecord record;             // every step, when recorded (row 0 = the start)
   std::vector<long> trial_end_steps;  // step at which each trial's measured window ended
   long learning_end_step = 0;         // steps walked when learning stopped
-  sim::SimState final_state;          // the robot at the end
+  // Each complete window of the steps walked after learning (issue 8: does the final
+  // controller hold?), measured as robust mode does.
+  std::vector<sim::WindowMeasure> after_windows;
+  sim::SimState final_state;  // the robot at the end
 };
 
 // Runs compensation from a healthy, synchronised robot; afterwards walks `after_steps` more

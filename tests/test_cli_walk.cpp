@@ -58,7 +58,8 @@ TEST(CliWalk, SummaryNamesTheRun) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("hexapod"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R1 4  R2 4  R3 4  L1 4  L2 4  L3 5"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("disabled: L2 from step 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("faults: L2 fail at step 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(warmed-up controller)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("speed"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("steps      0-20"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("steps     20-40"), std::string::npos) << r.out;
@@ -70,10 +71,13 @@ TEST(CliWalk, JsonHasTheMeasurements) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   for (const char* key : {"distance_m", "speed_m_s", "window_deviations_deg", "final_yaw_deg",
-                          "forward_m", "lateral_m", "periods", "disabled", "physics_dt_s"}) {
+                          "forward_m", "lateral_m", "periods", "faults", "warmup", "windows",
+                          "physics_dt_s"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["window_deviations_deg"].size(), 3u);
+  EXPECT_EQ(j["windows"].size(), 3u);
+  EXPECT_EQ(j["warmup"], 1000);  // a running controller unless --cold
   EXPECT_EQ(j["robot"], "quadruped");
   EXPECT_EQ(j["periods"]["L2"], 4);
   EXPECT_DOUBLE_EQ(j["physics_dt_s"].get<double>(), 0.037 / 8);

@@ -18,8 +18,10 @@ const sim::SimModel& hexapod() {
   return model;
 }
 
+// The paper's algorithm (issue 4's claims); robust mode is tested through the CLI.
 learning::CompensationOptions r1_disabled(std::uint64_t seed) {
   learning::CompensationOptions o;
+  o.mode = learning::Mode::paper;
   o.disabled = {robot::leg_index(hexapod().controller.morphology, "R1")};
   o.seed = seed;
   return o;
