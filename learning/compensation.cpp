@@ -51,7 +51,9 @@ class Walk {
       throw RuntimeFailure("the walker's pose is not a finite number");
     }
     effort_ = cut_sum_ / static_cast<double>(options_.window_steps);
-    return m;
+    sim::WindowMeasure out = m;
+    out.steering_effort = effort_;
+    return out;
   }
 
   long walked() const { return walker_.step_count() - start_; }
@@ -340,15 +342,15 @@ class RobustRun {
         clean = 0;
         result_.final_windows.clear();
       }
-      if (m.worst_deg() > params_.threshold_deg && faults == 0 && options_.learn_periods &&
+      if (error(m) > params_.threshold_deg && faults == 0 && options_.learn_periods &&
           static_cast<int>(result_.episodes.size()) < options_.max_episodes) {
-        episode(m.worst_deg());
+        episode(error(m));
         clean = 0;
         result_.final_windows.clear();
         continue;
       }
       result_.final_windows.push_back(m);
-      if (m.worst_deg() <= params_.threshold_deg) {
+      if (error(m) <= params_.threshold_deg) {
         ++clean;
       } else if (faults == 0) {
         // Steering alone, or no episode left: the run ends once the last fault is past and
@@ -363,6 +365,17 @@ class RobustRun {
   }
 
  private:
+  // What robust mode compares with the threshold: the worse of yaw and path angle, and, with
+  // the reflex, its effort scaled so that max_effort reads as the threshold.
+  double error(const sim::WindowMeasure& m) const {
+    double e = m.worst_deg();
+    if (options_.steering == Steering::reflex) {
+      e = std::max(e, params_.threshold_deg * m.steering_effort /
+                          options_.steering_params.max_effort);
+    }
+    return e;
+  }
+
   long settle_for(const Periods& periods) const {
     return options_.settle_steps.value_or(locked_settle_steps(model_, periods));
   }
@@ -392,7 +405,7 @@ class RobustRun {
   double judge() {
     double e = 0.0;
     for (int w = 0; w < options_.hold_windows; ++w) {
-      e = std::max(e, walk_.measured_window().worst_deg());
+      e = std::max(e, error(walk_.measured_window()));
       if (e > params_.threshold_deg) break;
     }
     return e;
@@ -467,12 +480,12 @@ class RobustRun {
     result_.steering = walk_.steering();
     const bool held = std::all_of(
         result_.final_windows.begin(), result_.final_windows.end(),
-        [&](const sim::WindowMeasure& m) { return m.worst_deg() <= params_.threshold_deg; });
+        [&](const sim::WindowMeasure& m) { return error(m) <= params_.threshold_deg; });
     if (result_.episodes.empty()) {
       result_.status = held ? "no deviation" : "not converged";
       result_.converged = false;
       if (!result_.final_windows.empty()) {
-        result_.initial_deviation_deg = result_.final_windows.front().worst_deg();
+        result_.initial_deviation_deg = error(result_.final_windows.front());
       }
     } else {
       const Episode& last = result_.episodes.back();
@@ -482,7 +495,7 @@ class RobustRun {
     }
     double worst = 0.0;
     for (const sim::WindowMeasure& m : result_.final_windows)
-      worst = std::max(worst, m.worst_deg());
+      worst = std::max(worst, error(m));
     result_.final_deviation_deg = worst;
   }
 
@@ -510,7 +523,8 @@ nlohmann::json windows_json(const std::vector<sim::WindowMeasure>& windows) {
     out.push_back({{"yaw_deg", m.yaw_deg},
                    {"path_deg", m.path_deg},
                    {"forward_m", m.forward_m},
-                   {"lateral_m", m.lateral_m}});
+                   {"lateral_m", m.lateral_m},
+                   {"steering_effort", m.steering_effort}});
   }
   return out;
 }
@@ -594,7 +608,8 @@ nlohmann::json to_json(const CompensationOptions& o, const robot::Morphology& mo
            {{"heading_gain", sp.heading_gain},
             {"lateral_gain", sp.lateral_gain},
             {"integral_gain", sp.integral_gain},
-            {"max_heading_offset_deg", sp.max_heading_offset_deg}}},
+            {"max_heading_offset_deg", sp.max_heading_offset_deg},
+            {"max_effort", sp.max_effort}}},
           {"seed", o.seed}};
 }
 

@@ -30,6 +30,9 @@ void validate(const SteeringParams& p) {
   if (!(p.max_heading_offset_deg > 0.0 && p.max_heading_offset_deg <= 90.0)) {
     throw BadInput("the steering heading offset must be in (0, 90] deg");
   }
+  if (!(p.max_effort > 0.0 && p.max_effort <= 1.0)) {
+    throw BadInput("the steering max effort must be in (0, 1]");
+  }
 }
 
 SteeringState start_steering(const sim::Pose2& course) {

@@ -21,9 +21,14 @@ struct SteeringParams {
   double lateral_gain = 20.0;   // wanted heading change per metre off the course line, deg/m
   double integral_gain = 0.02;  // and per metre-step of accumulated offset, deg/(m step)
   double max_heading_offset_deg = 30.0;  // the wanted heading stays this close to the course
+  // Robust mode judges a window as failed when the reflex had to cut more than this share of a
+  // side's swing on average: the periods must do most of the compensating, or the robot crawls
+  // (measured: R1+R3+L2 gaits held only at a mean cut of 0.85 walk 0.6 cm/s; docs/learning.md).
+  double max_effort = 0.75;
 };
 
-// Throws BadInput (one line) for a negative or non-finite gain or an offset outside (0, 90].
+// Throws BadInput (one line) for a negative or non-finite gain, an offset outside (0, 90] or a
+// max effort outside (0, 1].
 void validate(const SteeringParams& params);
 
 // The line to keep: a point on it and its heading, set when the reflex starts (where the robot

@@ -17,6 +17,9 @@ struct WindowMeasure {
   double path_deg = 0.0;   // atan2(lateral, forward) of the displacement, + = left (Table 1)
   double forward_m = 0.0;  // displacement along the heading at the window's start
   double lateral_m = 0.0;  // and to its left
+  // Mean swing cut of a steering reflex over the window, 0..1 (0 when none steers;
+  // learning/steering.h).
+  double steering_effort = 0.0;
   // The larger of |yaw_deg| and |path_deg|: what the robust criterion compares with the
   // threshold (a window holds when both are under it).
   double worst_deg() const;
