@@ -12,9 +12,15 @@ namespace {
 
 void check_spec(const SimModel& model, const WalkSpec& spec) {
   const std::size_t legs = model.legs.size();
-  if (spec.steps <= 0) {
-    throw BadInput("--steps must be positive, got " + std::to_string(spec.steps));
-  }
+  const auto check_count = [](long value, const char* flag, long min) {
+    if (value < min || value > kMaxSteps) {
+      throw BadInput(std::string(flag) + " must be in " + std::to_string(min) + ".." +
+                     std::to_string(kMaxSteps) + ", got " + std::to_string(value));
+    }
+  };
+  check_count(spec.steps, "--steps", 1);
+  check_count(spec.settle, "--settle", 0);
+  check_count(spec.controller_warmup, "--warmup", 0);
   if (spec.window <= 0) {
     throw BadInput("--window must be positive, got " + std::to_string(spec.window));
   }
@@ -30,12 +36,6 @@ void check_spec(const SimModel& model, const WalkSpec& spec) {
   unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
   if (unique.size() == legs) {
     throw BadInput("cannot disable every leg of the " + model.controller.morphology.name);
-  }
-  if (spec.controller_warmup < 0) {
-    throw BadInput("--warmup must not be negative, got " + std::to_string(spec.controller_warmup));
-  }
-  if (spec.settle < 0) {
-    throw BadInput("--settle must not be negative, got " + std::to_string(spec.settle));
   }
   const long total = spec.settle + spec.steps;
   if (!spec.disabled.empty() && (spec.disable_at < 0 || spec.disable_at >= total)) {

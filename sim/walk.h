@@ -20,6 +20,11 @@ inline constexpr long kDefaultWindow = 400;
 // gait shows; a warmed-up controller starts the robot in its gait, as a robot already walking.
 inline constexpr long kControllerWarmup = 1000;
 
+// Most controller steps a walk's steps, settle or warmup may ask for: 10^8 (about 43 days of
+// simulated time at 0.037 s, months of computing), so their sum stays far inside a long and a
+// mistyped huge number is refused instead of overflowing.
+inline constexpr long kMaxSteps = 100'000'000;
+
 // Step numbers count controller steps from the start of the run.
 struct WalkSpec {
   std::vector<int> periods;           // one per leg; empty = every leg 4
