@@ -1,11 +1,25 @@
 // multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
 // Exit codes: 0 success, 2 bad input, 1 runtime failure.
+#include <cstdio>
 #include <iostream>
 
 #include "apps/commands.h"
 #include "common/errors.h"
+#include "sim/sim.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+// Flushes standard output: a result that did not reach it (a full disk, a closed pipe) is a
+// failure, not a success. Returns the exit code to use.
+int finish_stdout(int code) {
+  std::cout.flush();
+  const bool ok = static_cast<bool>(std::cout) && std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (ok) return code;
+  std::cerr << "multicpg: cannot write standard output\n";
+  return code == 0 ? 1 : code;
+}
+
+int run(int argc, char** argv) {
   using namespace multicpg;
   CLI::App app{"multicpg: multiple chaotic CPGs with learning for legged locomotion"};
   app.require_subcommand(1);
@@ -35,4 +49,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  multicpg::sim::install_mujoco_handlers();
+  return finish_stdout(run(argc, argv));
 }

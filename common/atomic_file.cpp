@@ -1,44 +1,131 @@
 #include "common/atomic_file.h"
 
+#include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <system_error>
+#include <vector>
 
 #include "common/errors.h"
 
 namespace multicpg {
 namespace fs = std::filesystem;
+namespace {
+
+// Linux's own limit on symlinks followed in one lookup (path_resolution(7)).
+constexpr int kMaxSymlinks = 40;
+constexpr std::string_view kTempMarker = ".tmp";
+// Digits of the largest pid (pid_max is at most 2^22 on Linux, proc(5)), with room to spare.
+constexpr std::size_t kMaxPidDigits = 9;
+
+bool written_in_place(const fs::file_status& s) {
+  return fs::is_fifo(s) || fs::is_character_file(s);
+}
+
+std::string cannot_write(const fs::path& path, const std::string& why) {
+  return "cannot write '" + path.string() + "': " + why;
+}
+
+// fsync(2) of the file or folder `path`; false (errno set) when it fails.
+bool sync_path(const fs::path& path, int flags) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fsync(fd) == 0;
+  const int error = errno;
+  ::close(fd);
+  errno = error;
+  return ok;
+}
+
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+// The pid in a temporary sibling's name "<file>.tmp<pid>", if it is one.
+std::optional<pid_t> temp_owner(const fs::path& path) {
+  const std::string name = path.filename().string();
+  const std::size_t at = name.rfind(kTempMarker);
+  if (at == std::string::npos || at == 0) return std::nullopt;
+  const std::string digits = name.substr(at + kTempMarker.size());
+  if (digits.empty() || digits.size() > kMaxPidDigits ||
+      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    return std::nullopt;
+  }
+  return static_cast<pid_t>(std::stol(digits));
+}
+
+bool process_running(pid_t pid) {
+  return ::kill(pid, 0) == 0 || errno == EPERM;
+}
+
+}  // namespace
 
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
   if (path_.empty()) throw BadInput("empty output path");
-  if (fs::is_directory(path_))
-    throw BadInput("cannot write '" + path_.string() + "': is a directory");
-  tmp_ = path_;
-  tmp_ += ".tmp" + std::to_string(::getpid());
-  out_.open(tmp_, std::ios::out | std::ios::trunc);
-  if (!out_) {
-    throw BadInput("cannot write '" + path_.string() + "': " + std::strerror(errno));
+  target_ = follow_symlinks(path_);
+  std::error_code ec;
+  const fs::file_status status = fs::status(target_, ec);
+  if (fs::is_directory(status)) throw BadInput(cannot_write(path_, "is a directory"));
+  if (written_in_place(status)) {
+    // O_NONBLOCK: opening a FIFO nobody reads fails (ENXIO) instead of waiting for a reader.
+    special_fd_ = ::open(target_.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (special_fd_ < 0) {
+      throw BadInput(cannot_write(
+          path_, errno == ENXIO ? "FIFO has no reader" : std::string(std::strerror(errno))));
+    }
+    const int flags = ::fcntl(special_fd_, F_GETFL);
+    ::fcntl(special_fd_, F_SETFL, flags & ~O_NONBLOCK);  // then block like any other write
+    out_ = &special_;
+    return;
   }
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    throw BadInput(cannot_write(path_, "not a regular file, FIFO or character device"));
+  }
+  tmp_ = temp_sibling(target_);
+  file_.open(tmp_, std::ios::out | std::ios::trunc | std::ios::binary);
+  if (!file_) throw BadInput(cannot_write(path_, std::strerror(errno)));
+  out_ = &file_;
 }
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) {
-    out_.close();
+  if (special_fd_ >= 0) ::close(special_fd_);
+  if (!committed_ && !tmp_.empty()) {
+    file_.close();
     std::error_code ec;
     fs::remove(tmp_, ec);
   }
 }
 
-void AtomicFile::commit() {
-  out_.flush();
-  const bool ok = static_cast<bool>(out_);
-  out_.close();
-  if (!ok) throw RuntimeFailure("writing '" + path_.string() + "' failed");
-  std::error_code ec;
-  fs::rename(tmp_, path_, ec);
-  if (ec) throw RuntimeFailure("cannot move '" + tmp_.string() + "' into place: " + ec.message());
+void AtomicFile::commit(const Verify& verify) {
+  if (special_fd_ >= 0) {
+    const bool ok = write_all(special_fd_, special_.str());
+    const int error = errno;
+    ::close(special_fd_);
+    special_fd_ = -1;
+    if (!ok)
+      throw RuntimeFailure("writing '" + path_.string() + "' failed: " + std::strerror(error));
+    committed_ = true;
+    return;
+  }
+  file_.flush();
+  bool ok = static_cast<bool>(file_);
+  file_.close();
+  ok = ok && !file_.fail();
+  if (!ok) throw RuntimeFailure("writing '" + path_.string() + "' failed: " + std::strerror(errno));
+  if (verify) verify(tmp_);
+  sync_and_rename(tmp_, target_);
   committed_ = true;
 }
 
@@ -48,14 +135,66 @@ void write_file_atomic(const fs::path& path, const std::string& text) {
   file.commit();
 }
 
+fs::path follow_symlinks(const fs::path& path) {
+  fs::path p = path;
+  for (int i = 0; i < kMaxSymlinks; ++i) {
+    std::error_code ec;
+    if (!fs::is_symlink(fs::symlink_status(p, ec))) return p;
+    const fs::path link = fs::read_symlink(p, ec);
+    if (ec) throw BadInput(cannot_write(path, ec.message()));
+    p = link.is_absolute() ? link : p.parent_path() / link;
+  }
+  throw BadInput(cannot_write(path, "too many levels of symbolic links"));
+}
+
+fs::path temp_sibling(const fs::path& path) {
+  fs::path tmp = path;
+  tmp += std::string(kTempMarker) + std::to_string(::getpid());
+  return tmp;
+}
+
+void sync_and_rename(const fs::path& tmp, const fs::path& path) {
+  if (!sync_path(tmp, O_RDONLY)) {
+    throw RuntimeFailure("cannot flush '" + path.string() + "' to disk: " + std::strerror(errno));
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw RuntimeFailure("cannot move '" + tmp.string() + "' into place: " + ec.message());
+  // Makes the rename itself durable. Some file systems cannot sync a folder; the file is already
+  // whole on disk then, so that is no reason to fail the run.
+  static_cast<void>(sync_path(path.has_parent_path() ? path.parent_path() : fs::path("."),
+                              O_RDONLY | O_DIRECTORY));
+}
+
+int remove_stray_temps(const fs::path& dir) {
+  std::vector<fs::path> stray;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::end(it);
+       it.increment(ec)) {
+    const std::optional<pid_t> owner = temp_owner(it->path());
+    if (owner && *owner != ::getpid() && !process_running(*owner) && it->is_regular_file(ec)) {
+      stray.push_back(it->path());
+    }
+  }
+  int removed = 0;
+  for (const fs::path& p : stray) removed += fs::remove(p, ec) ? 1 : 0;
+  return removed;
+}
+
 void require_writable_file(const fs::path& path) {
   if (path.empty()) throw BadInput("empty output path");
-  if (fs::is_directory(path))
-    throw BadInput("cannot write '" + path.string() + "': is a directory");
-  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  const fs::path target = follow_symlinks(path);
+  std::error_code ec;
+  const fs::file_status status = fs::status(target, ec);
+  if (fs::is_directory(status)) throw BadInput(cannot_write(path, "is a directory"));
+  if (written_in_place(status)) {
+    if (::access(target.c_str(), W_OK) != 0) throw BadInput(cannot_write(path, "not writable"));
+    return;
+  }
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   if (!fs::is_directory(parent) || ::access(parent.c_str(), W_OK) != 0) {
-    throw BadInput("cannot write '" + path.string() + "': folder '" + parent.string() +
-                   "' does not exist or is not writable");
+    throw BadInput(
+        cannot_write(path, "folder '" + parent.string() + "' does not exist or is not writable"));
   }
 }
 

@@ -18,6 +18,8 @@
 #include <thread>
 
 #include "common/atomic_file.h"
+#include "common/checksum.h"
+#include "common/dir_lock.h"
 #include "common/errors.h"
 
 namespace multicpg::experiments {
@@ -26,9 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// FNV-1a 64-bit and SplitMix64 (Steele, Lea, Flood 2014) constants.
-constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
-constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
+// SplitMix64 (Steele, Lea, Flood 2014) constants.
 constexpr std::uint64_t kGoldenGamma = 0x9e3779b97f4a7c15ULL;
 constexpr std::uint64_t kMix1 = 0xbf58476d1ce4e5b9ULL;
 constexpr std::uint64_t kMix2 = 0x94d049bb133111ebULL;
@@ -43,15 +43,6 @@ std::uint64_t splitmix64(std::uint64_t x) {
   x = (x ^ (x >> 30)) * kMix1;
   x = (x ^ (x >> 27)) * kMix2;
   return x ^ (x >> 31);
-}
-
-std::uint64_t fnv1a(std::string_view text) {
-  std::uint64_t h = kFnvOffset;
-  for (char c : text) {
-    h ^= static_cast<unsigned char>(c);
-    h *= kFnvPrime;
-  }
-  return h;
 }
 
 bool key_names_a_file(const std::string& key) {
@@ -72,15 +63,22 @@ void check_keys(const std::vector<Task>& tasks) {
   }
 }
 
-std::optional<nlohmann::json> read_json(const fs::path& path) {
-  std::ifstream in(path);
+constexpr const char* kChecksumField = "checksum";
+
+// `record` with its checksum: of its canonical dump (compact, keys sorted, numbers in shortest
+// round-trip form), which parsing and dumping again reproduces exactly.
+nlohmann::json sealed(nlohmann::json record) {
+  record[kChecksumField] = checksum_text(record.dump());
+  return record;
+}
+
+// The sealed record saved in `path`, if the file exists.
+std::optional<nlohmann::json> read_sealed(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw RuntimeFailure("'" + path.string() + "' is damaged (" + e.what() +
-                         "); delete it and start again");
-  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_sealed(text.str(), path);
 }
 
 // What OUT/experiment.json holds: the arguments and the run keys.
@@ -111,10 +109,10 @@ std::string what_differs(const nlohmann::json& stored, const nlohmann::json& now
 // Makes OUT/runs and claims OUT for these arguments, or checks an earlier claim matches.
 void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
                    const nlohmann::json& arguments) {
-  ensure_writable_dir(out / "runs");
   const fs::path record_path = out / "experiment.json";
   const nlohmann::json record = experiment_record(tasks, arguments);
-  if (const std::optional<nlohmann::json> stored = read_json(record_path)) {
+  if (std::optional<nlohmann::json> stored = read_sealed(record_path)) {
+    stored->erase(kChecksumField);
     if (*stored != record) {
       throw BadInput("'" + out.string() + "' holds an experiment made with other " +
                      what_differs(*stored, record) + "; use another output directory");
@@ -127,7 +125,7 @@ void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
                      "' holds runs but no experiment.json; use another output directory");
     }
   }
-  write_file_atomic(record_path, record.dump(kJsonIndent) + "\n");
+  write_file_atomic(record_path, sealed(record).dump(kJsonIndent) + "\n");
 }
 
 fs::path run_path(const fs::path& out, const Task& task) {
@@ -137,12 +135,12 @@ fs::path run_path(const fs::path& out, const Task& task) {
 // The saved result of `task`, if it finished in an earlier session.
 std::optional<nlohmann::json> load_run(const fs::path& out, const Task& task) {
   const fs::path path = run_path(out, task);
-  std::optional<nlohmann::json> saved = read_json(path);
+  std::optional<nlohmann::json> saved = read_sealed(path);
   if (!saved) return std::nullopt;
   if (!saved->is_object() || saved->value("key", "") != task.key ||
       saved->value("seed", std::uint64_t{0}) != task.seed || !saved->contains("result")) {
-    throw RuntimeFailure("'" + path.string() + "' is not the run " + task.key +
-                         "; delete it and start again");
+    throw BadInput("'" + path.string() + "' is not the run " + task.key +
+                   "; delete it and start again");
   }
   return saved->at("result");
 }
@@ -150,7 +148,7 @@ std::optional<nlohmann::json> load_run(const fs::path& out, const Task& task) {
 void save_run(const fs::path& out, const Task& task, const nlohmann::json& result) {
   const nlohmann::json saved{{"key", task.key},   {"group", task.group},   {"run", task.run},
                              {"seed", task.seed}, {"params", task.params}, {"result", result}};
-  write_file_atomic(run_path(out, task), saved.dump(kJsonIndent) + "\n");
+  write_file_atomic(run_path(out, task), sealed(saved).dump(kJsonIndent) + "\n");
 }
 
 std::string duration(double seconds) {
@@ -215,7 +213,7 @@ class Progress {
 }  // namespace
 
 std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key) {
-  return splitmix64(splitmix64(base_seed) ^ fnv1a(key));
+  return splitmix64(splitmix64(base_seed) ^ fnv1a64(key));
 }
 
 std::string run_key(std::string_view group, int run) {
@@ -238,10 +236,30 @@ void validate(const RunnerOptions& options) {
   }
 }
 
+nlohmann::json parse_sealed(const std::string& text, const fs::path& path) {
+  const auto damaged = [&](const std::string& why) {
+    return BadInput("'" + path.string() + "' is damaged (" + why + "); delete it and start again");
+  };
+  nlohmann::json record = nlohmann::json::parse(text, nullptr, false);
+  if (record.is_discarded()) throw damaged("not JSON");
+  if (!record.is_object()) throw damaged("not a JSON object");
+  const auto stored = record.find(kChecksumField);
+  if (stored == record.end() || !stored->is_string()) throw damaged("no checksum");
+  const std::string expected = stored->get<std::string>();
+  record.erase(stored);
+  if (checksum_text(record.dump()) != expected) throw damaged("checksum does not match");
+  return record;
+}
+
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options) {
   validate(options);
   check_keys(tasks);
+  ensure_writable_dir(options.out_dir / "runs");
+  // Held until every run is saved: a second process on OUT is refused instead of mixing its runs
+  // in. Under the lock no other multicpg writes here, so temporary files are strays of killed runs.
+  const DirLock lock(options.out_dir);
+  remove_stray_temps(options.out_dir);
   claim_out_dir(options.out_dir, tasks, options.arguments);
 
   RunnerOutcome outcome;

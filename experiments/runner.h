@@ -55,10 +55,18 @@ struct RunnerOutcome {
 };
 
 // Runs every task not yet saved in OUT/runs and returns all results. Throws BadInput if OUT
-// was made with other arguments or tasks, or if a key is repeated or cannot name a file.
+// was made with other arguments or tasks, if a key is repeated or cannot name a file, if another
+// process is running in OUT (OUT/.multicpg.lock), or if a saved file is damaged (naming it).
+// Removes temporary files of killed runs (*.tmp<pid>) from OUT first.
 // If a task throws, no new task starts, the runs in flight finish and are saved, and the first
 // exception is rethrown: starting again repeats only the runs not saved.
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options);
+
+// OUT/experiment.json and each run file carry "checksum": checksum_text (common/checksum.h) of
+// the canonical dump of the rest of the object. parse_sealed returns the object without it;
+// throws BadInput naming `path` when `text` is not a JSON object, has no checksum or the checksum
+// does not match (an edited or damaged file).
+nlohmann::json parse_sealed(const std::string& text, const std::filesystem::path& path);
 
 }  // namespace multicpg::experiments

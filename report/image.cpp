@@ -22,7 +22,21 @@ void write_png(const Image& image, const std::filesystem::path& path) {
     throw RuntimeFailure("PNG encoding of '" + path.string() +
                          "' failed: " + lodepng_error_text(rc));
   }
-  write_file_atomic(path, std::string(png.begin(), png.end()));
+  AtomicFile file(path);
+  file.stream().write(reinterpret_cast<const char*>(png.data()),
+                      static_cast<std::streamsize>(png.size()));
+  // What reached the disk decodes to this picture, or the file is not published.
+  file.commit([&](const std::filesystem::path& tmp) {
+    std::vector<unsigned char> back;
+    unsigned width = 0;
+    unsigned height = 0;
+    const unsigned decoded = lodepng::decode(back, width, height, tmp.string(), LCT_RGB);
+    if (decoded != 0 || width != static_cast<unsigned>(image.width) ||
+        height != static_cast<unsigned>(image.height) || back != image.rgb) {
+      throw RuntimeFailure("'" + path.string() + "' does not read back as the picture written" +
+                           (decoded != 0 ? std::string(": ") + lodepng_error_text(decoded) : ""));
+    }
+  });
 }
 
 Image read_png(const std::filesystem::path& path) {

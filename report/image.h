@@ -19,8 +19,9 @@ struct Image {
   }
 };
 
-// Writes atomically (whole file or none). Throws BadInput for an unwritable path,
-// RuntimeFailure if encoding fails.
+// Writes atomically (whole file or none) and checks the written file decodes to `image` before
+// publishing it. Throws BadInput for an unwritable path, RuntimeFailure if encoding, writing or
+// the check fails.
 void write_png(const Image& image, const std::filesystem::path& path);
 
 // Decodes any PNG to RGB. Throws BadInput when the file is missing or not a PNG.

@@ -1,7 +1,8 @@
 #include "report/video.h"
 
-#include <unistd.h>
-
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -13,6 +14,36 @@ namespace multicpg::report {
 namespace {
 
 constexpr const char* kFfmpeg = "ffmpeg";
+constexpr const char* kFfprobe = "ffprobe";
+
+// A value of ffprobe's "key=value" lines; empty when missing.
+std::string probed(const std::string& output, const std::string& key) {
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind(key + "=", 0) == 0) return line.substr(key.size() + 1);
+  }
+  return {};
+}
+
+// Checks that ffmpeg's file holds `frames` frames lasting frames / fps seconds (to one frame), so
+// a file cut short (a full disk, a killed encoder) is never published.
+void verify_video(const std::filesystem::path& file, const std::filesystem::path& name, int frames,
+                  int fps) {
+  const ProcessResult probe = run_process(
+      {kFfprobe, "-v", "error", "-select_streams", "v:0", "-count_packets", "-show_entries",
+       "stream=nb_read_packets,duration", "-of", "default=noprint_wrappers=1", file.string()});
+  const std::string packets = probed(probe.output, "nb_read_packets");
+  const std::string duration = probed(probe.output, "duration");
+  const double expected = static_cast<double>(frames) / fps;
+  const bool ok = probe.exit_code == 0 && packets == std::to_string(frames) && !duration.empty() &&
+                  std::abs(std::strtod(duration.c_str(), nullptr) - expected) <= 1.0 / fps;
+  if (!ok) {
+    throw RuntimeFailure("encoding '" + name.string() + "' failed: ffprobe finds " +
+                         (packets.empty() ? std::string("no video") : packets + " frames") +
+                         (duration.empty() ? "" : " lasting " + duration + " s") + ", expected " +
+                         std::to_string(frames) + " frames");
+  }
+}
 
 std::filesystem::path checked_path(std::filesystem::path path) {
   if (path.extension() != ".mp4") throw BadInput("video '" + path.string() + "' must end in .mp4");
@@ -23,14 +54,13 @@ std::filesystem::path checked_path(std::filesystem::path path) {
 }  // namespace
 
 VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int fps)
-    : path_(checked_path(std::move(path))), width_(width), height_(height) {
+    : path_(checked_path(std::move(path))), width_(width), height_(height), fps_(fps) {
   if (width <= 0 || height <= 0 || width % 2 != 0 || height % 2 != 0) {
     throw BadInput("video size must be positive and even, got " + std::to_string(width) + "x" +
                    std::to_string(height));
   }
   if (fps <= 0) throw BadInput("video frame rate must be positive, got " + std::to_string(fps));
-  tmp_ = path_;
-  tmp_ += ".tmp" + std::to_string(::getpid());
+  tmp_ = temp_sibling(follow_symlinks(path_));
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   ffmpeg_ = std::make_unique<ChildWithInput>(std::vector<std::string>{
       kFfmpeg, "-nostdin", "-y", "-loglevel", "error",
@@ -79,11 +109,12 @@ void VideoWriter::finish() {
     throw RuntimeFailure("encoding '" + path_.string() + "' failed: " +
                          (frames_ == 0 ? std::string("no frames") : tool_error(result)));
   }
-  std::filesystem::rename(tmp_, path_, ec);
-  if (ec) {
-    const std::string why = ec.message();
+  try {
+    verify_video(tmp_, path_, frames_, fps_);
+    sync_and_rename(tmp_, follow_symlinks(path_));
+  } catch (...) {
     std::filesystem::remove(tmp_, ec);
-    throw RuntimeFailure("cannot move '" + tmp_.string() + "' into place: " + why);
+    throw;
   }
 }
 

@@ -23,8 +23,10 @@ class VideoWriter {
 
   // Throws BadInput for a frame of another size, RuntimeFailure when ffmpeg has stopped.
   void add_frame(const Image& frame);
-  // Waits for ffmpeg and moves the video into place. Throws RuntimeFailure (ffmpeg's first error
-  // line) when encoding failed or no frame was added.
+  // Waits for ffmpeg, checks the file with ffprobe (frame count and duration) and moves it into
+  // place (synced; a symlink at the path is followed, not replaced). Throws RuntimeFailure
+  // (ffmpeg's last error line, or what ffprobe found) when encoding failed, the file is not every
+  // frame, or no frame was added.
   void finish();
 
   int frames() const { return frames_; }
@@ -34,6 +36,7 @@ class VideoWriter {
   std::filesystem::path tmp_;
   int width_;
   int height_;
+  int fps_;
   int frames_ = 0;
   std::unique_ptr<ChildWithInput> ffmpeg_;
 };

@@ -1,6 +1,9 @@
 #include "sim/sim.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <mutex>
 #include <numbers>
@@ -24,9 +27,22 @@ void keep_warning(const char* message) {
   last_warning = message;
 }
 
-void install_warning_handler() {
-  static std::once_flag once;
-  std::call_once(once, [] { mju_user_warning = keep_warning; });
+// MuJoCo's fatal errors (e.g. an offscreen buffer larger than OpenGL allows). The default handler
+// prints to stdout, appends to MUJOCO_LOG.TXT and waits for Enter. mju_error must not return to
+// MuJoCo (2.2.2 carries on with the broken state if the handler returns), and the ways to leave
+// it early are unsound here: a C++ exception would unwind through MuJoCo's C frames (undefined
+// behaviour, and its mjData stack would stay half-allocated); longjmp would skip the destructors
+// of our C++ frames and needs a setjmp around every MuJoCo call. The process cannot continue
+// with MuJoCo's state undefined anyway, so: one line on stderr, then _Exit(1). _Exit, not exit:
+// other runner threads may still be simulating and must not see static destructors run. A
+// temporary output file it leaves (*.tmp<pid>) is removed by the next experiment in that folder.
+[[noreturn]] void fatal_error(const char* message) {
+  std::string line = std::string("multicpg: MuJoCo error: ") + message;
+  std::replace(line.begin(), line.end(), '\n', ' ');
+  line += '\n';
+  std::fwrite(line.data(), 1, line.size(), stderr);
+  std::fflush(stderr);
+  std::_Exit(1);
 }
 
 const char* warning_name(int warning) {
@@ -110,7 +126,26 @@ void drive(const SimModel& model, mjData* d, const JointSlot& slot, double targe
   throw RuntimeFailure(msg.str());
 }
 
-void check_physics(const SimModel& model, const SimState& state, double previous_time) {
+// Limits no real robot of this size reaches; beyond them the simulation has exploded even when
+// every number is finite (a too large --physics-dt can throw the trunk kilometres in one step).
+// Measured: the trunk moves at most 0.3 m/s within one physics step (walk, tunnel, every robot);
+// falling from its own height (0.1 m) gives 1.4 m/s, so 10 m/s is far out of reach.
+constexpr double kMaxTrunkSpeed = 10.0;  // m/s
+// A contact deeper than the trunk is high (0.065 m, robot/body.cpp kTrunkHeight) means a body
+// has passed into the ground or a wall. Measured: feet start up to 0.035 m deep in the first
+// physics step (then the contacts push them out); walking stays shallower (walk, tunnel, every
+// robot, control step 0.037 and 0.1 s).
+constexpr double kMaxPenetration = 0.065;  // m
+
+// The name of the body geom `geom` belongs to ("world" for the ground and walls).
+std::string body_name(const mjModel* m, int geom) {
+  const int body = m->geom_bodyid[geom];
+  const char* name = mj_id2name(m, mjOBJ_BODY, body);
+  return name != nullptr ? name : "body " + std::to_string(body);
+}
+
+void check_physics(const SimModel& model, const SimState& state, double previous_time,
+                   const Position& previous) {
   const mjModel* m = model.mj.get();
   const mjData* d = state.data.get();
   for (int w = 0; w < mjNWARNING; ++w) {
@@ -129,6 +164,24 @@ void check_physics(const SimModel& model, const SimState& state, double previous
   for (int i = 0; i < m->nv; ++i) {
     if (!std::isfinite(d->qvel[i])) {
       unstable(state, previous_time, "qvel[" + std::to_string(i) + "] not finite");
+    }
+  }
+  const Position now = trunk_position(model, state);
+  const double moved = std::hypot(now.x - previous.x, now.y - previous.y, now.z - previous.z);
+  const double speed = std::max(moved / (d->time - previous_time), 0.0);
+  if (speed > kMaxTrunkSpeed) {
+    std::ostringstream why;
+    why << "the trunk moved " << moved << " m in one physics step (" << speed << " m/s, limit "
+        << kMaxTrunkSpeed << " m/s)";
+    unstable(state, previous_time, why.str());
+  }
+  for (int c = 0; c < d->ncon; ++c) {
+    if (d->contact[c].dist < -kMaxPenetration) {
+      std::ostringstream why;
+      why << body_name(m, d->contact[c].geom1) << " and " << body_name(m, d->contact[c].geom2)
+          << " interpenetrate by " << -d->contact[c].dist << " m (limit " << kMaxPenetration
+          << " m)";
+      unstable(state, previous_time, why.str());
     }
   }
 }
@@ -165,6 +218,12 @@ int physics_substeps(double control_dt, double physics_dt) {
   if (!(physics_dt > 0.0)) throw BadInput("--physics-dt must be positive");
   const double ratio = control_dt / physics_dt;
   const double whole = std::round(ratio);
+  if (!(whole <= static_cast<double>(kMaxSubsteps))) {
+    std::ostringstream msg;
+    msg << "--control-dt " << control_dt << " / --physics-dt " << physics_dt << " = " << ratio
+        << " physics steps per control step; at most " << kMaxSubsteps;
+    throw BadInput(msg.str());
+  }
   if (whole < 1.0 || std::abs(ratio - whole) > kStepRatioTolerance * ratio) {
     std::ostringstream msg;
     msg << "--control-dt " << control_dt << " is not a whole multiple of --physics-dt "
@@ -183,8 +242,16 @@ std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
                           mjcf_options(options, physics_dt, start_pose(controller)));
 }
 
+void install_mujoco_handlers() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    mju_user_warning = keep_warning;
+    mju_user_error = fatal_error;
+  });
+}
+
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
-  install_warning_handler();
+  install_mujoco_handlers();
   SimModel model{kind,
                  &robot::robot_body(kind),
                  neural::make_controller_model(kind, options.controller),
@@ -266,8 +333,9 @@ void sim_step(const SimModel& model, SimState& state) {
     }
     for (const JointSlot& slot : model.backbone) drive(model, d, slot, 0.0);  // held at 0
     const double previous_time = d->time;
+    const Position previous = trunk_position(model, state);
     mj_step(m, d);
-    check_physics(model, state, previous_time);
+    check_physics(model, state, previous_time, previous);
   }
   ++state.step;
 }

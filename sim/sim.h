@@ -37,8 +37,12 @@ inline constexpr double kReferenceControlDt = 0.1;
 // (0.037 s -> 0.037 / 8 = 0.004625 s).
 double default_physics_dt(double control_dt);
 
+// Most physics steps per controller step: 10^6 (a 0.037 s step at 37 ns), far beyond any useful
+// ratio and well inside an int.
+inline constexpr int kMaxSubsteps = 1'000'000;
+
 // Physics steps per controller step. Throws BadInput unless both steps are positive and
-// control_dt / physics_dt is a whole number within kStepRatioTolerance.
+// control_dt / physics_dt is a whole number within kStepRatioTolerance, at most kMaxSubsteps.
 int physics_substeps(double control_dt, double physics_dt);
 
 struct SimOptions {
@@ -95,6 +99,11 @@ struct SimModel {
 // rejects it.
 std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml);
 
+// Routes MuJoCo's warnings (kept for sim_step's error) and fatal errors (one line on stderr,
+// exit 1) away from stdout, MUJOCO_LOG.TXT and its "Press Enter" prompt. Idempotent;
+// make_sim_model calls it, the CLI calls it first thing.
+void install_mujoco_handlers();
+
 // Builds the MJCF from robot::robot_body(kind), compiles it and indexes it. Throws BadInput for
 // bad time steps or servo gain, RuntimeFailure if MuJoCo rejects the model.
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options = {});
@@ -117,7 +126,8 @@ SimState make_sim_state(const SimModel& model, int period = 4);
 // One controller step: neural::controller_step, joint targets (robot::joint_angle), then
 // model.substeps physics steps, each setting every servo's torque (sim/servo.h) before mj_step.
 // Throws RuntimeFailure naming the step if the physics becomes unstable (a NaN or infinite state,
-// a MuJoCo warning such as a bad acceleration, or MuJoCo resetting the state).
+// a MuJoCo warning such as a bad acceleration, MuJoCo resetting the state, the trunk faster than
+// any real robot or bodies deep inside each other).
 void sim_step(const SimModel& model, SimState& state);
 
 // Readings. Positions and joint angles are of the current state; the yaw and touch sensors are
