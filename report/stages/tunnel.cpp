@@ -1,0 +1,150 @@
+// The tunnel (paper §5, Table 1): each scenario with all periods 4, with our learned
+// combination (the hexapod table's most frequent one) and with the paper's; films and paths.
+#include <algorithm>
+#include <optional>
+#include <sstream>
+
+#include "common/table.h"
+#include "experiments/paper.h"
+#include "experiments/scenarios.h"
+#include "experiments/tunnel.h"
+#include "report/film.h"
+#include "report/stages/stage.h"
+
+namespace multicpg::report {
+namespace {
+
+namespace paper = experiments::paper;
+
+// The tunnel films look down the corridor from behind the robot, far enough to see both walls.
+const CameraSpec kTunnelCamera{"trunk", 2.5, 0.0, -45.0, {}};
+
+// "R2=4 L1=6" (working_periods_text's form) on top of all-4 periods.
+std::vector<int> periods_from_text(const robot::Morphology& morph, const std::string& text) {
+  std::vector<int> periods(morph.size(), learning::kStartPeriod);
+  std::istringstream in(text);
+  for (std::string item; in >> item;) {
+    const std::size_t eq = item.find('=');
+    periods[robot::leg_index(morph, item.substr(0, eq))] = std::stoi(item.substr(eq + 1));
+  }
+  return periods;
+}
+
+std::string file_stem(std::string text) {
+  std::replace(text.begin(), text.end(), '+', '-');
+  return text;
+}
+
+struct Variant {
+  std::string source;
+  std::vector<int> periods;
+  double paper_deg;
+  bool filmed;
+  std::vector<Point2>* path;  // where its trunk path is drawn, if anywhere
+};
+
+}  // namespace
+
+Section tunnel_stage(const StageContext& ctx) {
+  const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod);
+  sim::SimOptions with_tunnel;
+  with_tunnel.scene.tunnel = true;
+  const sim::SimModel corridor = sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
+  const robot::Morphology& morph = open.controller.morphology;
+  const experiments::ExperimentTable hexapod =
+      experiments::read_experiment(ctx.options.out / "experiments" / "hexapod");
+  const std::filesystem::path videos = ctx.dir("videos");
+  const std::filesystem::path figures = ctx.dir("figures");
+  Table table{{{"disabled", Align::left},
+               {"periods", Align::left},
+               {"source", Align::left},
+               {"deviation (deg)"},
+               {"forward (m)"},
+               {"lateral (m)"},
+               {"result", Align::left},
+               {"paper (deg)"}},
+              {}};
+  std::vector<std::string> films;
+  std::vector<std::string> images;
+  for (const paper::TunnelResult& sc : paper::kTunnel) {
+    const std::string name(sc.disabled);
+    std::string legs = name;
+    std::replace(legs.begin(), legs.end(), '+', ',');
+    const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, legs);
+    std::string learned;
+    for (const experiments::GroupSummary& g : hexapod.rows) {
+      if (g.group == name) learned = g.best_periods;
+    }
+    TrunkPaths paths;
+    std::vector<Variant> variants{
+        {"all 4", std::vector<int>(morph.size(), learning::kStartPeriod), sc.before_deg, true,
+         &paths.before}};
+    if (!learned.empty()) {
+      variants.push_back(
+          {"our learning", periods_from_text(morph, learned), sc.after_deg, true, &paths.after});
+    }
+    variants.push_back({"the paper's learning",
+                        periods_from_text(morph, paper::combination_text(sc.learned)),
+                        sc.after_deg, false, nullptr});
+    for (const Variant& v : variants) {
+      const std::filesystem::path video =
+          videos / ("tunnel-" + file_stem(name) + (v.path == &paths.before ? "-before" : "-after") +
+                    ".mp4");
+      std::optional<Film> film;
+      if (v.filmed) {
+        film.emplace(corridor, FilmSpec{video, kDefaultFrameWidth, kDefaultFrameHeight,
+                                        ctx.sizes.tunnel_film_speed, kTunnelCamera});
+      }
+      const experiments::TunnelRun t = experiments::run_tunnel(
+          corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
+          [&](const sim::SimState& s) {
+            if (film) film->capture(s, name + " disabled, " + v.source);
+          });
+      if (film) {
+        film->finish();
+        films.push_back(ctx.rel(video));
+      }
+      table.add_row({name, experiments::working_periods_text(morph, v.periods, disabled), v.source,
+                     fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
+                     t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
+                     "≈" + fixed(v.paper_deg, 2)});
+      if (v.path == nullptr) continue;
+      for (std::size_t i = 0; i < t.record.rows(); ++i) {
+        v.path->push_back({t.record.x[i], t.record.y[i]});
+      }
+    }
+    const double half = open.scene.tunnel_width / 2.0;
+    const double length = open.scene.tunnel_length;
+    paths.walls = {{{0.0, half}, {length, half}}, {{0.0, -half}, {length, -half}}};
+    paths.before_label = "all periods 4";
+    paths.after_label = "learned";
+    images.push_back(
+        ctx.image(plot_trunk_paths(paths, figures, "tunnel-path-" + file_stem(name))));
+  }
+  std::string paper_before, paper_after, scenarios;
+  for (const paper::TunnelResult& sc : paper::kTunnel) {
+    const bool last = &sc == &paper::kTunnel.back();
+    const std::string sep = last ? "" : ", ";
+    scenarios += std::string(sc.disabled) + sep;
+    paper_before += fixed(sc.before_deg, 0) + "°" + sep;
+    paper_after += fixed(sc.after_deg, 2) + "°" + sep;
+  }
+  return {"tunnel",
+          "The tunnel (Table 1)",
+          "Tunnel " + fixed(open.scene.tunnel_length, 1) + " m × " +
+              fixed(open.scene.tunnel_width, 1) + " m. Disabled " + scenarios +
+              " with all periods 4: the robot deviated right and hit the wall (≈" + paper_before +
+              "); with the learned periods it passed (≈" + paper_after + ").",
+          "Deviation = atan(lateral / forward) of the trunk from the entrance to the end, or "
+          "to where it touched a wall. Rows \"our learning\" walk the most frequent combination "
+          "the hexapod table learned for the scenario (experiments/hexapod, seed " +
+              std::to_string(ctx.options.seed) +
+              ") on open ground; rows \"the paper's learning\" replay the paper's combinations "
+              "on our robot.",
+          images,
+          films,
+          {},
+          {table}};
+}
+
+}  // namespace multicpg::report
