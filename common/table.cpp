@@ -64,7 +64,11 @@ std::string to_csv(const Table& t) {
 std::string to_markdown(const Table& t) {
   auto line = [](const std::vector<std::string>& cells) {
     std::string out = "|";
-    for (const std::string& c : cells) out += " " + markdown_cell(c) + " |";
+    for (const std::string& c : cells) {
+      out += ' ';
+      out += markdown_cell(c);
+      out += " |";
+    }
     return out + "\n";
   };
   std::string out = line(titles(t)) + "|";

@@ -53,7 +53,10 @@ inline constexpr double kR1SimulatorDeg = 38.0;
 inline std::string combination_text(std::span<const LegPeriod> learned) {
   std::string out;
   for (const LegPeriod& p : learned) {
-    out += (out.empty() ? "" : " ") + std::string(p.leg) + "=" + std::to_string(p.period);
+    if (!out.empty()) out += ' ';
+    out += p.leg;
+    out += '=';
+    out += std::to_string(p.period);
   }
   return out;
 }

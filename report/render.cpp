@@ -16,6 +16,9 @@ constexpr int kMaxSceneGeoms = 2000;
 // on a machine without a GPU, it made a 640x480 frame 2-3x slower, and the frames look the same
 // after H.264 (docs/benchmarks.md, ## Rendering).
 constexpr int kOffscreenSamples = 0;
+// Shadow map side in texels (MuJoCo's default is 4096): 1024 draws the same shadows at 640x480
+// for 40 % less CPU per frame on llvmpipe (docs/benchmarks.md).
+constexpr int kShadowMapSize = 1024;
 // Several films render at once, each on its own thread; MuJoCo's GL function loading in
 // mjr_makeContext is process-wide, so contexts are made and freed one at a time.
 std::mutex& context_mutex() {
@@ -62,6 +65,7 @@ Renderer::Renderer(const mjModel* model, int width, int height)
   sized->vis.global.offwidth = std::max(width, model->vis.global.offwidth);
   sized->vis.global.offheight = std::max(height, model->vis.global.offheight);
   sized->vis.quality.offsamples = kOffscreenSamples;
+  sized->vis.quality.shadowsize = kShadowMapSize;
   {
     const std::lock_guard lock(context_mutex());
     mjr_makeContext(sized, &context_, mjFONTSCALE_100);

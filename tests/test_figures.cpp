@@ -231,7 +231,7 @@ TEST_F(FiguresTest, LearningSummaryHexapodAndQuadruped) {
       {"R1+R2+L3", 44.0, 30.1, 9.5, 4.4, 0.6}, {"R1+L1", 0.0, 0.0, 0.1, 0.0, 0.0, true},
   };
   const auto hex = plot_learning_summary(hexapod, "hexapod", paper::kThresholdDeg, dir_);
-  EXPECT_EQ(hex.png.filename(), "fig11_learning_hexapod.png");
+  EXPECT_EQ(hex.png.filename(), "fig11-hexapod.png");
   const std::string header =
       "scenario,mean_trials,sd_trials,mean_deviation_deg,sd_deviation_deg,share_converged,label";
   expect_figure(hex, "learning-hexapod", header, hexapod.size());
@@ -245,7 +245,7 @@ TEST_F(FiguresTest, LearningSummaryHexapodAndQuadruped) {
                                                {"L1", 7.1, 3.3, 5.0, 2.1, 1.0},
                                                {"L2", 6.0, 2.9, 4.2, 1.8, 1.0}};
   const auto quad = plot_learning_summary(quadruped, "quadruped", paper::kThresholdDeg, dir_);
-  EXPECT_EQ(quad.png.filename(), "fig13_learning_quadruped.png");
+  EXPECT_EQ(quad.png.filename(), "fig13-quadruped.png");
   expect_figure(quad, "learning-quadruped", header, quadruped.size());
 }
 

@@ -1,6 +1,7 @@
 // The tunnel (paper §5, Table 1): each scenario with all periods 4, with our learned
 // combination (the hexapod table's most frequent one) and with the paper's; films and paths.
 #include <algorithm>
+#include <future>
 #include <optional>
 #include <sstream>
 
@@ -43,18 +44,88 @@ struct Variant {
   std::vector<Point2>* path;  // where its trunk path is drawn, if anywhere
 };
 
+// One scenario's rows, films and path figure.
+struct ScenarioOutput {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> films;
+  std::string image;
+};
+
+ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corridor,
+                            const paper::TunnelResult& sc, const std::string& learned) {
+  const robot::Morphology& morph = corridor.controller.morphology;
+  const std::string name(sc.disabled);
+  std::string legs = name;
+  std::replace(legs.begin(), legs.end(), '+', ',');
+  const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, legs);
+  ScenarioOutput out;
+  TrunkPaths paths;
+  std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
+                                 sc.before_deg, true, &paths.before}};
+  if (!learned.empty()) {
+    variants.push_back(
+        {"our learning", periods_from_text(morph, learned), sc.after_deg, true, &paths.after});
+  }
+  variants.push_back({"the paper's learning",
+                      periods_from_text(morph, paper::combination_text(sc.learned)), sc.after_deg,
+                      false, nullptr});
+  for (const Variant& v : variants) {
+    const std::filesystem::path video =
+        ctx.dir("videos") / ("tunnel-" + file_stem(name) +
+                             (v.path == &paths.before ? "-before" : "-after") + ".mp4");
+    std::optional<Film> film;
+    if (v.filmed) {
+      film.emplace(corridor, FilmSpec{video, kDefaultFrameWidth, kDefaultFrameHeight,
+                                      ctx.sizes.tunnel_film_speed, kTunnelCamera});
+    }
+    const experiments::TunnelRun t = experiments::run_tunnel(
+        corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
+        [&](const sim::SimState& s) {
+          if (film) film->capture(s, name + " disabled, " + v.source);
+        });
+    if (film) {
+      film->finish();
+      out.films.push_back(ctx.rel(video));
+    }
+    out.rows.push_back({name, experiments::working_periods_text(morph, v.periods, disabled),
+                        v.source, fixed(t.deviation_deg, 2), fixed(t.forward_m, 2),
+                        fixed(t.lateral_m, 2),
+                        t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
+                        "≈" + fixed(v.paper_deg, 2)});
+    if (v.path == nullptr) continue;
+    for (std::size_t i = 0; i < t.record.rows(); ++i) {
+      v.path->push_back({t.record.x[i], t.record.y[i]});
+    }
+  }
+  const double half = corridor.scene.tunnel_width / 2.0;
+  const double length = corridor.scene.tunnel_length;
+  paths.walls = {{{0.0, half}, {length, half}}, {{0.0, -half}, {length, -half}}};
+  paths.before_label = "all periods 4";
+  paths.after_label = "learned";
+  out.image = ctx.image(
+      plot_trunk_paths(paths, ctx.dir("figures"), "tunnel-path-" + file_stem(name)));
+  return out;
+}
+
 }  // namespace
 
 Section tunnel_stage(const StageContext& ctx) {
-  const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod);
   sim::SimOptions with_tunnel;
   with_tunnel.scene.tunnel = true;
   const sim::SimModel corridor = sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
-  const robot::Morphology& morph = open.controller.morphology;
   const experiments::ExperimentTable hexapod =
       experiments::read_experiment(ctx.options.out / "experiments" / "hexapod");
-  const std::filesystem::path videos = ctx.dir("videos");
-  const std::filesystem::path figures = ctx.dir("figures");
+  // The scenarios are independent: each walks and films on its own thread (the model is
+  // shared read-only), so the films of one render while another walks.
+  std::vector<std::future<ScenarioOutput>> running;
+  for (const paper::TunnelResult& sc : paper::kTunnel) {
+    std::string learned;
+    for (const experiments::GroupSummary& g : hexapod.rows) {
+      if (g.group == sc.disabled) learned = g.best_periods;
+    }
+    running.push_back(std::async(std::launch::async, run_scenario, std::cref(ctx),
+                                 std::cref(corridor), std::cref(sc), learned));
+  }
   Table table{{{"disabled", Align::left},
                {"periods", Align::left},
                {"source", Align::left},
@@ -66,60 +137,11 @@ Section tunnel_stage(const StageContext& ctx) {
               {}};
   std::vector<std::string> films;
   std::vector<std::string> images;
-  for (const paper::TunnelResult& sc : paper::kTunnel) {
-    const std::string name(sc.disabled);
-    std::string legs = name;
-    std::replace(legs.begin(), legs.end(), '+', ',');
-    const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, legs);
-    std::string learned;
-    for (const experiments::GroupSummary& g : hexapod.rows) {
-      if (g.group == name) learned = g.best_periods;
-    }
-    TrunkPaths paths;
-    std::vector<Variant> variants{
-        {"all 4", std::vector<int>(morph.size(), learning::kStartPeriod), sc.before_deg, true,
-         &paths.before}};
-    if (!learned.empty()) {
-      variants.push_back(
-          {"our learning", periods_from_text(morph, learned), sc.after_deg, true, &paths.after});
-    }
-    variants.push_back({"the paper's learning",
-                        periods_from_text(morph, paper::combination_text(sc.learned)),
-                        sc.after_deg, false, nullptr});
-    for (const Variant& v : variants) {
-      const std::filesystem::path video =
-          videos / ("tunnel-" + file_stem(name) + (v.path == &paths.before ? "-before" : "-after") +
-                    ".mp4");
-      std::optional<Film> film;
-      if (v.filmed) {
-        film.emplace(corridor, FilmSpec{video, kDefaultFrameWidth, kDefaultFrameHeight,
-                                        ctx.sizes.tunnel_film_speed, kTunnelCamera});
-      }
-      const experiments::TunnelRun t = experiments::run_tunnel(
-          corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
-          [&](const sim::SimState& s) {
-            if (film) film->capture(s, name + " disabled, " + v.source);
-          });
-      if (film) {
-        film->finish();
-        films.push_back(ctx.rel(video));
-      }
-      table.add_row({name, experiments::working_periods_text(morph, v.periods, disabled), v.source,
-                     fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
-                     t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
-                     "≈" + fixed(v.paper_deg, 2)});
-      if (v.path == nullptr) continue;
-      for (std::size_t i = 0; i < t.record.rows(); ++i) {
-        v.path->push_back({t.record.x[i], t.record.y[i]});
-      }
-    }
-    const double half = open.scene.tunnel_width / 2.0;
-    const double length = open.scene.tunnel_length;
-    paths.walls = {{{0.0, half}, {length, half}}, {{0.0, -half}, {length, -half}}};
-    paths.before_label = "all periods 4";
-    paths.after_label = "learned";
-    images.push_back(
-        ctx.image(plot_trunk_paths(paths, figures, "tunnel-path-" + file_stem(name))));
+  for (std::future<ScenarioOutput>& f : running) {
+    ScenarioOutput out = f.get();
+    for (auto& row : out.rows) table.add_row(std::move(row));
+    films.insert(films.end(), out.films.begin(), out.films.end());
+    images.push_back(out.image);
   }
   std::string paper_before, paper_after, scenarios;
   for (const paper::TunnelResult& sc : paper::kTunnel) {
@@ -131,8 +153,8 @@ Section tunnel_stage(const StageContext& ctx) {
   }
   return {"tunnel",
           "The tunnel (Table 1)",
-          "Tunnel " + fixed(open.scene.tunnel_length, 1) + " m × " +
-              fixed(open.scene.tunnel_width, 1) + " m. Disabled " + scenarios +
+          "Tunnel " + fixed(corridor.scene.tunnel_length, 1) + " m × " +
+              fixed(corridor.scene.tunnel_width, 1) + " m. Disabled " + scenarios +
               " with all periods 4: the robot deviated right and hit the wall (≈" + paper_before +
               "); with the learned periods it passed (≈" + paper_after + ").",
           "Deviation = atan(lateral / forward) of the trunk from the entrance to the end, or "
