@@ -78,10 +78,9 @@ void paper_examples(std::ostringstream& out, const ExperimentTable& t) {
     const double ours = r1->initial_deviation_deg.mean;
     out << "| R1 disabled: " << fixed(paper::kR1InitialDeg, 2) << "° before learning, "
         << fixed(paper::kR1FinalDeg, 2) << "° after " << paper::kR1Trials
-        << " trials (Fig. 8) | initial "
-        << mean_pm_sd(ours, r1->initial_deviation_deg.sd, 2) << "°, final "
-        << fixed(r1->final_deviation_deg.mean, 2) << "°, median " << fixed(r1->median_trials, 1)
-        << " trials — "
+        << " trials (Fig. 8) | initial " << mean_pm_sd(ours, r1->initial_deviation_deg.sd, 2)
+        << "°, final " << fixed(r1->final_deviation_deg.mean, 2) << "°, median "
+        << fixed(r1->median_trials, 1) << " trials — "
         << (std::abs(ours - paper::kR1InitialDeg) < kSameSizeShare * paper::kR1InitialDeg
                 ? "the turn is of the paper's size"
                 : "**differs**: our turn is " +

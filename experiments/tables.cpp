@@ -156,10 +156,9 @@ std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::v
 
 Table scenario_data(const std::vector<GroupSummary>& rows) {
   Table t;
-  for (const char* title :
-       {"scenario", "runs", "converged", "no_deviation", "share_converged",
-        "final_deviation_mean_deg", "final_deviation_sd_deg", "trials_mean", "trials_sd",
-        "best_periods", "best_count"}) {
+  for (const char* title : {"scenario", "runs", "converged", "no_deviation", "share_converged",
+                            "final_deviation_mean_deg", "final_deviation_sd_deg", "trials_mean",
+                            "trials_sd", "best_periods", "best_count"}) {
     t.columns.push_back({title});
   }
   for (const GroupSummary& r : rows) {

@@ -257,8 +257,8 @@ FigureFiles plot_cpg_sync(const std::vector<CpgPairPoint>& synchronised,
     const CpgPairPoint& s = synchronised[t];
     const CpgPairPoint& f = independent[t];
     csv.row({std::to_string(t), shortest(s.master_x1), shortest(s.master_x2), shortest(s.client_x1),
-             shortest(s.client_x2), shortest(f.master_x1), shortest(f.master_x2), shortest(f.client_x1),
-             shortest(f.client_x2)});
+             shortest(s.client_x2), shortest(f.master_x1), shortest(f.master_x2),
+             shortest(f.client_x1), shortest(f.client_x2)});
   }
   Params params;
   params.num("master_period", master_period).num("client_period", client_period);
@@ -318,7 +318,8 @@ FigureFiles plot_motor_outputs(const MotorTrace& motor, const std::vector<std::s
   }
   Csv csv(header);
   for (std::size_t t = 0; t < motor.size(); ++t) {
-    std::vector<std::string> row{std::to_string(t), shortest(static_cast<double>(t) * step_seconds)};
+    std::vector<std::string> row{std::to_string(t),
+                                 shortest(static_cast<double>(t) * step_seconds)};
     for (const auto& joints : motor[t]) {
       for (double m : joints) row.push_back(shortest(m));
     }
@@ -345,7 +346,8 @@ FigureFiles plot_foot_contacts(const std::vector<std::vector<bool>>& contact,
   header.insert(header.end(), legs.begin(), legs.end());
   Csv csv(header);
   for (std::size_t t = 0; t < contact.size(); ++t) {
-    std::vector<std::string> row{std::to_string(t), shortest(static_cast<double>(t) * step_seconds)};
+    std::vector<std::string> row{std::to_string(t),
+                                 shortest(static_cast<double>(t) * step_seconds)};
     for (bool c : contact[t]) row.push_back(c ? "1" : "0");
     csv.row(row);
   }
@@ -366,11 +368,11 @@ FigureFiles plot_learning_summary(const std::vector<ScenarioSummary>& scenarios,
   for (const ScenarioSummary& s : scenarios) {
     require(s.share_converged >= 0.0 && s.share_converged <= 1.0, info.name,
             "share converged of " + s.scenario + " is outside 0..1");
-    const std::string label = s.no_deviation
-                                  ? "n/d"
-                                  : std::to_string(std::lround(100.0 * s.share_converged)) + "%";
-    csv.row({s.scenario, shortest(s.mean_trials), shortest(s.sd_trials), shortest(s.mean_deviation_deg),
-             shortest(s.sd_deviation_deg), shortest(s.share_converged), label});
+    const std::string label =
+        s.no_deviation ? "n/d" : std::to_string(std::lround(100.0 * s.share_converged)) + "%";
+    csv.row({s.scenario, shortest(s.mean_trials), shortest(s.sd_trials),
+             shortest(s.mean_deviation_deg), shortest(s.sd_deviation_deg),
+             shortest(s.share_converged), label});
   }
   Params params;
   params.text("robot", robot).num("threshold", threshold_deg);
@@ -385,8 +387,8 @@ FigureFiles plot_beta_study(const std::vector<BetaSummary>& betas, std::string_v
   Csv csv({"beta", "mean_trials", "sd_trials", "share_converged"});
   for (const BetaSummary& b : betas) {
     require(b.beta >= 0.0, info.name, "beta must not be negative");
-    csv.row(
-        {shortest(b.beta), shortest(b.mean_trials), shortest(b.sd_trials), shortest(b.share_converged)});
+    csv.row({shortest(b.beta), shortest(b.mean_trials), shortest(b.sd_trials),
+             shortest(b.share_converged)});
   }
   Params params;
   params.text("disabled_legs", disabled_legs);

@@ -79,8 +79,8 @@ Section section_from_json(const nlohmann::json& j) {
   for (const nlohmann::json& t : j.at("tables")) {
     Table table;
     for (const nlohmann::json& c : t.at("columns")) {
-      table.columns.push_back(
-          {c.at("title").get<std::string>(), c.at("left").get<bool>() ? Align::left : Align::right});
+      table.columns.push_back({c.at("title").get<std::string>(),
+                               c.at("left").get<bool>() ? Align::left : Align::right});
     }
     table.rows = t.at("rows").get<std::vector<std::vector<std::string>>>();
     s.tables.push_back(std::move(table));

@@ -38,8 +38,8 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int 
       "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size, "-r", std::to_string(fps), "-i", "pipe:0",
       // output: H.264 that browsers play, index at the front for streaming in the HTML report;
       // x264's veryfast preset: 40 % less CPU than its default for the same file size here
-      "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4",
-      tmp_.string()});
+      "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p", "-movflags", "+faststart",
+      "-f", "mp4", tmp_.string()});
 }
 
 VideoWriter::~VideoWriter() {

@@ -1,11 +1,10 @@
 // The one Table type (common/table.h): CSV quoting, Markdown alignment and HTML escaping.
-#include "common/table.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "common/errors.h"
+#include "common/table.h"
 
 namespace multicpg {
 namespace {

@@ -40,8 +40,8 @@ Table trace_table(const robot::Morphology& morph, const learning::LearningResult
     cells.push_back(what);
     trace.add_row(cells);
   };
-  points = {{0, r.initial_deviation_deg, true,
-             std::vector<int>(morph.size(), learning::kStartPeriod)}};
+  points = {
+      {0, r.initial_deviation_deg, true, std::vector<int>(morph.size(), learning::kStartPeriod)}};
   row(0, points.front().periods, r.initial_deviation_deg, "deviation detected");
   for (const learning::TrialRecord& t : r.trace) {
     points.push_back({t.trial, t.deviation_deg, t.accepted, t.periods});
@@ -99,7 +99,8 @@ Section learning_r1_stage(const StageContext& ctx) {
   for (const auto& c : contact) r1_touches += c[0] ? 1 : 0;
   const FigureFiles fig9 =
       plot_motor_outputs(motor, leg_names(morph), notes, hexapod.control_dt, figures);
-  const FigureFiles fig10 = plot_foot_contacts(contact, leg_names(morph), hexapod.control_dt, figures);
+  const FigureFiles fig10 =
+      plot_foot_contacts(contact, leg_names(morph), hexapod.control_dt, figures);
 
   // The trunk's path from above, R1 disabled: all periods 4 versus the learned ones.
   TrunkPaths paths;
@@ -112,7 +113,8 @@ Section learning_r1_stage(const StageContext& ctx) {
     spec.record = false;
     const sim::WalkResult w = sim::walk(hexapod, spec);
     auto& path = learned ? paths.after : paths.before;
-    for (std::size_t i = 0; i < w.record.rows(); ++i) path.push_back({w.record.x[i], w.record.y[i]});
+    for (std::size_t i = 0; i < w.record.rows(); ++i)
+      path.push_back({w.record.x[i], w.record.y[i]});
   }
   const std::string learned = experiments::working_periods_text(morph, r.periods, options.disabled);
   paths.before_label = "all periods 4";

@@ -24,8 +24,7 @@ Section scenario_table(const StageContext& ctx, robot::RobotKind kind) {
     runs += g.runs;
     within += g.within_paper_trials;
   }
-  const FigureFiles f =
-      plot_learning_summary(bars, name, paper::kThresholdDeg, ctx.dir("figures"));
+  const FigureFiles f = plot_learning_summary(bars, name, paper::kThresholdDeg, ctx.dir("figures"));
   const std::string base = "experiments/" + name + "/";
   const std::string threshold = fixed(paper::kThresholdDeg, 0) + "°";
   const std::string trials = std::to_string(paper::kMostTrials) + " trials";

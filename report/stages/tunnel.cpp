@@ -1,5 +1,7 @@
 // The tunnel (paper §5, Table 1): each scenario with all periods 4, with our learned
 // combination (the hexapod table's most frequent one) and with the paper's; films and paths.
+#include "experiments/tunnel.h"
+
 #include <algorithm>
 #include <future>
 #include <optional>
@@ -8,7 +10,6 @@
 #include "common/table.h"
 #include "experiments/paper.h"
 #include "experiments/scenarios.h"
-#include "experiments/tunnel.h"
 #include "report/film.h"
 #include "report/stages/stage.h"
 
@@ -71,16 +72,15 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
                       false, nullptr});
   for (const Variant& v : variants) {
     const std::filesystem::path video =
-        ctx.dir("videos") / ("tunnel-" + file_stem(name) +
-                             (v.path == &paths.before ? "-before" : "-after") + ".mp4");
+        ctx.dir("videos") /
+        ("tunnel-" + file_stem(name) + (v.path == &paths.before ? "-before" : "-after") + ".mp4");
     std::optional<Film> film;
     if (v.filmed) {
       film.emplace(corridor, FilmSpec{video, kDefaultFrameWidth, kDefaultFrameHeight,
                                       ctx.sizes.tunnel_film_speed, kTunnelCamera});
     }
     const experiments::TunnelRun t = experiments::run_tunnel(
-        corridor, {disabled, v.periods, experiments::kTunnelMaxSteps},
-        [&](const sim::SimState& s) {
+        corridor, {disabled, v.periods, experiments::kTunnelMaxSteps}, [&](const sim::SimState& s) {
           if (film) film->capture(s, name + " disabled, " + v.source);
         });
     if (film) {
@@ -102,8 +102,8 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   paths.walls = {{{0.0, half}, {length, half}}, {{0.0, -half}, {length, -half}}};
   paths.before_label = "all periods 4";
   paths.after_label = "learned";
-  out.image = ctx.image(
-      plot_trunk_paths(paths, ctx.dir("figures"), "tunnel-path-" + file_stem(name)));
+  out.image =
+      ctx.image(plot_trunk_paths(paths, ctx.dir("figures"), "tunnel-path-" + file_stem(name)));
   return out;
 }
 
