@@ -5,9 +5,10 @@
 #include <condition_variable>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
-#include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "common/atomic_file.h"
