@@ -51,8 +51,8 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
 }
 
 void print_table(const experiments::ExperimentTable& t, const std::string& out) {
-  std::cout << (t.experiment == "beta" ? experiments::beta_table_markdown(t.rows)
-                                       : experiments::scenario_table_markdown(t.rows))
+  std::cout << (t.experiment == "beta" ? to_markdown(experiments::beta_table(t.rows))
+                                       : to_markdown(experiments::scenario_table(t.rows)))
             << "\nwrote " << out << "/{table.csv,table.md,summary.json} and " << out << "/runs/\n";
 }
 

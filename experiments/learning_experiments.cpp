@@ -69,9 +69,9 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string
                         summarize(model.controller.morphology, tasks, outcome.results)};
   const bool beta = experiment == "beta";
   write_file_atomic(spec.out / "table.csv",
-                    beta ? beta_table_csv(table.rows) : scenario_table_csv(table.rows));
+                    to_csv(beta ? beta_data(table.rows) : scenario_data(table.rows)));
   write_file_atomic(spec.out / "table.md",
-                    beta ? beta_table_markdown(table.rows) : scenario_table_markdown(table.rows));
+                    to_markdown(beta ? beta_table(table.rows) : scenario_table(table.rows)));
   nlohmann::json rows = nlohmann::json::array();
   for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
   nlohmann::json summary = arguments(spec, experiment);

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 
 #include "common/errors.h"
+#include "experiments/paper.h"
 #include "experiments/scenarios.h"
 
 namespace multicpg::experiments {
@@ -16,14 +16,8 @@ constexpr int kDegreeDecimals = 2;
 constexpr int kTrialDecimals = 1;
 constexpr int kShareDecimals = 2;
 
-std::string fixed(double value, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, value);
-  return buf;
-}
-
-std::string mean_pm_sd(const MeanSd& m, int decimals) {
-  return fixed(m.mean, decimals) + " ± " + fixed(m.sd, decimals);
+std::string pm(const MeanSd& m, int decimals) {
+  return mean_pm_sd(m.mean, m.sd, decimals);
 }
 
 const nlohmann::json& field(const nlohmann::json& result, const Task& task, const char* name) {
@@ -141,7 +135,7 @@ std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::v
       if (field(r, tasks[i], "status") == "no deviation") ++row.no_deviation;
       if (field(r, tasks[i], "converged").get<bool>()) {
         ++row.converged;
-        if (trials.back() <= kPaperTrials) ++row.within_paper_trials;
+        if (trials.back() <= paper::kMostTrials) ++row.within_paper_trials;
         ++finals[working_periods(morph, r, tasks[i])];
       }
     }
@@ -160,60 +154,69 @@ std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::v
   return rows;
 }
 
-std::string scenario_table_csv(const std::vector<GroupSummary>& rows) {
-  std::string out =
-      "scenario,runs,converged,no_deviation,share_converged,final_deviation_mean_deg,"
-      "final_deviation_sd_deg,trials_mean,trials_sd,best_periods,best_count\n";
-  for (const GroupSummary& r : rows) {
-    out += r.group + "," + std::to_string(r.runs) + "," + std::to_string(r.converged) + "," +
-           std::to_string(r.no_deviation) + "," + fixed(r.share_converged(), kShareDecimals) + "," +
-           fixed(r.final_deviation_deg.mean, kDegreeDecimals) + "," +
-           fixed(r.final_deviation_deg.sd, kDegreeDecimals) + "," +
-           fixed(r.trials.mean, kTrialDecimals) + "," + fixed(r.trials.sd, kTrialDecimals) + "," +
-           r.best_periods + "," + std::to_string(r.best_count) + "\n";
+Table scenario_data(const std::vector<GroupSummary>& rows) {
+  Table t;
+  for (const char* title : {"scenario", "runs", "converged", "no_deviation", "share_converged",
+                            "final_deviation_mean_deg", "final_deviation_sd_deg", "trials_mean",
+                            "trials_sd", "best_periods", "best_count"}) {
+    t.columns.push_back({title});
   }
-  return out;
+  for (const GroupSummary& r : rows) {
+    t.add_row({r.group, std::to_string(r.runs), std::to_string(r.converged),
+               std::to_string(r.no_deviation), fixed(r.share_converged(), kShareDecimals),
+               fixed(r.final_deviation_deg.mean, kDegreeDecimals),
+               fixed(r.final_deviation_deg.sd, kDegreeDecimals),
+               fixed(r.trials.mean, kTrialDecimals), fixed(r.trials.sd, kTrialDecimals),
+               r.best_periods, std::to_string(r.best_count)});
+  }
+  return t;
 }
 
-std::string scenario_table_markdown(const std::vector<GroupSummary>& rows) {
-  std::string out =
-      "| Disabled | Runs | Converged (share) | No deviation | Final deviation (deg), mean ± SD | "
-      "Trials, mean ± SD | Most frequent combination (runs) |\n"
-      "|---|---:|---:|---:|---:|---:|---|\n";
+Table scenario_table(const std::vector<GroupSummary>& rows) {
+  Table t{{{"Disabled", Align::left},
+           {"Runs"},
+           {"Converged (share)"},
+           {"No deviation"},
+           {"Final deviation (deg), mean ± SD"},
+           {"Trials, mean ± SD"},
+           {"Most frequent combination (runs)", Align::left}},
+          {}};
   for (const GroupSummary& r : rows) {
-    out += "| " + r.group + " | " + std::to_string(r.runs) + " | " +
-           fixed(r.share_converged(), kShareDecimals) + " | " + std::to_string(r.no_deviation) +
-           " | " + mean_pm_sd(r.final_deviation_deg, kDegreeDecimals) + " | " +
-           mean_pm_sd(r.trials, kTrialDecimals) + " | " + best_cell(r) + " |\n";
+    t.add_row({r.group, std::to_string(r.runs), fixed(r.share_converged(), kShareDecimals),
+               std::to_string(r.no_deviation), pm(r.final_deviation_deg, kDegreeDecimals),
+               pm(r.trials, kTrialDecimals), best_cell(r)});
   }
-  return out;
+  return t;
 }
 
-std::string beta_table_csv(const std::vector<GroupSummary>& rows) {
-  std::string out =
-      "beta,runs,converged,share_converged,trials_mean,trials_sd,final_deviation_mean_deg,"
-      "final_deviation_sd_deg\n";
-  for (const GroupSummary& r : rows) {
-    out += r.group + "," + std::to_string(r.runs) + "," + std::to_string(r.converged) + "," +
-           fixed(r.share_converged(), kShareDecimals) + "," + fixed(r.trials.mean, kTrialDecimals) +
-           "," + fixed(r.trials.sd, kTrialDecimals) + "," +
-           fixed(r.final_deviation_deg.mean, kDegreeDecimals) + "," +
-           fixed(r.final_deviation_deg.sd, kDegreeDecimals) + "\n";
+Table beta_data(const std::vector<GroupSummary>& rows) {
+  Table t;
+  for (const char* title : {"beta", "runs", "converged", "share_converged", "trials_mean",
+                            "trials_sd", "final_deviation_mean_deg", "final_deviation_sd_deg"}) {
+    t.columns.push_back({title});
   }
-  return out;
+  for (const GroupSummary& r : rows) {
+    t.add_row({r.group, std::to_string(r.runs), std::to_string(r.converged),
+               fixed(r.share_converged(), kShareDecimals), fixed(r.trials.mean, kTrialDecimals),
+               fixed(r.trials.sd, kTrialDecimals),
+               fixed(r.final_deviation_deg.mean, kDegreeDecimals),
+               fixed(r.final_deviation_deg.sd, kDegreeDecimals)});
+  }
+  return t;
 }
 
-std::string beta_table_markdown(const std::vector<GroupSummary>& rows) {
-  std::string out =
-      "| beta | Runs | Converged (share) | Trials, mean ± SD | Final deviation (deg), mean ± SD |\n"
-      "|---:|---:|---:|---:|---:|\n";
+Table beta_table(const std::vector<GroupSummary>& rows) {
+  Table t{{{"beta"},
+           {"Runs"},
+           {"Converged (share)"},
+           {"Trials, mean ± SD"},
+           {"Final deviation (deg), mean ± SD"}},
+          {}};
   for (const GroupSummary& r : rows) {
-    out += "| " + r.group + " | " + std::to_string(r.runs) + " | " +
-           fixed(r.share_converged(), kShareDecimals) + " | " +
-           mean_pm_sd(r.trials, kTrialDecimals) + " | " +
-           mean_pm_sd(r.final_deviation_deg, kDegreeDecimals) + " |\n";
+    t.add_row({r.group, std::to_string(r.runs), fixed(r.share_converged(), kShareDecimals),
+               pm(r.trials, kTrialDecimals), pm(r.final_deviation_deg, kDegreeDecimals)});
   }
-  return out;
+  return t;
 }
 
 }  // namespace multicpg::experiments

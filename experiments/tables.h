@@ -1,12 +1,13 @@
 // Tables of an experiment's runs (paper Fig. 11, 13, 14; SPEC §8): per scenario or beta the
 // mean and SD of final deviation and trials, the share converged and the most frequent final
-// combination. CSV and Markdown with fixed decimals, so equal runs give byte-equal tables.
+// combination, as common/table.h Tables with fixed decimals, so equal runs give byte-equal tables.
 #pragma once
 
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "common/table.h"
 #include "experiments/runner.h"
 #include "robot/morphology.h"
 
@@ -21,10 +22,6 @@ struct MeanSd {
 MeanSd mean_sd(const std::vector<double>& values);
 double median(std::vector<double> values);
 
-// Paper §4.1: "the learning time for most of the scenarios can be normally controlled within
-// 20 trials".
-inline constexpr int kPaperTrials = 20;
-
 struct GroupSummary {
   std::string group;  // scenario name or beta
   int runs = 0;
@@ -34,7 +31,7 @@ struct GroupSummary {
   MeanSd final_deviation_deg;    // over all runs
   MeanSd trials;                 // over all runs
   double median_trials = 0.0;
-  int within_paper_trials = 0;  // runs converged within kPaperTrials (paper §4.1)
+  int within_paper_trials = 0;  // runs converged within paper::kMostTrials
   // Most frequent final periods of the working legs among converged runs, "R2=5 R3=4 L1=5";
   // ties go to the alphabetically first; empty when no run converged.
   std::string best_periods;
@@ -52,11 +49,12 @@ std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::v
 nlohmann::json to_json(const GroupSummary& row);
 GroupSummary group_summary_from_json(const nlohmann::json& row);
 
-// Scenario tables (Fig. 11, 13).
-std::string scenario_table_csv(const std::vector<GroupSummary>& rows);
-std::string scenario_table_markdown(const std::vector<GroupSummary>& rows);
+// Scenario tables (Fig. 11, 13): shown (table.md, results.md, index.html; mean ± SD cells) and
+// data (table.csv; one number per cell).
+Table scenario_table(const std::vector<GroupSummary>& rows);
+Table scenario_data(const std::vector<GroupSummary>& rows);
 // Beta tables (Fig. 14): groups are betas.
-std::string beta_table_csv(const std::vector<GroupSummary>& rows);
-std::string beta_table_markdown(const std::vector<GroupSummary>& rows);
+Table beta_table(const std::vector<GroupSummary>& rows);
+Table beta_data(const std::vector<GroupSummary>& rows);
 
 }  // namespace multicpg::experiments

@@ -3,12 +3,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <system_error>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/table.h"
 #include "report/subprocess.h"
 
 namespace multicpg::report {
@@ -22,56 +22,32 @@ constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
 constexpr const char* kFont = "DejaVu Sans,11";
 
 constexpr std::array<FigureInfo, 9> kFigures{{
-    {"gait", "fig02_gait", "gait.gp", 1200, 900,
+    {"gait", "fig02-gaits", "gait.gp", 1200, 900,
      "Fig. 2: gait diagrams for p = 1, 4, 5, 6, 8, 9 (blue = stance, white = swing)"},
-    {"cpg-sync", "fig06_cpg_sync", "cpg_sync.gp", 1200, 700,
+    {"cpg-sync", "fig06-cpg-sync", "cpg_sync.gp", 1200, 700,
      "Fig. 6: master and client CPG outputs, synchronised and free"},
-    {"learning-trace", "fig08_learning_trace", "learning_trace.gp", 1000, 550,
+    {"learning-trace", "fig08-learning-trace", "learning_trace.gp", 1000, 550,
      "Fig. 8: deviation per trial of one learning run"},
-    {"motor", "fig09_motor_outputs", "motor_outputs.gp", 1200, 1000,
+    {"motor", "fig09-motor", "motor_outputs.gp", 1200, 1000,
      "Fig. 9: the 18 motor outputs after learning"},
-    {"contacts", "fig10_foot_contacts", "foot_contacts.gp", 1200, 800,
+    {"contacts", "fig10-contacts", "foot_contacts.gp", 1200, 800,
      "Fig. 10: foot contact signals of the legs"},
-    {"learning-hexapod", "fig11_learning_hexapod", "learning_summary.gp", 1200, 800,
+    {"learning-hexapod", "fig11-hexapod", "learning_summary.gp", 1200, 800,
      "Fig. 11: learning results per disabled-leg scenario, hexapod"},
-    {"learning-quadruped", "fig13_learning_quadruped", "learning_summary.gp", 900, 800,
+    {"learning-quadruped", "fig13-quadruped", "learning_summary.gp", 900, 800,
      "Fig. 13: learning results per disabled leg, quadruped"},
-    {"beta", "fig14_beta", "beta_study.gp", 1000, 600,
+    {"beta", "fig14-beta", "beta_study.gp", 1000, 600,
      "Fig. 14: trials to converge for each annealing factor beta"},
-    {"trunk-path", "trunk_path", "trunk_path.gp", 1000, 700,
-     "Trunk path seen from above, before and after learning"},
+    {"trunk-path", "trunk-path-r1", "trunk_path.gp", 1000, 700,
+     "Trunk path seen from above, R1 disabled, before and after learning"},
 }};
 
 // --- CSV -------------------------------------------------------------------------------------
 
-// Room for any double in shortest round-trip form (at most 24 characters).
-constexpr std::size_t kNumberChars = 32;
-
-std::string number(double value) {
-  if (!std::isfinite(value)) return "NaN";
-  std::array<char, kNumberChars> buf{};
-  const auto [end, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), value);
-  return ec == std::errc() ? std::string(buf.data(), end) : "NaN";
-}
-
-// RFC 4180 quoting, only where a field needs it.
-std::string field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
 class Csv {
  public:
   explicit Csv(const std::vector<std::string>& header) { row(header); }
-  void row(const std::vector<std::string>& fields) {
-    for (std::size_t i = 0; i < fields.size(); ++i) {
-      if (i > 0) text_ += ',';
-      text_ += field(fields[i]);
-    }
-    text_ += '\n';
-  }
+  void row(const std::vector<std::string>& fields) { text_ += csv_line(fields); }
   // A blank line: gnuplot starts a new line segment there (used between polylines).
   void gap() { text_ += '\n'; }
   const std::string& text() const { return text_; }
@@ -108,7 +84,7 @@ class Params {
     return *this;
   }
   Params& num(const std::string& name, double value) {
-    code_ += name + "=" + number(value) + "; ";
+    code_ += name + "=" + shortest(value) + "; ";
     return *this;
   }
   const std::string& code() const { return code_; }
@@ -280,9 +256,9 @@ FigureFiles plot_cpg_sync(const std::vector<CpgPairPoint>& synchronised,
   for (std::size_t t = 0; t < synchronised.size(); ++t) {
     const CpgPairPoint& s = synchronised[t];
     const CpgPairPoint& f = independent[t];
-    csv.row({std::to_string(t), number(s.master_x1), number(s.master_x2), number(s.client_x1),
-             number(s.client_x2), number(f.master_x1), number(f.master_x2), number(f.client_x1),
-             number(f.client_x2)});
+    csv.row({std::to_string(t), shortest(s.master_x1), shortest(s.master_x2), shortest(s.client_x1),
+             shortest(s.client_x2), shortest(f.master_x1), shortest(f.master_x2),
+             shortest(f.client_x1), shortest(f.client_x2)});
   }
   Params params;
   params.num("master_period", master_period).num("client_period", client_period);
@@ -318,8 +294,8 @@ FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
       reference = trial.deviation_deg;
       accepted = trial.periods;
     }
-    std::vector<std::string> row{std::to_string(trial.trial), number(trial.deviation_deg),
-                                 trial.accepted ? "1" : "0", number(reference), change};
+    std::vector<std::string> row{std::to_string(trial.trial), shortest(trial.deviation_deg),
+                                 trial.accepted ? "1" : "0", shortest(reference), change};
     for (int p : trial.periods) row.push_back(std::to_string(p));
     csv.row(row);
   }
@@ -342,9 +318,10 @@ FigureFiles plot_motor_outputs(const MotorTrace& motor, const std::vector<std::s
   }
   Csv csv(header);
   for (std::size_t t = 0; t < motor.size(); ++t) {
-    std::vector<std::string> row{std::to_string(t), number(static_cast<double>(t) * step_seconds)};
+    std::vector<std::string> row{std::to_string(t),
+                                 shortest(static_cast<double>(t) * step_seconds)};
     for (const auto& joints : motor[t]) {
-      for (double m : joints) row.push_back(number(m));
+      for (double m : joints) row.push_back(shortest(m));
     }
     csv.row(row);
   }
@@ -369,7 +346,8 @@ FigureFiles plot_foot_contacts(const std::vector<std::vector<bool>>& contact,
   header.insert(header.end(), legs.begin(), legs.end());
   Csv csv(header);
   for (std::size_t t = 0; t < contact.size(); ++t) {
-    std::vector<std::string> row{std::to_string(t), number(static_cast<double>(t) * step_seconds)};
+    std::vector<std::string> row{std::to_string(t),
+                                 shortest(static_cast<double>(t) * step_seconds)};
     for (bool c : contact[t]) row.push_back(c ? "1" : "0");
     csv.row(row);
   }
@@ -390,11 +368,11 @@ FigureFiles plot_learning_summary(const std::vector<ScenarioSummary>& scenarios,
   for (const ScenarioSummary& s : scenarios) {
     require(s.share_converged >= 0.0 && s.share_converged <= 1.0, info.name,
             "share converged of " + s.scenario + " is outside 0..1");
-    const std::string label = s.no_deviation
-                                  ? "n/d"
-                                  : std::to_string(std::lround(100.0 * s.share_converged)) + "%";
-    csv.row({s.scenario, number(s.mean_trials), number(s.sd_trials), number(s.mean_deviation_deg),
-             number(s.sd_deviation_deg), number(s.share_converged), label});
+    const std::string label =
+        s.no_deviation ? "n/d" : std::to_string(std::lround(100.0 * s.share_converged)) + "%";
+    csv.row({s.scenario, shortest(s.mean_trials), shortest(s.sd_trials),
+             shortest(s.mean_deviation_deg), shortest(s.sd_deviation_deg),
+             shortest(s.share_converged), label});
   }
   Params params;
   params.text("robot", robot).num("threshold", threshold_deg);
@@ -409,8 +387,8 @@ FigureFiles plot_beta_study(const std::vector<BetaSummary>& betas, std::string_v
   Csv csv({"beta", "mean_trials", "sd_trials", "share_converged"});
   for (const BetaSummary& b : betas) {
     require(b.beta >= 0.0, info.name, "beta must not be negative");
-    csv.row(
-        {number(b.beta), number(b.mean_trials), number(b.sd_trials), number(b.share_converged)});
+    csv.row({shortest(b.beta), shortest(b.mean_trials), shortest(b.sd_trials),
+             shortest(b.share_converged)});
   }
   Params params;
   params.text("disabled_legs", disabled_legs);
@@ -425,7 +403,7 @@ FigureFiles plot_trunk_paths(const TrunkPaths& paths, const fs::path& out_dir,
   // One block per polyline, blocks separated by a blank line so gnuplot breaks the line there.
   Csv csv({"series", "x_m", "y_m"});
   const auto block = [&csv](const std::string& series, const std::vector<Point2>& points) {
-    for (const Point2& p : points) csv.row({series, number(p.x), number(p.y)});
+    for (const Point2& p : points) csv.row({series, shortest(p.x), shortest(p.y)});
     csv.gap();
   };
   block("before", paths.before);

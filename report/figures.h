@@ -15,11 +15,6 @@
 
 namespace multicpg::report {
 
-// One controller step of the paper's robot: 27 Hz (SPEC §0).
-inline constexpr double kPaperStepSeconds = 0.037;
-// The paper's deviation threshold E_req in degrees (SPEC §6).
-inline constexpr double kPaperThresholdDeg = 8.0;
-
 struct FigureFiles {
   std::filesystem::path png;
   std::filesystem::path svg;

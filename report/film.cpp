@@ -1,20 +1,20 @@
 #include "report/film.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <future>
 #include <memory>
 #include <sstream>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/table.h"
 
 namespace multicpg::report {
 namespace {
 
 std::string fmt_deviation(const std::string& prefix, double deg) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f deg", deg);
-  return prefix + text;
+  return prefix + fixed(deg, 1) + " deg";
 }
 
 }  // namespace
@@ -28,22 +28,82 @@ FilmFormat film_format(const std::filesystem::path& out) {
 }
 
 Film::Film(const sim::SimModel& model, FilmSpec spec)
-    : model_(model),
-      spec_(std::move(spec)),
-      format_(film_format(spec_.out)),
-      renderer_(model.mj.get(), spec_.width, spec_.height) {
+    : model_(model), spec_(std::move(spec)), format_(film_format(spec_.out)) {
   require_writable_file(spec_.out);
   if (spec_.speed < 1) {
     throw BadInput("--speed must be at least 1, got " + std::to_string(spec_.speed));
   }
-  if (format_ == FilmFormat::video) {
-    const int fps = static_cast<int>(std::lround(1.0 / model.control_dt));
-    video_.emplace(spec_.out, spec_.width, spec_.height, fps);
+  if (format_ == FilmFormat::picture) {
+    renderer_.emplace(model.mj.get(), spec_.width, spec_.height);
+    return;
+  }
+  const int fps = static_cast<int>(std::lround(1.0 / model.control_dt));
+  video_.emplace(spec_.out, spec_.width, spec_.height, fps);
+  // The render thread opens its GL context itself (a context is current on one thread); wait
+  // for it so a missing GL platform fails here, not at the first frame.
+  std::promise<void> opened;
+  std::future<void> ready = opened.get_future();
+  worker_ = std::thread([this, &opened] {
+    std::optional<Renderer> renderer;
+    try {
+      renderer.emplace(model_.mj.get(), spec_.width, spec_.height);
+    } catch (...) {
+      opened.set_exception(std::current_exception());
+      return;
+    }
+    opened.set_value();
+    const std::unique_ptr<mjData, void (*)(mjData*)> data(mj_makeData(model_.mj.get()),
+                                                          mj_deleteData);
+    for (;;) {
+      Pose next;
+      {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, [this] { return closing_ || !queue_.empty(); });
+        if (queue_.empty()) return;
+        next = std::move(queue_.front());
+        queue_.pop_front();
+      }
+      try {
+        video_->add_frame(draw(*renderer, data.get(), next));
+      } catch (...) {
+        const std::lock_guard lock(mutex_);
+        failure_ = std::current_exception();
+        queue_.clear();
+        return;
+      }
+    }
+  });
+  try {
+    ready.get();
+  } catch (...) {
+    worker_.join();
+    throw;
   }
 }
 
-Image Film::frame(const sim::SimState& state, const std::string& caption) {
-  std::vector<std::string> red;
+Film::~Film() {
+  stop_worker();
+}
+
+void Film::stop_worker() {
+  if (!worker_.joinable()) return;
+  {
+    const std::lock_guard lock(mutex_);
+    closing_ = true;
+  }
+  wake_.notify_all();
+  worker_.join();
+}
+
+void Film::rethrow_failure() {
+  const std::lock_guard lock(mutex_);
+  if (failure_) std::rethrow_exception(failure_);
+}
+
+Film::Pose Film::pose(const sim::SimState& state, const std::string& caption) const {
+  Pose out;
+  const mjModel* m = model_.mj.get();
+  out.qpos.assign(state.data->qpos, state.data->qpos + m->nq);
   std::ostringstream periods;
   std::string disabled;
   const robot::Morphology& morph = model_.controller.morphology;
@@ -51,34 +111,51 @@ Image Film::frame(const sim::SimState& state, const std::string& caption) {
     const neural::LegState& leg = state.controller.legs[i];
     periods << (i ? " " : "") << morph.legs[i].name << "=" << leg.cpg.period;
     if (leg.disabled) {
-      red.push_back(morph.legs[i].name + "_");
+      out.red.push_back(morph.legs[i].name + "_");
       disabled += (disabled.empty() ? "" : " ") + morph.legs[i].name;
     }
   }
-  std::ostringstream time;
-  time.precision(1);
-  time << std::fixed << state.data->time << " s";
-  Overlay overlay;
-  overlay.titles = "Step\nTime\nPeriods\nDisabled";
-  overlay.values = std::to_string(state.step) + "\n" + time.str() + "\n" + periods.str() + "\n" +
-                   (disabled.empty() ? "none" : disabled);
+  out.overlay.titles = "Step\nTime\nPeriods\nDisabled";
+  out.overlay.values = std::to_string(state.step) + "\n" + fixed(state.data->time, 1) + " s\n" +
+                       periods.str() + "\n" + (disabled.empty() ? "none" : disabled);
   if (!caption.empty()) {
-    overlay.titles += "\n";
-    overlay.values += "\n" + caption;
+    out.overlay.titles += "\n";
+    out.overlay.values += "\n" + caption;
   }
-  return render_frame(renderer_, model_.mj.get(), state.data.get(), spec_.camera, red, overlay);
+  return out;
+}
+
+Image Film::draw(Renderer& renderer, mjData* data, const Pose& pose) const {
+  const mjModel* m = model_.mj.get();
+  std::copy(pose.qpos.begin(), pose.qpos.end(), data->qpos);
+  mj_fwdPosition(m, data);  // body and geom poses, the tracked subtree's centre, the lights
+  return render_frame(renderer, m, data, spec_.camera, pose.red, pose.overlay);
 }
 
 void Film::capture(const sim::SimState& state, const std::string& caption) {
-  if (video_ && state.step % spec_.speed == 0) video_->add_frame(frame(state, caption));
+  if (!video_ || state.step % spec_.speed != 0) return;
+  rethrow_failure();
+  Pose next = pose(state, caption);
+  {
+    const std::lock_guard lock(mutex_);
+    queue_.push_back(std::move(next));
+  }
+  wake_.notify_one();
 }
 
 void Film::finish() {
-  if (video_) video_->finish();
+  if (!video_) return;
+  stop_worker();
+  rethrow_failure();
+  video_->finish();
 }
 
 void Film::picture(const sim::SimState& state, const std::string& caption) {
-  write_png(frame(state, caption), spec_.out);
+  if (!renderer_) throw BadInput("'" + spec_.out.string() + "' is a video, not a picture");
+  const Pose p = pose(state, caption);
+  const mjModel* m = model_.mj.get();
+  const std::unique_ptr<mjData, void (*)(mjData*)> data(mj_makeData(m), mj_deleteData);
+  write_png(draw(*renderer_, data.get(), p), spec_.out);
 }
 
 void FilmObserver::on_step(const sim::SimModel& /*model*/, const sim::SimState& state) {

@@ -38,7 +38,7 @@ figcaption, .files { font-size: .9em; color: #555; }
 .ours { background: #f2f8ee; padding: .5em .8em; border-left: 4px solid #4c9a2a; }
 table { border-collapse: collapse; margin: 1em 0; font-size: .9em; }
 th, td { border: 1px solid #ccc; padding: .25em .5em; text-align: right; }
-th:first-child, td:first-child { text-align: left; }
+th.left, td.left { text-align: left; }
 .missing { color: #b00; font-weight: bold; }
 nav a { margin-right: 1em; }
 </style>)";
@@ -54,61 +54,15 @@ std::string sibling(const std::string& png, const char* ext) {
 
 }  // namespace
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-std::string to_markdown(const Table& t) {
-  std::ostringstream out;
-  auto row = [&](const std::vector<std::string>& cells) {
-    out << "|";
-    for (const std::string& c : cells) out << " " << c << " |";
-    out << "\n";
-  };
-  row(t.header);
-  out << "|";
-  for (std::size_t i = 0; i < t.header.size(); ++i) out << (i == 0 ? "---|" : "---:|");
-  out << "\n";
-  for (const auto& r : t.rows) row(r);
-  return out.str();
-}
-
-std::string to_html(const Table& t) {
-  std::ostringstream out;
-  out << "<table><thead><tr>";
-  for (const std::string& h : t.header) out << "<th>" << html_escape(h) << "</th>";
-  out << "</tr></thead><tbody>\n";
-  for (const auto& r : t.rows) {
-    out << "<tr>";
-    for (const std::string& c : r) out << "<td>" << html_escape(c) << "</td>";
-    out << "</tr>\n";
-  }
-  out << "</tbody></table>\n";
-  return out.str();
-}
-
 nlohmann::json to_json(const Section& s) {
   nlohmann::json tables = nlohmann::json::array();
-  for (const Table& t : s.tables) tables.push_back({{"header", t.header}, {"rows", t.rows}});
+  for (const Table& t : s.tables) {
+    nlohmann::json columns = nlohmann::json::array();
+    for (const Column& c : t.columns) {
+      columns.push_back({{"title", c.title}, {"left", c.align == Align::left}});
+    }
+    tables.push_back({{"columns", columns}, {"rows", t.rows}});
+  }
   return {{"id", s.id},         {"title", s.title},   {"paper", s.paper}, {"measured", s.measured},
           {"images", s.images}, {"videos", s.videos}, {"files", s.files}, {"tables", tables}};
 }
@@ -123,8 +77,13 @@ Section section_from_json(const nlohmann::json& j) {
   s.videos = j.at("videos").get<std::vector<std::string>>();
   s.files = j.at("files").get<std::vector<std::string>>();
   for (const nlohmann::json& t : j.at("tables")) {
-    s.tables.push_back({t.at("header").get<std::vector<std::string>>(),
-                        t.at("rows").get<std::vector<std::vector<std::string>>>()});
+    Table table;
+    for (const nlohmann::json& c : t.at("columns")) {
+      table.columns.push_back({c.at("title").get<std::string>(),
+                               c.at("left").get<bool>() ? Align::left : Align::right});
+    }
+    table.rows = t.at("rows").get<std::vector<std::vector<std::string>>>();
+    s.tables.push_back(std::move(table));
   }
   return s;
 }

@@ -6,16 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "common/table.h"
+
 namespace multicpg::report {
-
-// A table written once and shown as HTML (index.html) or Markdown (results files).
-struct Table {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
-
-std::string to_markdown(const Table& table);
-std::string to_html(const Table& table);
 
 // One part of the report, e.g. "Gaits (paper Fig. 2)". Paths are relative to index.html.
 struct Section {
@@ -36,7 +29,5 @@ Section section_from_json(const nlohmann::json& j);
 // in red, and sets <body data-media="ok"> or "broken:<files>" (read by the browser test).
 std::string index_html(const std::string& title, const std::string& intro,
                        const std::vector<Section>& sections);
-
-std::string html_escape(const std::string& text);
 
 }  // namespace multicpg::report

@@ -1,5 +1,6 @@
 // `multicpg reproduce`: every experiment of SPEC §8 — figures, tables, videos and the tunnel —
 // into one folder with an index.html that sets each beside what the paper reports (issue 5).
+// The stages themselves are in report/stages/ (one table, stage.h); this is the driver.
 #pragma once
 
 #include <cstdint>
@@ -13,24 +14,22 @@ namespace multicpg::report {
 struct ReproduceOptions {
   std::filesystem::path out;
   bool quick = false;  // fewer runs and faster videos: minutes, not tens of minutes
-  int jobs = 0;        // parallel learning runs; 0 = every core
+  int jobs = 0;        // parallel learning runs and stages; 0 = every core
   std::uint64_t seed = 1;
   bool progress = true;
-  // Stages to run (stage ids, see reproduce_stages()); empty = all. index.html shows those done.
+  // Stages to run (stage ids, see reproduce_stages()); empty = all; the stages they need run
+  // too. index.html shows those done.
   std::vector<std::string> only;
 };
-
-// Stage ids in order: gaits, cpg-sync, walking, learning-r1, hexapod-table, quadruped-table,
-// beta, tunnel.
-const std::vector<std::string>& reproduce_stages();
 
 // The stage that draws a figure of figures.h's registry (e.g. "motor" -> "learning-r1"); throws
 // BadInput naming the known figures for an unknown name.
 std::string stage_of_figure(std::string_view figure);
 
-// Runs every stage not yet done in `out` (each finished stage is saved at once, so a run
-// started again with the same options continues where it stopped) and writes out/index.html.
-// Throws BadInput for an unwritable folder or one made with other options.
+// Runs every stage not yet done in `out`, up to `jobs` stages at once (each finished stage is
+// saved at once, so a run started again with the same options continues where it stopped) and
+// writes out/index.html. Throws BadInput for an unwritable folder, an unknown stage or a folder
+// made with other options.
 void reproduce(const ReproduceOptions& options);
 
 }  // namespace multicpg::report

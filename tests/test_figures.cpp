@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "experiments/paper.h"
 #include "report/figures.h"
 #include "report/image.h"
 #include "tests/cli_runner.h"
@@ -23,6 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace multicpg::report;
+namespace paper = multicpg::experiments::paper;
 
 const std::vector<std::string> kHexapod{"R1", "R2", "R3", "L1", "L2", "L3"};
 // Share of pixels that must differ from the background for a picture to count as drawn.
@@ -150,8 +152,8 @@ TEST_F(FiguresTest, GaitDiagramsOfSixPeriods) {
       }
     }
   }
-  const auto files = plot_gait_diagrams(panels, kHexapod, kPaperStepSeconds, dir_);
-  EXPECT_EQ(files.png.filename(), "fig02_gait.png");
+  const auto files = plot_gait_diagrams(panels, kHexapod, paper::kStepSeconds, dir_);
+  EXPECT_EQ(files.png.filename(), "fig02-gaits.png");
   expect_figure(files, "gait", "period,leg,row,stance_start_step,stance_end_step", stance_runs);
   // p = 1 is "stop": every leg stands for the whole record (one run per leg).
   const auto rows = lines(read_text(files.csv));
@@ -184,7 +186,7 @@ TEST_F(FiguresTest, LearningTraceMarksAcceptedAndReference) {
       {2, 64.12, false, {4, 4, 9, 5, 4, 4}},
       {3, 5.2, true, {4, 5, 4, 5, 4, 4}},
   };
-  const auto files = plot_learning_trace(trials, kHexapod, kPaperThresholdDeg, dir_);
+  const auto files = plot_learning_trace(trials, kHexapod, paper::kThresholdDeg, dir_);
   expect_figure(files, "learning-trace",
                 "trial,deviation_deg,accepted,reference_deg,change,R1,R2,R3,L1,L2,L3",
                 trials.size());
@@ -204,7 +206,7 @@ TEST_F(FiguresTest, MotorOutputsOfEighteenJoints) {
     }
   }
   const std::vector<std::string> notes{"disabled", "p5", "p4", "p5", "p6", "p5"};
-  const auto files = plot_motor_outputs(motor, kHexapod, notes, kPaperStepSeconds, dir_);
+  const auto files = plot_motor_outputs(motor, kHexapod, notes, paper::kStepSeconds, dir_);
   std::string header = "step,time_s";
   for (const auto& leg : kHexapod) header += "," + leg + "_TC," + leg + "_CTr," + leg + "_FTi";
   expect_figure(files, "motor", header, kSteps);
@@ -218,7 +220,7 @@ TEST_F(FiguresTest, FootContactsPerLeg) {
     for (bool s : row) c.push_back(!s);
     contact.push_back(c);
   }
-  const auto files = plot_foot_contacts(contact, kHexapod, kPaperStepSeconds, dir_);
+  const auto files = plot_foot_contacts(contact, kHexapod, paper::kStepSeconds, dir_);
   expect_figure(files, "contacts", "step,time_s,R1,R2,R3,L1,L2,L3", contact.size());
 }
 
@@ -228,8 +230,8 @@ TEST_F(FiguresTest, LearningSummaryHexapodAndQuadruped) {
       {"R1+R2", 18.3, 9.9, 6.4, 1.2, 0.9},     {"R1+R3", 12.0, 5.5, 5.9, 1.7, 1.0},
       {"R1+R2+L3", 44.0, 30.1, 9.5, 4.4, 0.6}, {"R1+L1", 0.0, 0.0, 0.1, 0.0, 0.0, true},
   };
-  const auto hex = plot_learning_summary(hexapod, "hexapod", kPaperThresholdDeg, dir_);
-  EXPECT_EQ(hex.png.filename(), "fig11_learning_hexapod.png");
+  const auto hex = plot_learning_summary(hexapod, "hexapod", paper::kThresholdDeg, dir_);
+  EXPECT_EQ(hex.png.filename(), "fig11-hexapod.png");
   const std::string header =
       "scenario,mean_trials,sd_trials,mean_deviation_deg,sd_deviation_deg,share_converged,label";
   expect_figure(hex, "learning-hexapod", header, hexapod.size());
@@ -242,8 +244,8 @@ TEST_F(FiguresTest, LearningSummaryHexapodAndQuadruped) {
                                                {"R2", 5.5, 2.5, 3.9, 1.5, 1.0},
                                                {"L1", 7.1, 3.3, 5.0, 2.1, 1.0},
                                                {"L2", 6.0, 2.9, 4.2, 1.8, 1.0}};
-  const auto quad = plot_learning_summary(quadruped, "quadruped", kPaperThresholdDeg, dir_);
-  EXPECT_EQ(quad.png.filename(), "fig13_learning_quadruped.png");
+  const auto quad = plot_learning_summary(quadruped, "quadruped", paper::kThresholdDeg, dir_);
+  EXPECT_EQ(quad.png.filename(), "fig13-quadruped.png");
   expect_figure(quad, "learning-quadruped", header, quadruped.size());
 }
 
@@ -276,7 +278,7 @@ TEST_F(FiguresTest, TrunkPathsWithTunnelWalls) {
 
 TEST_F(FiguresTest, CustomStemKeepsFiguresApart) {
   const auto files = plot_foot_contacts({{true, false}, {false, true}}, {"R1", "L1"},
-                                        kPaperStepSeconds, dir_, "contacts_two_legs");
+                                        paper::kStepSeconds, dir_, "contacts_two_legs");
   EXPECT_EQ(files.svg, dir_ / "contacts_two_legs.svg");
   expect_csv(files.csv, "step,time_s,R1,L1", 2);
 }
@@ -299,7 +301,7 @@ TEST_F(FiguresTest, UnwritableDirectoryIsBadInput) {
   const fs::path blocker = dir_ / "file";
   std::ofstream(blocker) << "x";
   try {
-    plot_foot_contacts({{true}}, {"R1"}, kPaperStepSeconds, blocker / "sub");
+    plot_foot_contacts({{true}}, {"R1"}, paper::kStepSeconds, blocker / "sub");
     FAIL() << "no exception";
   } catch (const multicpg::BadInput& e) {
     EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
@@ -324,9 +326,9 @@ TEST_F(FiguresTest, GnuplotFailureIsOneLineRuntimeFailure) {
 }
 
 TEST_F(FiguresTest, RaggedDataIsBadInput) {
-  EXPECT_THROW(plot_foot_contacts({{true, false}, {true}}, {"R1", "L1"}, kPaperStepSeconds, dir_),
+  EXPECT_THROW(plot_foot_contacts({{true, false}, {true}}, {"R1", "L1"}, paper::kStepSeconds, dir_),
                multicpg::BadInput);
-  EXPECT_THROW(plot_gait_diagrams({}, kHexapod, kPaperStepSeconds, dir_), multicpg::BadInput);
+  EXPECT_THROW(plot_gait_diagrams({}, kHexapod, paper::kStepSeconds, dir_), multicpg::BadInput);
   EXPECT_THROW(plot_learning_trace({{0, 10, true, {4}}}, kHexapod, 8, dir_), multicpg::BadInput);
   // Nothing half-written was left behind.
   EXPECT_TRUE(fs::is_empty(dir_));

@@ -76,7 +76,7 @@ std::vector<Task> small_experiment() {
 
 std::string table_of(const std::vector<Task>& tasks, const RunnerOutcome& outcome) {
   const std::vector<GroupSummary> rows = summarize(hexapod(), tasks, outcome.results);
-  return scenario_table_csv(rows) + scenario_table_markdown(rows);
+  return to_csv(scenario_data(rows)) + to_markdown(scenario_table(rows));
 }
 
 TEST(Scenarios, HexapodHas24UpToMirror) {
@@ -237,7 +237,7 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
       summarize(quad, tasks, run_tasks(tasks, learn, options(one.path(), 1)).results);
   const std::vector<GroupSummary> again =
       summarize(quad, tasks, run_tasks(tasks, learn, options(two.path(), 2)).results);
-  EXPECT_EQ(scenario_table_csv(rows), scenario_table_csv(again));
+  EXPECT_EQ(to_csv(scenario_data(rows)), to_csv(scenario_data(again)));
   ASSERT_EQ(rows.size(), 4u);
   for (const GroupSummary& r : rows) {
     EXPECT_EQ(r.runs, 2);
@@ -289,21 +289,21 @@ TEST(Tables, SummariesAndFormatting) {
   EXPECT_EQ(rows[1].best_periods, "R2=9 R3=4 L1=4 L2=4 L3=4");
   EXPECT_DOUBLE_EQ(rows[1].trials.sd, 0.0);
 
-  EXPECT_EQ(scenario_table_csv(rows),
+  EXPECT_EQ(to_csv(scenario_data(rows)),
             "scenario,runs,converged,no_deviation,share_converged,final_deviation_mean_deg,"
             "final_deviation_sd_deg,trials_mean,trials_sd,best_periods,best_count\n"
             "R1,3,2,1,0.67,4.00,2.00,10.0,10.0,R2=5 R3=4 L1=4 L2=4 L3=4,1\n"
             "L1,1,1,0,1.00,1.00,0.00,5.0,0.0,R2=9 R3=4 L1=4 L2=4 L3=4,1\n");
-  EXPECT_EQ(beta_table_csv(rows),
+  EXPECT_EQ(to_csv(beta_data(rows)),
             "beta,runs,converged,share_converged,trials_mean,trials_sd,"
             "final_deviation_mean_deg,final_deviation_sd_deg\n"
             "R1,3,2,0.67,10.0,10.0,4.00,2.00\n"
             "L1,1,1,1.00,5.0,0.0,1.00,0.00\n");
-  const std::string md = scenario_table_markdown(rows);
+  const std::string md = to_markdown(scenario_table(rows));
   EXPECT_NE(
       md.find("| R1 | 3 | 0.67 | 1 | 4.00 ± 2.00 | 10.0 ± 10.0 | R2=5 R3=4 L1=4 L2=4 L3=4 (1) |"),
       std::string::npos);
-  EXPECT_NE(beta_table_markdown(rows).find("| L1 | 1 | 1.00 | 5.0 ± 0.0 | 1.00 ± 0.00 |"),
+  EXPECT_NE(to_markdown(beta_table(rows)).find("| L1 | 1 | 1.00 | 5.0 ± 0.0 | 1.00 ± 0.00 |"),
             std::string::npos);
 }
 

@@ -1,0 +1,36 @@
+// Fig. 14: the influence of the annealing factor β.
+#include "common/table.h"
+#include "experiments/paper.h"
+#include "experiments/scenarios.h"
+#include "report/stages/stage.h"
+
+namespace multicpg::report {
+
+Section beta_stage(const StageContext& ctx) {
+  const experiments::ExperimentTable t = experiments::run_beta_study(
+      ctx.experiment(robot::RobotKind::hexapod, "beta", ctx.sizes.beta_runs),
+      experiments::kBetaStudyValues);
+  std::vector<BetaSummary> bars;
+  const experiments::GroupSummary* most = nullptr;
+  for (const experiments::GroupSummary& g : t.rows) {
+    bars.push_back({std::stod(g.group), g.trials.mean, g.trials.sd, g.share_converged()});
+    if (most == nullptr || g.trials.mean > most->trials.mean) most = &g;
+  }
+  const experiments::Scenario scenario = experiments::beta_study_scenario();
+  const FigureFiles f = plot_beta_study(bars, scenario.name, ctx.dir("figures"));
+  return {"beta",
+          "Influence of β (Fig. 14)",
+          "R1 and R2 disabled, " + std::to_string(experiments::kBetaRuns) +
+              " runs per β: β = 0 (random search) needs the most trials; the search shortens as "
+              "β grows; a large β (greedy) can get stuck above " +
+              fixed(experiments::paper::kThresholdDeg, 0) + "°.",
+          std::to_string(t.rows.empty() ? 0 : t.rows.front().runs) +
+              " runs per β; the most trials on average at β = " +
+              (most ? most->group + " (" + fixed(most->trials.mean, 1) + ")" : "-") + ".",
+          {ctx.image(f)},
+          {},
+          {"experiments/beta/table.csv", "experiments/beta/table.md"},
+          {experiments::beta_table(t.rows)}};
+}
+
+}  // namespace multicpg::report

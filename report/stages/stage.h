@@ -1,0 +1,69 @@
+// The stages of `multicpg reproduce` (issue 12): one table of {id, figures, run}, one file per
+// stage, each a thin layer over the experiments' functions that turns their results into a
+// report Section (figures, tables, videos and what the paper says beside what we measured).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "experiments/learning_experiments.h"
+#include "report/figures.h"
+#include "report/html.h"
+#include "report/reproduce.h"
+
+namespace multicpg::report {
+
+// Runs per experiment and film speeds: the paper's (SPEC §8) or, with --quick, a few.
+struct Sizes {
+  int hexapod_runs, quadruped_runs, beta_runs;
+  int film_speed;         // controller steps per video frame of the learning film
+  int tunnel_film_speed;  // and of the tunnel films (slower: the walls are the point)
+  long walk_film_steps;   // steps of the walking videos, filmed in real time
+};
+
+// What a stage gets: the options, the sizes and the report folder.
+struct StageContext {
+  ReproduceOptions options;
+  Sizes sizes;
+  std::function<void(const std::string&)> progress;
+
+  // out/<name>, created.
+  std::filesystem::path dir(const std::string& name) const;
+  // A path relative to index.html.
+  std::string rel(const std::filesystem::path& file) const;
+  std::string image(const FigureFiles& files) const { return rel(files.png); }
+  // The experiment saved in out/experiments/<name> (resumable, runner.h).
+  experiments::ExperimentSpec experiment(robot::RobotKind kind, const std::string& name,
+                                         int runs) const;
+};
+
+struct Stage {
+  std::string_view id;
+  // The figures of figures.h's registry the stage draws (under their registry file names).
+  std::vector<std::string_view> figures;
+  Section (*run)(const StageContext&);
+  // Stages whose saved results this one reads (it starts after them).
+  std::vector<std::string_view> needs = {};
+};
+
+// Every stage, in the report's order.
+const std::vector<Stage>& reproduce_stages();
+// Throws BadInput naming the known stages for an unknown id.
+const Stage& stage_by_id(std::string_view id);
+
+Section gaits_stage(const StageContext& ctx);
+Section cpg_sync_stage(const StageContext& ctx);
+Section walking_stage(const StageContext& ctx);
+Section learning_r1_stage(const StageContext& ctx);
+Section hexapod_table_stage(const StageContext& ctx);
+Section quadruped_table_stage(const StageContext& ctx);
+Section beta_stage(const StageContext& ctx);
+Section tunnel_stage(const StageContext& ctx);
+
+// Leg names in morphology order (the figures' legend).
+std::vector<std::string> leg_names(const robot::Morphology& morph);
+
+}  // namespace multicpg::report

@@ -1,0 +1,70 @@
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "report/stages/stage.h"
+
+namespace multicpg::report {
+
+const std::vector<Stage>& reproduce_stages() {
+  static const std::vector<Stage> stages{
+      {"gaits", {"gait"}, gaits_stage},
+      {"cpg-sync", {"cpg-sync"}, cpg_sync_stage},
+      {"walking", {}, walking_stage},
+      {"learning-r1", {"learning-trace", "motor", "contacts", "trunk-path"}, learning_r1_stage},
+      {"hexapod-table", {"learning-hexapod"}, hexapod_table_stage},
+      {"quadruped-table", {"learning-quadruped"}, quadruped_table_stage},
+      {"beta", {"beta"}, beta_stage},
+      // "Our learning" in the tunnel is the hexapod table's most frequent learned combination.
+      {"tunnel", {}, tunnel_stage, {"hexapod-table"}},
+  };
+  return stages;
+}
+
+const Stage& stage_by_id(std::string_view id) {
+  std::string known;
+  for (const Stage& s : reproduce_stages()) {
+    if (s.id == id) return s;
+    known += (known.empty() ? "" : ", ") + std::string(s.id);
+  }
+  throw BadInput("unknown reproduce stage '" + std::string(id) + "' (known: " + known + ")");
+}
+
+std::string stage_of_figure(std::string_view figure) {
+  const std::string_view name = figure_by_name(figure).name;  // BadInput for unknown names
+  for (const Stage& s : reproduce_stages()) {
+    for (std::string_view f : s.figures) {
+      if (f == name) return std::string(s.id);
+    }
+  }
+  throw RuntimeFailure("no reproduce stage draws figure '" + std::string(name) + "'");
+}
+
+std::filesystem::path StageContext::dir(const std::string& name) const {
+  const std::filesystem::path d = options.out / name;
+  ensure_writable_dir(d);
+  return d;
+}
+
+std::string StageContext::rel(const std::filesystem::path& file) const {
+  return std::filesystem::relative(file, options.out).generic_string();
+}
+
+experiments::ExperimentSpec StageContext::experiment(robot::RobotKind kind, const std::string& name,
+                                                     int runs) const {
+  experiments::ExperimentSpec spec;
+  spec.kind = kind;
+  spec.runs = runs;
+  spec.seed = options.seed;
+  spec.jobs = options.jobs;
+  spec.out = dir("experiments/" + name);
+  spec.progress = options.progress;
+  spec.base.mode = learning::Mode::paper;  // the paper's experiments, its algorithm
+  return spec;
+}
+
+std::vector<std::string> leg_names(const robot::Morphology& morph) {
+  std::vector<std::string> out;
+  for (const robot::Leg& leg : morph.legs) out.push_back(leg.name);
+  return out;
+}
+
+}  // namespace multicpg::report
