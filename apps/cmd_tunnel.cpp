@@ -8,6 +8,7 @@
 #include "apps/commands.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/results_json.h"
 #include "apps/sim_flags.h"
 #include "apps/walk_flags.h"
 #include "common/errors.h"
@@ -75,16 +76,8 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   const std::string result =
       run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
   if (o.json) {
-    nlohmann::json j{{"passed", run.passed},       {"touched_wall", run.touched_wall},
-                     {"steps", run.steps},         {"forward_m", run.forward_m},
-                     {"lateral_m", run.lateral_m}, {"deviation_deg", run.deviation_deg}};
-    nlohmann::json periods = nlohmann::json::object();
-    for (std::size_t i = 0; i < morph.size(); ++i) periods[morph.legs[i].name] = spec.periods[i];
-    j["periods"] = periods;
-    if (learned) {
-      j["learning"] = learning::to_json(*learned, morph, spec.disabled);
-      j["options"] = learning::to_json(*learn, morph);
-    }
+    const nlohmann::json j = tunnel_json(morph, run, spec.periods, spec.disabled,
+                                         learned ? &*learned : nullptr, learn ? &*learn : nullptr);
     std::cout << j.dump(2) << "\n";
     return;
   }

@@ -43,10 +43,15 @@ Film::Film(const sim::SimModel& model, FilmSpec spec)
 }
 
 Image Film::frame(const sim::SimState& state, const std::string& caption) {
+  return film_frame(renderer_, model_, state, spec_.camera, caption);
+}
+
+Image film_frame(Renderer& renderer, const sim::SimModel& model, const sim::SimState& state,
+                 const CameraSpec& camera, const std::string& caption) {
   std::vector<std::string> red;
   std::ostringstream periods;
   std::string disabled;
-  const robot::Morphology& morph = model_.controller.morphology;
+  const robot::Morphology& morph = model.controller.morphology;
   for (std::size_t i = 0; i < morph.size(); ++i) {
     const neural::LegState& leg = state.controller.legs[i];
     periods << (i ? " " : "") << morph.legs[i].name << "=" << leg.cpg.period;
@@ -66,7 +71,7 @@ Image Film::frame(const sim::SimState& state, const std::string& caption) {
     overlay.titles += "\n";
     overlay.values += "\n" + caption;
   }
-  return render_frame(renderer_, model_.mj.get(), state.data.get(), spec_.camera, red, overlay);
+  return render_frame(renderer, model.mj.get(), state.data.get(), camera, red, overlay);
 }
 
 void Film::capture(const sim::SimState& state, const std::string& caption) {

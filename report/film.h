@@ -29,6 +29,12 @@ struct FilmSpec {
   CameraSpec camera;
 };
 
+// One frame as films draw it: the state from `camera`, failed legs red, the corner caption
+// (step, time, periods, disabled legs and `caption` if not empty). `renderer` must be of
+// `model`'s mjModel.
+Image film_frame(Renderer& renderer, const sim::SimModel& model, const sim::SimState& state,
+                 const CameraSpec& camera, const std::string& caption = {});
+
 class Film {
  public:
   // Checks the spec and opens the renderer and, for a video, the encoder (BadInput for a bad
