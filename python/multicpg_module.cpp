@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -158,6 +159,7 @@ struct State {
   sim::StepperCheckpoint checkpoint;
 };
 
+// A run, stepped through sim::Stepper. Methods that walk release the GIL.
 class Simulation {
  public:
   Simulation(std::shared_ptr<Robot> robot, const py::object& periods, const py::object& disable,
@@ -186,25 +188,35 @@ class Simulation {
                      std::to_string(n));
     }
     const py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
     stepper_->steps(n);
   }
 
   void set_periods(const py::object& periods) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const std::vector<int> p = parse_periods(robot_->morph(), periods);
     neural::set_periods(robot_->model->controller, stepper_->state().controller, p);
   }
 
   void set_failed(const py::object& legs, bool failed) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const std::vector<std::size_t> list = robot::parse_leg_list(robot_->morph(), leg_text(legs));
     if (list.empty()) throw BadInput("name at least one leg, e.g. \"R1\" or [\"R1\", \"R3\"]");
     stepper_->set_failed(list, failed);
   }
 
-  void synchronise(bool on) { neural::set_synchronised(stepper_->state().controller, on); }
+  void synchronise(bool on) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    neural::set_synchronised(stepper_->state().controller, on);
+  }
 
-  State state() const { return {robot_->model, stepper_->checkpoint()}; }
+  State state() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return {robot_->model, stepper_->checkpoint()};
+  }
 
   void restore(const State& s) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (s.model != robot_->model) {
       throw BadInput("restore: the state comes from a simulation of another Robot");
     }
@@ -219,6 +231,7 @@ class Simulation {
   }
 
   py::dict record() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     require_record("record");
     const auto rows = static_cast<py::ssize_t>(record_.rows());
     const auto legs = static_cast<py::ssize_t>(record_.legs);
@@ -243,6 +256,7 @@ class Simulation {
   }
 
   py::dict measure(long settle, long window) {
+    const std::lock_guard<std::mutex> lock(mutex_);
     require_record("measure");
     const long steps = static_cast<long>(record_.rows()) - 1 - settle;
     if (settle < 0 || steps <= 0) {
@@ -267,11 +281,13 @@ class Simulation {
   }
 
   py::tuple pose() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     const sim::Pose2 p = stepper_->pose();
     return py::make_tuple(p.x, p.y, p.yaw_deg);
   }
 
   std::vector<int> periods() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     std::vector<int> out;
     for (const neural::LegState& leg : stepper_->state().controller.legs) {
       out.push_back(leg.cpg.period);
@@ -280,6 +296,7 @@ class Simulation {
   }
 
   std::vector<std::string> failed() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
     std::vector<std::string> out;
     for (std::size_t i = 0; i < stepper_->failed().size(); ++i) {
       if (stepper_->failed()[i]) out.push_back(robot_->morph().legs[i].name);
@@ -287,14 +304,21 @@ class Simulation {
     return out;
   }
 
-  long step_count() const { return stepper_->step_count(); }
-  double time() const { return stepper_->state().data->time; }
+  long step_count() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return stepper_->step_count();
+  }
+  double time() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return stepper_->state().data->time;
+  }
   const std::shared_ptr<Robot>& robot() const { return robot_; }
 
   py::array_t<std::uint8_t> render(int width, int height, const std::string& caption) {
     report::Image image;
     {
       const py::gil_scoped_release release;
+      const std::lock_guard<std::mutex> lock(mutex_);
       if (!renderer_ || renderer_->width() != width || renderer_->height() != height) {
         renderer_.reset();
         renderer_ = std::make_unique<report::Renderer>(robot_->model->mj.get(), width, height);
@@ -314,6 +338,7 @@ class Simulation {
                      std::to_string(steps));
     }
     const py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
     report::FilmSpec spec;
     spec.out = out;
     spec.width = width;
@@ -350,6 +375,8 @@ class Simulation {
   CpgRecorder recorder_;
   std::unique_ptr<sim::Stepper> stepper_;
   std::unique_ptr<report::Renderer> renderer_;
+  // Python threads may share a Simulation: its methods take turns (step() without the GIL).
+  mutable std::mutex mutex_;
 };
 
 // Calls a Python function at the end of every learning trial (with the GIL held).

@@ -100,6 +100,20 @@ def test_threads_give_what_one_after_the_other_gives(hexapod):
             np.testing.assert_array_equal(sequential[i][key], parallel[i][key])
 
 
+def test_threads_sharing_one_simulation_take_turns(hexapod):
+    shared = multicpg.Simulation(hexapod, disable="R2")
+    threads = [threading.Thread(target=lambda: [shared.step(10) for _ in range(15)])
+               for _ in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    alone = multicpg.Simulation(hexapod, disable="R2")
+    alone.step(300)
+    assert shared.step_count == 300
+    np.testing.assert_array_equal(shared.record()["position"], alone.record()["position"])
+
+
 def test_learn_equals_the_cli_and_calls_the_observer():
     args = ("--mode", "paper", "--disable", "R1", "--seed", "5", "--max-trials", "3")
     cli = cli_json("learn", *args)
