@@ -17,6 +17,7 @@
 #include "apps/options.h"
 #include "apps/results_json.h"
 #include "apps/sim_flags.h"
+#include "apps/tunnel_command.h"
 #include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
@@ -79,10 +80,10 @@ std::string leg_text(const py::object& legs) {
   return text;
 }
 
-// Periods given as 4, "R1=5,R2=4" or one number per leg, parsed as `--periods`.
-std::vector<int> parse_periods(const robot::Morphology& morph, const py::object& periods) {
+// Periods given as 4, "R1=5,R2=4" or one number per leg, as the text of `--periods`.
+std::string periods_text(const robot::Morphology& morph, const py::object& periods) {
   if (py::isinstance<py::int_>(periods) || py::isinstance<py::str>(periods)) {
-    return apps::parse_periods(morph, py::str(periods).cast<std::string>());
+    return py::str(periods).cast<std::string>();
   }
   const auto list = periods.cast<std::vector<int>>();
   if (list.size() != morph.size()) {
@@ -93,12 +94,11 @@ std::vector<int> parse_periods(const robot::Morphology& morph, const py::object&
   for (std::size_t i = 0; i < list.size(); ++i) {
     text += (i ? "," : "") + morph.legs[i].name + "=" + std::to_string(list[i]);
   }
-  return apps::parse_periods(morph, text);
+  return text;
 }
 
-apps::SimFlags sim_flags(double control_dt, std::optional<double> physics_dt,
-                         std::optional<double> servo_gain) {
-  return {control_dt, physics_dt, servo_gain};
+std::vector<int> parse_periods(const robot::Morphology& morph, const py::object& periods) {
+  return apps::parse_periods(morph, periods_text(morph, periods));
 }
 
 // A robot and its simulation model, shared read-only by every Simulation of it.
@@ -115,7 +115,7 @@ std::shared_ptr<Robot> make_robot(const std::string& name, bool tunnel, double c
                                   std::optional<double> servo_gain) {
   auto r = std::make_shared<Robot>();
   r->kind = robot::parse_robot(name);
-  r->options = apps::sim_options(sim_flags(control_dt, physics_dt, servo_gain));
+  r->options = apps::sim_options({control_dt, physics_dt, servo_gain});
   r->options.scene.tunnel = tunnel;
   r->model = std::make_shared<const sim::SimModel>(sim::make_sim_model(r->kind, r->options));
   return r;
@@ -240,7 +240,6 @@ class Simulation {
     for (std::size_t i = 0; i < record_.rows(); ++i) {
       position.insert(position.end(), {record_.x[i], record_.y[i], record_.z[i]});
     }
-    std::vector<bool> contact(record_.contact.begin(), record_.contact.end());
     py::array_t<bool> contact_array({rows, legs});
     std::copy(record_.contact.begin(), record_.contact.end(), contact_array.mutable_data());
     py::dict out;
@@ -446,9 +445,7 @@ struct LearnArgs {
   apps::LearningFlags flags;
 };
 
-learning::CompensationOptions learn_options(const robot::Morphology& morph, const LearnArgs& a,
-                                            const sim::FaultTimeline* shorthand) {
-  if (shorthand != nullptr) return apps::compensation_options(a.flags, morph, *shorthand);
+learning::CompensationOptions learn_options(const robot::Morphology& morph, const LearnArgs& a) {
   apps::WalkFlags w;
   w.disable = leg_text(a.disable);
   w.disable_at = a.disable_at;
@@ -461,7 +458,7 @@ py::dict learn(const py::object& robot_object, const LearnArgs& args, bool recor
                const py::object& observer) {
   const std::shared_ptr<Robot> robot = robot_arg(robot_object);
   const robot::Morphology& morph = robot->morph();
-  const learning::CompensationOptions options = learn_options(morph, args, nullptr);
+  const learning::CompensationOptions options = learn_options(morph, args);
   TrialCallback callback(observer, morph);
   experiments::LearningRun run;
   {
@@ -474,63 +471,18 @@ py::dict learn(const py::object& robot_object, const LearnArgs& args, bool recor
   return out;
 }
 
-py::dict tunnel(const std::string& disable_text, const py::object& periods_arg, bool learn_first,
-                const LearnArgs& args, long max_steps, const std::string& video,
-                const apps::SimFlags& sim_flags_given, const py::object& observer) {
+py::dict tunnel(const apps::TunnelRequest& request, const py::object& observer) {
   const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
-  experiments::TunnelSpec spec;
-  spec.disabled = robot::parse_leg_list(morph, disable_text);
-  apps::require_working_leg(morph, spec.disabled);
-  spec.periods = parse_periods(morph, periods_arg.is_none() ? py::int_(4) : periods_arg);
-  apps::require_positive(max_steps, "--max-steps");
-  spec.max_steps = max_steps;
-  std::optional<learning::CompensationOptions> options;
-  if (learn_first) {
-    if (!periods_arg.is_none()) {
-      throw BadInput("--periods and --learn exclude each other: --learn finds them");
-    }
-    const sim::FaultTimeline faults = sim::fail_at(spec.disabled, 0);
-    options = learn_options(morph, args, &faults);
-  }
-  if (!video.empty() && report::film_format(video) != report::FilmFormat::video) {
-    throw BadInput("--video must name an .mp4 file");
-  }
-  const sim::SimOptions open_options = apps::sim_options(sim_flags_given);
-  sim::SimOptions corridor_options = open_options;
-  corridor_options.scene.tunnel = true;
   TrialCallback callback(observer, morph);
-  experiments::TunnelRun run;
-  std::optional<learning::LearningResult> learned;
+  apps::TunnelOutcome out;
   {
     const py::gil_scoped_release release;
-    const sim::SimModel corridor = sim::make_sim_model(robot::RobotKind::hexapod, corridor_options);
-    std::optional<report::Film> film;
-    std::optional<report::FilmObserver> film_observer;
-    if (!video.empty()) {
-      report::FilmSpec film_spec;
-      film_spec.out = video;
-      film.emplace(corridor, film_spec);
-      film_observer.emplace(*film, "tunnel 3.0 m x 1.2 m");
-    }
-    sim::Observer* watch = film_observer ? &*film_observer : nullptr;
-    if (options) {
-      const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod, open_options);
-      experiments::LearnedTunnelRun r = experiments::run_tunnel_after_learning(
-          open, corridor, *options, max_steps, watch, &callback);
-      run = std::move(r.tunnel);
-      learned = std::move(r.learning);
-      spec.periods = learned->periods;
-    } else {
-      run = experiments::run_tunnel(corridor, spec, watch);
-    }
-    if (film) film->finish();
+    out = apps::run_tunnel_command(request, &callback);
   }
-  py::dict out =
-      to_python(apps::tunnel_json(morph, run, spec.periods, spec.disabled,
-                                  learned ? &*learned : nullptr, options ? &*options : nullptr));
-  if (learned) out["trace_arrays"] = trace_arrays(learned->trace, morph.size());
-  out["path"] = path_arrays(run.record);
-  return out;
+  py::dict result = to_python(apps::tunnel_json(morph, out));
+  if (out.learned) result["trace_arrays"] = trace_arrays(out.learned->trace, morph.size());
+  result["path"] = path_arrays(out.run.record);
+  return result;
 }
 
 // The annealing search of learning/annealing.h, one call per step, for agents written in
@@ -820,15 +772,20 @@ PYBIND11_MODULE(_multicpg, m) {
                        std::optional<long> settle, int max_trials, std::uint64_t seed,
                        double control_dt, std::optional<double> physics_dt,
                        std::optional<double> servo_gain, const py::object& observer) {
-        const mp::LearnArgs args{
-            disable,
-            0,
-            {},
-            {},
+        multicpg::apps::TunnelRequest request;
+        request.disable = mp::leg_text(disable);
+        if (!periods.is_none()) {
+          request.periods = mp::periods_text(
+              multicpg::robot::morphology(multicpg::robot::RobotKind::hexapod), periods);
+        }
+        request.learn = learn;
+        request.learning =
             learning_flags(mode, steering, hold_windows, monitor_windows, period_learning, beta,
-                           threshold, window, settle, max_trials, seed)};
-        return mp::tunnel(mp::leg_text(disable), periods, learn, args, max_steps, video,
-                          {control_dt, physics_dt, servo_gain}, observer);
+                           threshold, window, settle, max_trials, seed);
+        request.max_steps = max_steps;
+        request.video = video;
+        request.sim = {control_dt, physics_dt, servo_gain};
+        return mp::tunnel(request, observer);
       },
       py::kw_only(), py::arg("disable") = py::none(), py::arg("periods") = py::none(),
       py::arg("learn") = false, py::arg("max_steps") = multicpg::experiments::kTunnelMaxSteps,

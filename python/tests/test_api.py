@@ -135,6 +135,16 @@ def test_tunnel_equals_the_cli():
     assert py == cli
     assert path["x"].shape == (cli["steps"] + 1,)
 
+    learn = ("--mode", "paper", "--max-trials", "2", "--max-steps", "500")
+    cli = cli_json("tunnel", "--disable", "R1", "--learn", *learn)
+    trials = []
+    py = multicpg.tunnel(disable=["R1"], learn=True, mode="paper", max_trials=2, max_steps=500,
+                         observer=trials.append)
+    del py["path"]
+    arrays = py.pop("trace_arrays")
+    assert py == cli
+    assert len(trials) == len(arrays["trial"]) == cli["learning"]["trials"]
+
 
 def test_bad_arguments_raise_value_error_with_the_cli_message(hexapod):
     with pytest.raises(ValueError) as e:
