@@ -561,6 +561,13 @@ PYBIND11_MODULE(_multicpg, m) {
     }
   });
 
+  // The CLI's defaults, for Python code that walks the same runs (multicpg.env).
+  m.attr("DEFAULT_THRESHOLD_DEG") = multicpg::learning::kDefaultThresholdDeg;
+  m.attr("DEFAULT_WINDOW_STEPS") = multicpg::learning::kDefaultWindowSteps;
+  m.attr("DEFAULT_MAX_TRIALS") = multicpg::learning::kDefaultMaxTrials;
+  m.attr("DEFAULT_BETA") = multicpg::learning::kDefaultBeta;
+  m.attr("DETECTION_WINDOWS") = multicpg::learning::kDefaultDetectionWindows;
+
   py::class_<mp::Robot, std::shared_ptr<mp::Robot>>(
       m, "Robot",
       "A robot (hexapod, quadruped or octopod) and its MuJoCo model, shared read-only by every\n"
@@ -674,7 +681,7 @@ PYBIND11_MODULE(_multicpg, m) {
       .def_property_readonly("step_count", &mp::Simulation::step_count,
                              "controller steps walked (warm-up excluded)")
       .def_property_readonly("time", &mp::Simulation::time, "simulated time, s")
-      .def_property_readonly("robot", &mp::Simulation::robot);
+      .def_property_readonly("robot", &mp::Simulation::robot, "the Robot walking");
 
   m.def(
       "render",
@@ -823,8 +830,9 @@ PYBIND11_MODULE(_multicpg, m) {
       .def("decide", &mp::Annealer::decide, py::arg("deviation_deg"),
            "Keeps or rejects the proposed combination given its measured deviation E (deg);\n"
            "returns accepted, probability and stop (running, below_threshold, trial_cap, ...).")
-      .def_property_readonly("stop", &mp::Annealer::stop)
-      .def_property_readonly("trials", &mp::Annealer::trials)
+      .def_property_readonly("stop", &mp::Annealer::stop,
+                             "running, below_threshold, trial_cap or space_exhausted")
+      .def_property_readonly("trials", &mp::Annealer::trials, "trials decided")
       .def_property_readonly("accepted", &mp::Annealer::accepted, "the accepted combination C(n)")
       .def_property_readonly("e_ref", &mp::Annealer::e_ref, "its deviation")
       .def_property_readonly("working", &mp::Annealer::working, "legs whose period may change")

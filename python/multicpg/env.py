@@ -11,11 +11,9 @@ gives the trace `multicpg learn --mode paper` gives for the same seed.
 
 import numpy as np
 
-from ._multicpg import Annealer, Robot, Simulation, measure_window
-
-# Windows walked after the failure without a deviation above the threshold before reset() says
-# "no deviation" (learning/compensation.h kDefaultDetectionWindows).
-DETECTION_WINDOWS = 5
+from ._multicpg import (DEFAULT_BETA, DEFAULT_MAX_TRIALS, DEFAULT_THRESHOLD_DEG,
+                        DEFAULT_WINDOW_STEPS, DETECTION_WINDOWS, Annealer, Robot, Simulation,
+                        measure_window)
 
 
 class CompensationEnv:
@@ -28,8 +26,9 @@ class CompensationEnv:
     The environment itself draws no random numbers: reset's seed is kept in info for the agent.
     """
 
-    def __init__(self, robot="hexapod", disable="R1", disable_at=0, threshold=8.0,
-                 window=400, settle=None, max_trials=200):
+    def __init__(self, robot="hexapod", disable="R1", disable_at=0,
+                 threshold=DEFAULT_THRESHOLD_DEG, window=DEFAULT_WINDOW_STEPS, settle=None,
+                 max_trials=DEFAULT_MAX_TRIALS):
         self.robot = robot if isinstance(robot, Robot) else Robot(robot)
         self.disable = disable
         self.disable_at = disable_at
@@ -77,6 +76,7 @@ class CompensationEnv:
             measure = self._measure()
             if abs(measure["yaw_deg"]) > self.threshold:
                 break
+            # After the failure: DETECTION_WINDOWS windows without a deviation end the run.
             if self.sim.step_count > self.disable_at:
                 windows_since_failure += 1
                 if windows_since_failure >= DETECTION_WINDOWS:
@@ -112,7 +112,7 @@ class CompensationEnv:
 class AnnealingAgent:
     """The paper's simulated annealing as an agent on CompensationEnv (multicpg.Annealer)."""
 
-    def __init__(self, beta=0.5):
+    def __init__(self, beta=DEFAULT_BETA):
         self.beta = beta
 
     def run(self, env, seed=1):
