@@ -22,7 +22,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=".", help="directory for the PNGs")
     parser.add_argument("--mode", default="paper", help="paper or robust (as multicpg learn)")
-    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--seed", type=int, default=5, help="seed of the learning run")
     parser.add_argument("--max-trials", type=int, default=200)
     parser.add_argument("--steps", type=int, default=2000, help="steps of each path walked")
     args = parser.parse_args()
@@ -34,7 +34,7 @@ def main():
                             max_trials=args.max_trials)
     learned = [result["periods"][leg] for leg in robot.legs]
     print(f"{result['status']} after {result['trials']} trials: "
-          + " ".join(f"{leg}={p}" for leg, p in result["periods"].items() if leg != "R1"))
+          + " ".join(f"{leg}={result['periods'][leg]}" for leg in robot.legs if leg != "R1"))
 
     fig, ax = plt.subplots(figsize=(6, 5))
     for label, periods in (("before learning (all 4)", 4), ("after learning", learned)):
@@ -51,11 +51,13 @@ def main():
 
     trace = result["trace_arrays"]
     fig, ax = plt.subplots(figsize=(6, 4))
+    ax.bar([0], [result["initial_deviation_deg"]], color="tab:grey", label="detecting window")
     colours = ["tab:green" if kept else "tab:red" for kept in trace["accepted"]]
     ax.bar(trace["trial"], trace["deviation_deg"], color=colours)
     ax.axhline(result["threshold_deg"], color="black", linestyle="--", label="threshold")
+    ax.set_xticks(range(0, result["trials"] + 1))
     ax.set_xlabel("trial")
-    ax.set_ylabel("deviation per 400-step window (deg)")
+    ax.set_ylabel(f"deviation per {result['window_steps']}-step window (deg)")
     ax.set_title("Deviation per trial (green kept, red rejected)")
     ax.legend()
     fig.savefig(out / "deviation.png", dpi=100)

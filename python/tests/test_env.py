@@ -6,7 +6,6 @@ import sys
 
 import numpy as np
 
-import multicpg
 from multicpg.env import AnnealingAgent, CompensationEnv
 from conftest import SOURCE_DIR, cli_json
 
