@@ -829,9 +829,9 @@ PYBIND11_MODULE(_multicpg, m) {
            "The next combination (one period per leg) to try, or None when the search is over.")
       .def("decide", &mp::Annealer::decide, py::arg("deviation_deg"),
            "Keeps or rejects the proposed combination given its measured deviation E (deg);\n"
-           "returns accepted, probability and stop (running, below_threshold, trial_cap, ...).")
+           "returns accepted, probability and stop (running, below threshold, trial cap, ...).")
       .def_property_readonly("stop", &mp::Annealer::stop,
-                             "running, below_threshold, trial_cap or space_exhausted")
+                             "running, below threshold, trial cap or space exhausted")
       .def_property_readonly("trials", &mp::Annealer::trials, "trials decided")
       .def_property_readonly("accepted", &mp::Annealer::accepted, "the accepted combination C(n)")
       .def_property_readonly("e_ref", &mp::Annealer::e_ref, "its deviation")

@@ -9,8 +9,8 @@ import numpy as np
 from multicpg.env import AnnealingAgent, CompensationEnv
 from conftest import SOURCE_DIR, cli_json
 
-SEED = 2
-MAX_TRIALS = 4
+SEED = 5  # 8 trials to converge: kept, rejected and probabilistic decisions
+MAX_TRIALS = 6  # stops the run at the trial cap
 
 
 def test_the_annealing_agent_gives_the_trace_of_learn_paper():
@@ -25,6 +25,7 @@ def test_the_annealing_agent_gives_the_trace_of_learn_paper():
         [t["deviation_deg"] for t in annealer.trace]
     assert [t["accepted"] for t in cli["trace"]] == [t["accepted"] for t in annealer.trace]
     assert [cli["periods"][leg] for leg in legs] == annealer.accepted
+    assert annealer.stop == cli["reason"] == "trial cap"
 
 
 def test_env_steps_are_gymnasium_shaped():
