@@ -831,7 +831,7 @@ PYBIND11_MODULE(_multicpg, m) {
            "Keeps or rejects the proposed combination given its measured deviation E (deg);\n"
            "returns accepted, probability and stop (running, below threshold, trial cap, ...).")
       .def_property_readonly("stop", &mp::Annealer::stop,
-                             "running, below threshold, trial cap or space exhausted")
+                             "running, below threshold, trial cap or search space exhausted")
       .def_property_readonly("trials", &mp::Annealer::trials, "trials decided")
       .def_property_readonly("accepted", &mp::Annealer::accepted, "the accepted combination C(n)")
       .def_property_readonly("e_ref", &mp::Annealer::e_ref, "its deviation")
