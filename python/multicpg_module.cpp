@@ -168,14 +168,14 @@ class Simulation {
       : robot_(std::move(robot)), recording_(record) {
     apps::WalkFlags flags;
     flags.robot = std::string(robot::to_string(robot_->kind));
-    flags.periods = "4";
+    flags.periods = periods_text(robot_->morph(), periods);
     flags.disable = leg_text(disable);
     flags.disable_at = disable_at;
     flags.faults = faults;
     flags.recoveries = recoveries;
     flags.warmup = warmup;
     const apps::WalkChoice choice = apps::parse_walk_flags(flags);
-    const sim::StartSpec start{parse_periods(robot_->morph(), periods), choice.warmup};
+    const sim::StartSpec start{choice.periods, choice.warmup};
     stepper_ = std::make_unique<sim::Stepper>(*robot_->model, start, choice.faults, &recorder_,
                                               recording_ ? &record_ : nullptr);
     recorder_.enabled = recording_;
