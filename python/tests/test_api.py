@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import multicpg
-from conftest import cli_error, cli_json
+from conftest import cli_error, cli_json, run_cli
 
 STEPS = 120
 
@@ -179,6 +179,16 @@ def test_bad_arguments_raise_value_error_with_the_cli_message(hexapod):
         multicpg.Simulation(hexapod, record=False).record()
     with pytest.raises(ValueError):
         multicpg.Robot("hexapod", control_dt=0.037, physics_dt=0.01)
+
+
+def test_a_physics_blow_up_raises_runtime_error_with_the_cli_message():
+    done = run_cli("walk", "--steps", "50", "--physics-dt", "0.037", check=False)
+    assert done.returncode == 1
+    sim = multicpg.Simulation(multicpg.Robot("hexapod", physics_dt=0.037))
+    with pytest.raises(RuntimeError) as e:
+        sim.step(50)
+    assert str(e.value) == done.stderr.strip().removeprefix("multicpg: ")
+    assert "unstable at step" in str(e.value)
 
 
 def test_an_observer_that_raises_stops_the_run_with_its_error():
