@@ -9,6 +9,7 @@
 #include "apps/commands.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/results_json.h"
 #include "apps/sim_flags.h"
 #include "apps/walk_flags.h"
 #include "common/atomic_file.h"
@@ -111,14 +112,7 @@ void run_learn(const LearnOptions& o) {
   const experiments::LearningRun run =
       experiments::run_learning(model, options, /*record=*/!o.out.empty());
   const learning::LearningResult& r = run.result;
-  nlohmann::json json = learning::to_json(r, morph, failing);
-  json["robot"] = morph.name;
-  json["seed"] = o.learning.seed;
-  json["beta"] = o.learning.beta;
-  json["threshold_deg"] = o.learning.threshold;
-  json["window_steps"] = o.learning.window;
-  json["disable_at"] = o.faults.disable_at;
-  json["options"] = learning::to_json(options, morph);
+  const nlohmann::json json = learn_json(morph, options, r, o.faults.disable_at);
 
   if (!o.out.empty()) {
     const std::filesystem::path dir(o.out);

@@ -73,9 +73,10 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
 
 LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim::SimModel& corridor,
                                            const learning::CompensationOptions& options,
-                                           long max_steps, sim::Observer* observer) {
+                                           long max_steps, sim::Observer* observer,
+                                           sim::Observer* learning_observer) {
   LearnedTunnelRun out;
-  out.learning = run_learning(open, options, /*record=*/false).result;
+  out.learning = run_learning(open, options, /*record=*/false, 0, learning_observer).result;
   TunnelSpec spec;
   spec.disabled = learning::failing_legs(options);
   spec.periods = out.learning.periods;

@@ -48,7 +48,8 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
 
 // Paper §5 after learning (issue 8): learns in the open field (`open`, no tunnel) from the
 // options' start, then walks the learned controller (its periods and, if the learner used it,
-// its steering reflex) through the tunnel of `corridor` from a warmed start.
+// its steering reflex) through the tunnel of `corridor` from a warmed start. `observer` sees the
+// tunnel walk, `learning_observer` (may be null) the learning run.
 struct LearnedTunnelRun {
   learning::LearningResult learning;
   TunnelRun tunnel;
@@ -56,6 +57,7 @@ struct LearnedTunnelRun {
 LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim::SimModel& corridor,
                                            const learning::CompensationOptions& options,
                                            long max_steps = kTunnelMaxSteps,
-                                           sim::Observer* observer = nullptr);
+                                           sim::Observer* observer = nullptr,
+                                           sim::Observer* learning_observer = nullptr);
 
 }  // namespace multicpg::experiments

@@ -100,13 +100,14 @@ void Film::rethrow_failure() {
   if (failure_) std::rethrow_exception(failure_);
 }
 
-Film::Pose Film::pose(const sim::SimState& state, const std::string& caption) const {
-  Pose out;
-  const mjModel* m = model_.mj.get();
+FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
+                     const std::string& caption) {
+  FramePose out;
+  const mjModel* m = model.mj.get();
   out.qpos.assign(state.data->qpos, state.data->qpos + m->nq);
   std::ostringstream periods;
   std::string disabled;
-  const robot::Morphology& morph = model_.controller.morphology;
+  const robot::Morphology& morph = model.controller.morphology;
   for (std::size_t i = 0; i < morph.size(); ++i) {
     const neural::LegState& leg = state.controller.legs[i];
     periods << (i ? " " : "") << morph.legs[i].name << "=" << leg.cpg.period;
@@ -125,11 +126,27 @@ Film::Pose Film::pose(const sim::SimState& state, const std::string& caption) co
   return out;
 }
 
-Image Film::draw(Renderer& renderer, mjData* data, const Pose& pose) const {
-  const mjModel* m = model_.mj.get();
+Image draw_frame(Renderer& renderer, const sim::SimModel& model, mjData* data,
+                 const CameraSpec& camera, const FramePose& pose) {
+  const mjModel* m = model.mj.get();
   std::copy(pose.qpos.begin(), pose.qpos.end(), data->qpos);
   mj_fwdPosition(m, data);  // body and geom poses, the tracked subtree's centre, the lights
-  return render_frame(renderer, m, data, spec_.camera, pose.red, pose.overlay);
+  return render_frame(renderer, m, data, camera, pose.red, pose.overlay);
+}
+
+Image film_frame(Renderer& renderer, const sim::SimModel& model, const sim::SimState& state,
+                 const CameraSpec& camera, const std::string& caption) {
+  const std::unique_ptr<mjData, void (*)(mjData*)> scratch(mj_makeData(model.mj.get()),
+                                                          mj_deleteData);
+  return draw_frame(renderer, model, scratch.get(), camera, frame_pose(model, state, caption));
+}
+
+Film::Pose Film::pose(const sim::SimState& state, const std::string& caption) const {
+  return frame_pose(model_, state, caption);
+}
+
+Image Film::draw(Renderer& renderer, mjData* data, const Pose& pose) const {
+  return draw_frame(renderer, model_, data, spec_.camera, pose);
 }
 
 void Film::capture(const sim::SimState& state, const std::string& caption) {

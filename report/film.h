@@ -38,6 +38,21 @@ struct FilmSpec {
   CameraSpec camera;
 };
 
+// What one frame shows: the pose and the overlay, copied from the state at capture.
+struct FramePose {
+  std::vector<mjtNum> qpos;
+  std::vector<std::string> red;  // failed legs, drawn red
+  Overlay overlay;               // step, time, periods, disabled legs, caption
+};
+FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
+                     const std::string& caption);
+// Draws `pose` into `scratch` (an mjData of the model) and renders it from `camera`.
+Image draw_frame(Renderer& renderer, const sim::SimModel& model, mjData* scratch,
+                 const CameraSpec& camera, const FramePose& pose);
+// One frame as films draw it, of `state` now (the Python module's render).
+Image film_frame(Renderer& renderer, const sim::SimModel& model, const sim::SimState& state,
+                 const CameraSpec& camera, const std::string& caption = {});
+
 class Film {
  public:
   // Checks the spec and opens the renderer and, for a video, the encoder and the render thread
@@ -62,12 +77,7 @@ class Film {
   int frames() const;
 
  private:
-  // What one frame shows: the pose and the overlay, copied from the state at capture.
-  struct Pose {
-    std::vector<mjtNum> qpos;
-    std::vector<std::string> red;
-    Overlay overlay;
-  };
+  using Pose = FramePose;
   Pose pose(const sim::SimState& state, const std::string& caption) const;
   Image draw(Renderer& renderer, mjData* data, const Pose& pose) const;
   void render_video();

@@ -14,5 +14,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# The Python module is built for Debian's interpreter, whatever python3 comes first on PATH.
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=/usr/bin/python3 \
+  >/dev/null
 cmake --build "$root/build" -j "$(nproc)"

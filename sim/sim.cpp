@@ -314,6 +314,18 @@ SimState make_sim_state(const SimModel& model, int period) {
   return state;
 }
 
+SimState copy_sim_state(const SimModel& model, const SimState& state) {
+  SimState copy;
+  copy.data.reset(mj_makeData(model.mj.get()));
+  if (!copy.data) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
+  mj_copyData(copy.data.get(), model.mj.get(), state.data.get());
+  copy.controller = state.controller;
+  copy.targets = state.targets;
+  copy.step = state.step;
+  copy.warnings = state.warnings;
+  return copy;
+}
+
 void sim_step(const SimModel& model, SimState& state) {
   neural::controller_step(model.controller, state.controller);
   for (std::size_t i = 0; i < model.legs.size(); ++i) {

@@ -123,6 +123,10 @@ struct SimState {
 // synchronised (neural::make_controller_state).
 SimState make_sim_state(const SimModel& model, int period = 4);
 
+// A deep copy of `state` (mjData through mj_copyData, the controller, targets, counters) that
+// continues exactly as `state` would. `state` must belong to `model`.
+SimState copy_sim_state(const SimModel& model, const SimState& state);
+
 // One controller step: neural::controller_step, joint targets (robot::joint_angle), then
 // model.substeps physics steps, each setting every servo's torque (sim/servo.h) before mj_step.
 // Throws RuntimeFailure naming the step if the physics becomes unstable (a NaN or infinite state,

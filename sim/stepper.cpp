@@ -61,6 +61,42 @@ void Stepper::steps(long n) {
   for (long i = 0; i < n; ++i) step();
 }
 
+void Stepper::set_failed(const std::vector<std::size_t>& legs, bool failed) {
+  FaultTimeline check;
+  std::vector<std::size_t> now;
+  for (std::size_t leg = 0; leg < failed_.size(); ++leg) {
+    if (failed_[leg]) now.push_back(leg);
+  }
+  if (!now.empty()) check.push_back({walked_, now, false});
+  const Fault fault{walked_, legs, !failed};
+  check.push_back(fault);
+  validate(model_.controller.morphology, check);
+  for (std::size_t leg : legs) {
+    neural::set_disabled(state_.controller, leg, failed);
+    failed_[leg] = failed;
+  }
+  if (observer_ != nullptr) {
+    Event e;
+    e.kind = failed ? EventKind::fault : EventKind::recovery;
+    e.step = walked_;
+    e.legs = legs;
+    observer_->on_event(model_, state_, e);
+  }
+}
+
+StepperCheckpoint Stepper::checkpoint() const {
+  return {copy_sim_state(model_, state_), faults_, next_fault_, failed_, walked_};
+}
+
+void Stepper::restore(const StepperCheckpoint& checkpoint) {
+  state_ = copy_sim_state(model_, checkpoint.state);
+  faults_ = checkpoint.faults;
+  next_fault_ = checkpoint.next_fault;
+  failed_ = checkpoint.failed;
+  walked_ = checkpoint.walked;
+  last_faults_.clear();
+}
+
 void Stepper::emit(Event event) {
   event.step = walked_;
   if (observer_ != nullptr) observer_->on_event(model_, state_, event);

@@ -38,6 +38,15 @@ class Observer {
                         const Event& /*event*/) {}
 };
 
+// Everything a Stepper's run is between two steps (the Python API's state()/restore()).
+struct StepperCheckpoint {
+  SimState state;
+  FaultTimeline faults;
+  std::size_t next_fault = 0;
+  std::vector<bool> failed;
+  long walked = 0;
+};
+
 class Stepper {
  public:
   // Makes the start state: make_sim_state, `start.periods`, the faults due at step 0, then the
@@ -52,6 +61,15 @@ class Stepper {
   void steps(long n);
   // Tells the observer (the learner's detections, trials and episodes).
   void emit(Event event);
+  // Legs fail (or work again) now, before the next step, told to the observer like a scheduled
+  // fault. Throws BadInput (sim::validate's message) for a leg that has already failed, one that
+  // has not failed, or failing every leg. Scheduled faults still come as planned.
+  void set_failed(const std::vector<std::size_t>& legs, bool failed);
+  // A deep copy of the run (copy_sim_state and the fault bookkeeping), and back: after restore
+  // the stepper continues exactly as it did from the checkpoint. The checkpoint must come from a
+  // stepper of the same model; the record (if any) is not rewound.
+  StepperCheckpoint checkpoint() const;
+  void restore(const StepperCheckpoint& checkpoint);
   // Called before every step, after the faults: sets the controller's drive inputs from the
   // sensors (the steering reflex of learning/steering.h). Empty = forward walking as it is.
   void set_before_step(std::function<void(Stepper&)> hook) { before_step_ = std::move(hook); }

@@ -120,20 +120,24 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec) {
   }
   Stepper stepper(model, spec.start, spec.faults, spec.observer, &r, spec.record);
   stepper.steps(total);
+  measure_walk(model, spec.settle, spec.steps, spec.window, result);
+  result.final_state = std::move(stepper.state());
+  return result;
+}
 
-  const auto first = static_cast<std::size_t>(spec.settle);
-  result.duration_s = static_cast<double>(spec.steps) * model.control_dt;
+void measure_walk(const SimModel& model, long settle, long steps, long window, WalkResult& result) {
+  const WalkRecord& r = result.record;
+  const auto first = static_cast<std::size_t>(settle);
+  result.duration_s = static_cast<double>(steps) * model.control_dt;
   const WindowMeasure whole = measure_window({r.x[first], r.y[first], r.yaw_deg[first]},
                                              {r.x.back(), r.y.back(), r.yaw_deg.back()});
   result.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
   result.forward_m = whole.forward_m;
   result.lateral_m = whole.lateral_m;
   result.speed_m_s = result.distance_m / result.duration_s;
-  result.window_deviations_deg = window_deviations(r.yaw_deg, first, spec.window);
-  result.windows = window_measures(r, first, spec.window);
+  result.window_deviations_deg = window_deviations(r.yaw_deg, first, window);
+  result.windows = window_measures(r, first, window);
   result.final_yaw_deg = r.yaw_deg.back();
-  result.final_state = std::move(stepper.state());
-  return result;
 }
 
 }  // namespace multicpg::sim

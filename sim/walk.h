@@ -47,6 +47,10 @@ struct WalkResult {
   SimState final_state;        // the robot at the end
 };
 
+// Fills `result`'s measurements from its record (rows 0..settle+steps) as walk() does: distance,
+// speed and windows from row `settle` on, over `steps` measured steps.
+void measure_walk(const SimModel& model, long settle, long steps, long window, WalkResult& result);
+
 // "R1@0" style helper: the legs fail before step `step`; no legs = no fault.
 FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step);
 

@@ -269,6 +269,40 @@ TEST(Stepper, FaultsAndRecoveriesReachTheObserverAtTheirSteps) {
   EXPECT_TRUE(stepper.state().controller.legs[2].disabled);
 }
 
+TEST(Stepper, RestoredCheckpointContinuesIdentically) {
+  const sim::SimModel& m = model(RobotKind::hexapod);
+  sim::Stepper stepper(m, {}, {{50, {1}, false}, {90, {1}, true}});
+  stepper.steps(40);
+  const sim::StepperCheckpoint saved = stepper.checkpoint();
+  const auto walk_on = [&] {
+    stepper.steps(30);
+    stepper.set_failed({4}, true);  // L2, now
+    stepper.steps(40);
+    return stepper.pose();
+  };
+  const sim::Pose2 first = walk_on();
+  stepper.restore(saved);
+  EXPECT_EQ(stepper.step_count(), 40);
+  EXPECT_FALSE(stepper.failed()[4]);
+  const sim::Pose2 second = walk_on();
+  EXPECT_EQ(first.x, second.x);
+  EXPECT_EQ(first.y, second.y);
+  EXPECT_EQ(first.yaw_deg, second.yaw_deg);
+  EXPECT_EQ(stepper.step_count(), 110);
+  EXPECT_FALSE(stepper.failed()[1]);  // the scheduled recovery came after the restore too
+}
+
+TEST(Stepper, LegsFailAndRecoverNowOrSayWhyNot) {
+  const sim::SimModel& m = model(RobotKind::hexapod);
+  sim::Stepper stepper(m, {{}, 0}, {{0, {0}, false}});
+  EXPECT_THROW(stepper.set_failed({0}, true), BadInput);              // already failed
+  EXPECT_THROW(stepper.set_failed({1}, false), BadInput);             // has not failed
+  EXPECT_THROW(stepper.set_failed({1, 2, 3, 4, 5}, true), BadInput);  // every leg
+  stepper.set_failed({0}, false);
+  EXPECT_FALSE(stepper.state().controller.legs[0].disabled);
+  EXPECT_FALSE(stepper.failed()[0]);
+}
+
 TEST(Walk, WindowDeviationsWrapAndSign) {
   // A left turn across +-180 deg is +20, not -340 (SPEC §6).
   const std::vector<double> yaw{170.0, 0.0, -170.0, 0.0, -150.0};

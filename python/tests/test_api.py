@@ -1,0 +1,212 @@
+"""The Python API (issue 11): shapes, equality with the CLI, exact continuations, threads,
+errors, rendering."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import multicpg
+from conftest import cli_error, cli_json, run_cli
+
+STEPS = 120
+
+
+def test_robots_name_their_legs_and_joints():
+    for name, legs in [("hexapod", 6), ("quadruped", 4), ("octopod", 8)]:
+        robot = multicpg.Robot(name)
+        assert robot.name == name
+        assert len(robot.legs) == legs
+        assert robot.legs[0] == "R1"
+        assert robot.joints == ["TC", "CTr", "FTi"]
+        assert robot.joint_names[:3] == ["R1_TC", "R1_CTr", "R1_FTi"]
+        assert len(robot.joint_names) == 3 * legs
+    hexapod = multicpg.Robot("hexapod")
+    assert hexapod.mjcf().lstrip().startswith("<mujoco")
+    assert "R1_TC" in hexapod.mjcf()
+    assert hexapod.default_settle_steps == 337
+
+
+def test_record_has_the_documented_shapes_and_dtypes(hexapod):
+    sim = multicpg.Simulation(hexapod, disable="R1")
+    sim.step(STEPS)
+    r = sim.record()
+    rows, legs = STEPS + 1, 6
+    assert r["time"].shape == (rows,) and r["time"].dtype == np.float64
+    assert r["position"].shape == (rows, 3) and r["position"].dtype == np.float64
+    assert r["yaw_deg"].shape == (rows,)
+    for key in ("command", "target", "actual"):
+        assert r[key].shape == (rows, legs, 3) and r[key].dtype == np.float64
+    assert r["contact"].shape == (rows, legs) and r["contact"].dtype == np.bool_
+    assert r["cpg"].shape == (rows, legs, 2) and r["cpg"].dtype == np.float64
+    assert np.all(np.diff(r["time"]) > 0)
+    assert r["contact"].any()
+    assert sim.failed == ["R1"]
+    assert sim.step_count == STEPS
+
+
+def test_walk_equals_the_cli(hexapod):
+    cli = cli_json("walk", "--robot", "hexapod", "--periods", "R1=5,L2=6", "--disable", "R3",
+                   "--disable-at", "100", "--steps", "800", "--settle", "50", "--window", "200")
+    sim = multicpg.Simulation(hexapod, periods="R1=5,L2=6", disable="R3", disable_at=100)
+    sim.step(850)
+    m = sim.measure(settle=50, window=200)
+    assert m["distance_m"] == cli["distance_m"]
+    assert m["lateral_m"] == cli["lateral_m"]
+    assert m["window_deviations_deg"] == cli["window_deviations_deg"]
+    assert [w["path_deg"] for w in m["windows"]] == [w["path_deg"] for w in cli["windows"]]
+    assert m["final_yaw_deg"] == cli["final_yaw_deg"]
+
+
+def test_state_restore_continues_identically(hexapod):
+    sim = multicpg.Simulation(hexapod, faults=["R2@150"], recoveries=["R2@190"])
+    sim.step(100)
+    sim.set_periods([5, 4, 4, 6, 4, 4])
+    sim.synchronise(False)
+    saved = sim.state()
+    sim.step(60)
+    sim.fail("L1")
+    sim.step(80)
+    first = sim.record()
+    sim.restore(saved)
+    assert sim.step_count == 100
+    sim.step(60)
+    sim.fail("L1")
+    sim.step(80)
+    second = sim.record()
+    # The restored record starts at the saved state; row 0 is taken after set_periods reset
+    # the CPGs, which the first record's row 100 was not, so compare the steps walked.
+    for key in first:
+        np.testing.assert_array_equal(first[key][-140:], second[key][1:], err_msg=key)
+    assert sim.failed == ["L1"]
+
+
+def test_threads_give_what_one_after_the_other_gives(hexapod):
+    def run(out, i):
+        sim = multicpg.Simulation(hexapod, periods=[4, 5][i], disable=["R1", "L3"][i])
+        sim.step(300)
+        out[i] = sim.record()
+
+    sequential, parallel = [None, None], [None, None]
+    for i in range(2):
+        run(sequential, i)
+    threads = [threading.Thread(target=run, args=(parallel, i)) for i in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for i in range(2):
+        for key in sequential[i]:
+            np.testing.assert_array_equal(sequential[i][key], parallel[i][key])
+
+
+def test_threads_sharing_one_simulation_take_turns(hexapod):
+    shared = multicpg.Simulation(hexapod, disable="R2")
+    threads = [threading.Thread(target=lambda: [shared.step(10) for _ in range(15)])
+               for _ in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    alone = multicpg.Simulation(hexapod, disable="R2")
+    alone.step(300)
+    assert shared.step_count == 300
+    np.testing.assert_array_equal(shared.record()["position"], alone.record()["position"])
+
+
+def test_learn_equals_the_cli_and_calls_the_observer():
+    args = ("--mode", "paper", "--disable", "R1", "--seed", "5", "--max-trials", "3")
+    cli = cli_json("learn", *args)
+    seen = []
+    py = multicpg.learn("hexapod", mode="paper", disable="R1", seed=5, max_trials=3,
+                        observer=seen.append)
+    arrays = py.pop("trace_arrays")
+    assert py == cli
+    assert [t["trial"] for t in seen] == [t["trial"] for t in cli["trace"]]
+    assert [t["deviation_deg"] for t in seen] == [t["deviation_deg"] for t in cli["trace"]]
+    assert arrays["periods"].shape == (len(cli["trace"]), 6)
+    assert list(arrays["deviation_deg"]) == [t["deviation_deg"] for t in cli["trace"]]
+
+
+def test_tunnel_equals_the_cli():
+    cli = cli_json("tunnel", "--disable", "R1", "--periods", "R2=5", "--max-steps", "500")
+    py = multicpg.tunnel(disable="R1", periods="R2=5", max_steps=500)
+    path = py.pop("path")
+    assert py == cli
+    assert path["x"].shape == (cli["steps"] + 1,)
+
+    learn = ("--mode", "paper", "--max-trials", "2", "--max-steps", "500")
+    cli = cli_json("tunnel", "--disable", "R1", "--learn", *learn)
+    trials = []
+    py = multicpg.tunnel(disable=["R1"], learn=True, mode="paper", max_trials=2, max_steps=500,
+                         observer=trials.append)
+    del py["path"]
+    arrays = py.pop("trace_arrays")
+    assert py == cli
+    assert len(trials) == len(arrays["trial"]) == cli["learning"]["trials"]
+
+
+def test_bad_arguments_raise_value_error_with_the_cli_message(hexapod):
+    with pytest.raises(ValueError) as e:
+        multicpg.Robot("snake")
+    assert str(e.value) == cli_error("walk", "--robot", "snake")
+    with pytest.raises(ValueError) as e:
+        multicpg.Simulation(hexapod, periods=7)
+    assert str(e.value) == cli_error("walk", "--periods", "7")
+    with pytest.raises(ValueError) as e:
+        multicpg.Simulation(hexapod, disable="R1,R2,R3,L1,L2,L3")
+    assert str(e.value) == cli_error("walk", "--disable", "R1,R2,R3,L1,L2,L3")
+    with pytest.raises(ValueError) as e:
+        multicpg.learn(disable="R1", mode="greedy")
+    assert str(e.value) == cli_error("learn", "--disable", "R1", "--mode", "greedy")
+    with pytest.raises(ValueError) as e:
+        multicpg.Simulation(hexapod, faults=["R1@x"])
+    assert str(e.value) == cli_error("walk", "--fault", "R1@x")
+    sim = multicpg.Simulation(hexapod, disable="R1")
+    with pytest.raises(ValueError, match="already failed"):
+        sim.fail("R1")
+    with pytest.raises(ValueError, match="has not failed"):
+        sim.recover("R2")
+    with pytest.raises(ValueError):
+        sim.fail("R9")
+    with pytest.raises(ValueError):
+        sim.step(-1)
+    with pytest.raises(ValueError):
+        sim.restore(multicpg.Simulation("quadruped").state())
+    with pytest.raises(ValueError):
+        multicpg.Simulation(hexapod, periods=[4, 4]).step(1)
+    with pytest.raises(ValueError):
+        multicpg.Simulation(hexapod, record=False).record()
+    with pytest.raises(ValueError):
+        multicpg.Robot("hexapod", control_dt=0.037, physics_dt=0.01)
+
+
+def test_a_physics_blow_up_raises_runtime_error_with_the_cli_message():
+    done = run_cli("walk", "--steps", "50", "--physics-dt", "0.037", check=False)
+    assert done.returncode == 1
+    sim = multicpg.Simulation(multicpg.Robot("hexapod", physics_dt=0.037))
+    with pytest.raises(RuntimeError) as e:
+        sim.step(50)
+    assert str(e.value) == done.stderr.strip().removeprefix("multicpg: ")
+    assert "unstable at step" in str(e.value)
+
+
+def test_an_observer_that_raises_stops_the_run_with_its_error():
+    def observer(trial):
+        raise KeyError("stop here")
+
+    with pytest.raises(KeyError, match="stop here"):
+        multicpg.learn(mode="paper", disable="R1", max_trials=2, observer=observer)
+
+
+def test_render_and_film(hexapod, tmp_path):
+    sim = multicpg.Simulation(hexapod, disable="R1")
+    sim.step(5)
+    image = multicpg.render(sim, 160, 120)
+    assert image.shape == (120, 160, 3) and image.dtype == np.uint8
+    assert image.std() > 5  # a picture, not a blank frame
+    frames = multicpg.film(sim, str(tmp_path / "walk.mp4"), 6, speed=2, width=160, height=120)
+    assert frames == 3
+    assert (tmp_path / "walk.mp4").stat().st_size > 0
+    with pytest.raises(ValueError):
+        multicpg.film(sim, str(tmp_path / "walk.gif"), 2)
