@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   apps::register_view(app);
   apps::register_reproduce(app);
   apps::register_figure(app);
+  apps::register_landscape(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -652,7 +652,12 @@ std::string stage_of_figure(std::string_view figure) {
       {"learning-hexapod", "hexapod-table"},
       {"learning-quadruped", "quadruped-table"},
       {"beta", "beta"}};
-  return stage.at(name);
+  const auto it = stage.find(name);
+  if (it == stage.end()) {
+    throw BadInput("figure '" + std::string(name) + "' is drawn by its own command (multicpg " +
+                   std::string(name) + "), not by reproduce");
+  }
+  return it->second;
 }
 
 void reproduce(const ReproduceOptions& options) {
