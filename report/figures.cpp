@@ -496,7 +496,8 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
       .text("subtitle", subtitle)
       .num("threshold", threshold_deg)
       .num("windows", static_cast<double>(windows))
-      .num("count", static_cast<double>(points.size()));
+      .num("count", static_cast<double>(points.size()))
+      .num("learned", static_cast<double>(learned));
   return draw(info, out_dir, stem, csv, params);
 }
 

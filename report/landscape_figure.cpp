@@ -1,6 +1,7 @@
 #include "report/landscape_figure.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "experiments/scenarios.h"
 
