@@ -4,7 +4,8 @@
 # holds when its curve point is under the line. The green diamond is the best holding
 # combination, red circles the combinations learning answered.
 # Variables: data (rank, worst_deg, holds, first_window_passes, best, learned, label, then one
-# w<n>_worst_deg column per window), title, subtitle, threshold (degrees), windows, count, learned (how many learned answers).
+# w<n>_worst_deg column per window), title, subtitle, threshold (degrees), windows, count and
+# learned (how many learned answers are marked).
 load dir.'common.gp'
 first_window_column = 8
 floor_deg = 0.01
