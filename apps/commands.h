@@ -17,5 +17,6 @@ void register_render(CLI::App& app);
 void register_tunnel(CLI::App& app);
 void register_reproduce(CLI::App& app);
 void register_figure(CLI::App& app);
+void register_landscape(CLI::App& app);
 
 }  // namespace multicpg::apps

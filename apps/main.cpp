@@ -34,6 +34,7 @@ int run(int argc, char** argv) {
   apps::register_view(app);
   apps::register_reproduce(app);
   apps::register_figure(app);
+  apps::register_landscape(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

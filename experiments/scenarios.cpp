@@ -134,9 +134,9 @@ std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::ui
   std::vector<Task> tasks;
   for (double beta : betas) {
     if (!(beta >= 0.0) || !std::isfinite(beta)) {
-      throw BadInput("beta must be a number >= 0, got " + format_beta(beta));
+      throw BadInput("beta must be a number >= 0, got " + format_number(beta));
     }
-    const std::string group = format_beta(beta);
+    const std::string group = format_number(beta);
     for (int run = 0; run < runs; ++run) {
       const std::string key = run_key("beta" + group, run);
       tasks.push_back({key,
@@ -162,9 +162,9 @@ std::string working_periods_text(const Morphology& morph, const std::vector<int>
   return out;
 }
 
-std::string format_beta(double beta) {
+std::string format_number(double value) {
   char buf[32];  // the shortest form of any double needs at most 24
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, beta).ptr);
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, value).ptr);
 }
 
 }  // namespace multicpg::experiments

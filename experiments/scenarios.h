@@ -45,16 +45,16 @@ std::vector<Task> scenario_tasks(const robot::Morphology& morph,
                                  std::uint64_t base_seed);
 
 // Tasks of the beta study: `runs` per beta on beta_study_scenario(), keys "beta<b>_run<NNN>",
-// group = format_beta(b), params {"scenario", "disabled", "beta"}. Throws BadInput for
+// group = format_number(b), params {"scenario", "disabled", "beta"}. Throws BadInput for
 // runs < 1 or a negative beta.
 std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::uint64_t base_seed);
 
-// Shortest text that reads back as the same double: "0.1", "10".
 // "R2=5 R3=4 L1=5 L2=6 L3=5": the periods of the working legs in leg order, as the paper lists
 // a learned combination (Figs. 10, 11).
 std::string working_periods_text(const robot::Morphology& morph, const std::vector<int>& periods,
                                  const std::vector<std::size_t>& disabled);
 
-std::string format_beta(double beta);
+// Shortest text that reads back as the same double: "0.1", "10".
+std::string format_number(double value);
 
 }  // namespace multicpg::experiments

@@ -21,7 +21,7 @@ constexpr const char* kGnuplot = "gnuplot";
 constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
 constexpr const char* kFont = "DejaVu Sans,11";
 
-constexpr std::array<FigureInfo, 9> kFigures{{
+constexpr std::array<FigureInfo, 10> kFigures{{
     {"gait", "fig02-gaits", "gait.gp", 1200, 900,
      "Fig. 2: gait diagrams for p = 1, 4, 5, 6, 8, 9 (blue = stance, white = swing)"},
     {"cpg-sync", "fig06-cpg-sync", "cpg_sync.gp", 1200, 700,
@@ -40,6 +40,8 @@ constexpr std::array<FigureInfo, 9> kFigures{{
      "Fig. 14: trials to converge for each annealing factor beta"},
     {"trunk-path", "trunk-path-r1", "trunk_path.gp", 1000, 700,
      "Trunk path seen from above, R1 disabled, before and after learning"},
+    {"landscape", "landscape_map", "landscape.gp", 1200, 700,
+     "Landscape: worst deviation of every combination of working-leg periods (issue 8)"},
 }};
 
 // --- CSV -------------------------------------------------------------------------------------
@@ -411,6 +413,70 @@ FigureFiles plot_trunk_paths(const TrunkPaths& paths, const fs::path& out_dir,
   for (const auto& wall : paths.walls) block("wall", wall);
   Params params;
   params.text("before_label", paths.before_label).text("after_label", paths.after_label);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::string_view title,
+                           double threshold_deg, const fs::path& out_dir, std::string_view stem) {
+  const FigureInfo& info = figure_by_name("landscape");
+  require(!points.empty(), info.name, "no combinations");
+  require(threshold_deg > 0.0, info.name, "threshold must be positive");
+  const std::size_t windows = points.front().window_worst_deg.size();
+  require(windows > 0, info.name, "no windows");
+  ensure_writable_dir(out_dir);
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a].worst_deg < points[b].worst_deg;
+  });
+  std::vector<std::string> header{"rank", "worst_deg", "holds", "first_window_passes",
+                                  "best", "learned",   "label"};
+  for (std::size_t w = 1; w <= windows; ++w)
+    header.push_back("w" + std::to_string(w) + "_worst_deg");
+  Csv csv(header);
+  std::size_t holding = 0;
+  std::size_t first = 0;
+  std::size_t learned = 0;
+  std::size_t learned_holding = 0;
+  for (std::size_t r = 0; r < order.size(); ++r) {
+    const LandscapePoint& p = points[order[r]];
+    require(p.window_worst_deg.size() == windows, info.name,
+            p.label + " has " + std::to_string(p.window_worst_deg.size()) + " windows, expected " +
+                std::to_string(windows));
+    holding += p.holds ? 1 : 0;
+    first += p.first_window_passes ? 1 : 0;
+    learned += static_cast<std::size_t>(p.learned);
+    learned_holding += p.holds ? static_cast<std::size_t>(p.learned) : 0;
+    std::vector<std::string> row{std::to_string(r + 1),
+                                 shortest(p.worst_deg),
+                                 p.holds ? "1" : "0",
+                                 p.first_window_passes ? "1" : "0",
+                                 p.best ? "1" : "0",
+                                 std::to_string(p.learned),
+                                 p.label};
+    for (double d : p.window_worst_deg) row.push_back(shortest(d));
+    csv.row(row);
+  }
+  const auto percent = [&](std::size_t n) {
+    return std::to_string(
+               std::lround(100.0 * static_cast<double>(n) / static_cast<double>(points.size()))) +
+           "%";
+  };
+  std::string subtitle = std::to_string(points.size()) +
+                         " combinations: " + std::to_string(holding) + " (" + percent(holding) +
+                         ") hold in every window, " + percent(first) +
+                         " pass the first window (|yaw| only)";
+  if (learned > 0) {
+    subtitle += "; learned: " + std::to_string(learned_holding) + " of " + std::to_string(learned) +
+                " hold";
+  }
+  Params params;
+  params.text("title", std::string(title))
+      .text("subtitle", subtitle)
+      .num("threshold", threshold_deg)
+      .num("windows", static_cast<double>(windows))
+      .num("count", static_cast<double>(points.size()))
+      .num("learned", static_cast<double>(learned));
   return draw(info, out_dir, stem, csv, params);
 }
 

@@ -23,7 +23,7 @@ struct ReproduceOptions {
 };
 
 // The stage that draws a figure of figures.h's registry (e.g. "motor" -> "learning-r1"); throws
-// BadInput naming the known figures for an unknown name.
+// BadInput naming the known figures for an unknown name, and for one no stage draws (landscape).
 std::string stage_of_figure(std::string_view figure);
 
 // Runs every stage not yet done in `out`, up to `jobs` stages at once (each finished stage is

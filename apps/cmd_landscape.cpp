@@ -1,0 +1,121 @@
+// multicpg landscape: every combination of working-leg periods of one leg-failure scenario,
+// walked and measured, saved as it finishes (resumable), with its map (issue 8). The ground
+// truth the learners are scored against.
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+
+#include "apps/commands.h"
+#include "apps/options.h"
+#include "apps/sim_flags.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/landscape.h"
+#include "experiments/scenarios.h"
+#include "report/landscape_figure.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct LandscapeOptions {
+  std::string robot = "hexapod";
+  std::string disable;
+  std::string out;
+  std::optional<int> jobs;  // empty = every core
+  int windows = experiments::kDefaultLandscapeWindows;
+  double threshold = learning::kDefaultThresholdDeg;
+  std::vector<int> period_set = learning::AnnealingParams{}.period_set;
+  std::string learned;
+  SimFlags sim;
+};
+
+// --disable as leg indices; unlike robot::parse_leg_list alone, a leg named twice is an error.
+std::vector<std::size_t> parse_disabled(const robot::Morphology& morph, const std::string& list) {
+  const std::vector<std::size_t> legs = robot::parse_leg_list(morph, list);
+  const auto names = static_cast<std::size_t>(std::count(list.begin(), list.end(), ',')) + 1;
+  if (names != legs.size()) throw BadInput("--disable '" + list + "' names a leg twice");
+  return legs;
+}
+
+std::vector<learning::Periods> read_learned(const std::string& path,
+                                            const experiments::LandscapeSpec& spec) {
+  if (path.empty()) return {};
+  std::ifstream in(path);
+  if (!in) throw BadInput("--learned: cannot read '" + path + "'");
+  try {
+    return experiments::parse_learned(nlohmann::json::parse(in), spec);
+  } catch (const nlohmann::json::exception& e) {
+    throw BadInput("--learned: '" + path + "' is not JSON (" + e.what() + ")");
+  }
+}
+
+void run(const LandscapeOptions& o) {
+  experiments::LandscapeSpec spec;
+  spec.kind = robot::parse_robot(o.robot);
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  if (o.disable.empty()) throw BadInput("--disable: name at least one leg, e.g. R1");
+  spec.disabled = parse_disabled(morph, o.disable);
+  spec.period_set = o.period_set;
+  spec.windows = o.windows;
+  spec.threshold_deg = o.threshold;
+  spec.sim = sim_options(o.sim);
+  experiments::validate(spec);
+  if (o.jobs && *o.jobs < 1) {
+    throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
+  }
+  const std::vector<learning::Periods> learned = read_learned(o.learned, spec);
+  ensure_writable_dir(o.out);
+
+  const experiments::Landscape landscape = experiments::run_landscape(
+      spec, o.out, o.jobs.value_or(experiments::default_jobs()), /*progress=*/true, learned);
+  const report::FigureFiles figure = report::draw_landscape(landscape, learned, o.out);
+
+  const nlohmann::json summary = experiments::landscape_summary(landscape, learned);
+  std::cout << std::fixed << std::setprecision(1) << morph.name << ", "
+            << experiments::scenario_name(morph, spec.disabled)
+            << " disabled: " << summary.at("count") << " combinations, " << summary.at("holding")
+            << " hold (" << 100.0 * summary.at("share_holding").get<double>() << "%), "
+            << 100.0 * summary.at("share_first_window_passing").get<double>()
+            << "% pass the first window\n";
+  if (const std::optional<std::size_t> best = experiments::best_combination(landscape)) {
+    const experiments::CombinationMeasure& m = landscape.combinations[*best];
+    std::cout << "best: " << experiments::working_periods_text(morph, m.periods, spec.disabled)
+              << ", worst deviation " << std::setprecision(2) << m.worst_deg << " deg\n";
+  } else {
+    std::cout << "best: no combination holds\n";
+  }
+  std::cout << "wrote " << o.out << "/{landscape.csv,summary.json} and " << figure.png.string()
+            << "\n";
+}
+
+}  // namespace
+
+void register_landscape(CLI::App& app) {
+  auto o = std::make_shared<LandscapeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "landscape",
+      "walk every combination of working-leg periods of one scenario and map which hold "
+      "(resumable; issue 8)");
+  cmd->add_option("--robot", o->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2")->required();
+  cmd->add_option("--out", o->out, "directory for the runs, CSV, summary and figure (resumes)")
+      ->required();
+  cmd->add_option("--jobs", o->jobs, "parallel combinations (default: every core)");
+  cmd->add_option("--windows", o->windows, "400-step windows measured per combination")
+      ->capture_default_str();
+  cmd->add_option("--threshold", o->threshold,
+                  "a combination holds when every window's yaw change and path angle are under "
+                  "this (deg)")
+      ->capture_default_str();
+  cmd->add_option("--periods-set", o->period_set, "periods each working leg takes")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--learned", o->learned,
+                  "JSON array of learned combinations ({leg: period} objects) to mark");
+  add_sim_flags(*cmd, o->sim);
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace multicpg::apps

@@ -1,0 +1,343 @@
+#include "experiments/landscape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <set>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/runner.h"
+#include "experiments/scenarios.h"
+#include "learning/compensation.h"
+#include "neural/postprocessing.h"
+#include "sim/walk.h"
+
+namespace multicpg::experiments {
+namespace {
+
+constexpr int kJsonIndent = 2;
+
+bool is_disabled(const std::vector<std::size_t>& disabled, std::size_t leg) {
+  return std::find(disabled.begin(), disabled.end(), leg) != disabled.end();
+}
+
+std::vector<std::size_t> working_legs(const robot::Morphology& morph,
+                                      const std::vector<std::size_t>& disabled) {
+  std::vector<std::size_t> out;
+  for (std::size_t leg = 0; leg < morph.size(); ++leg) {
+    if (!is_disabled(disabled, leg)) out.push_back(leg);
+  }
+  return out;
+}
+
+nlohmann::json periods_json(const robot::Morphology& morph,
+                            const std::vector<std::size_t>& disabled,
+                            const learning::Periods& periods) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t leg : working_legs(morph, disabled)) out[morph.legs[leg].name] = periods[leg];
+  return out;
+}
+
+nlohmann::json arguments(const LandscapeSpec& spec) {
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  nlohmann::json disabled = nlohmann::json::array();
+  for (std::size_t leg : spec.disabled) disabled.push_back(morph.legs[leg].name);
+  return {{"experiment", "landscape"},
+          {"robot", robot::to_string(spec.kind)},
+          {"disabled", disabled},
+          {"period_set", spec.period_set},
+          {"windows", spec.windows},
+          {"window_steps", spec.window_steps},
+          {"threshold_deg", spec.threshold_deg},
+          {"controller_warmup", sim::kControllerWarmup},
+          {"control_dt", spec.sim.control_dt},
+          {"physics_dt", spec.sim.physics_dt},
+          {"servo_gain", spec.sim.servo_gain}};
+}
+
+double share(std::size_t part, std::size_t whole) {
+  return whole == 0 ? 0.0 : static_cast<double>(part) / static_cast<double>(whole);
+}
+
+}  // namespace
+
+void validate(const LandscapeSpec& spec) {
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  std::set<std::size_t> seen;
+  for (std::size_t leg : spec.disabled) {
+    if (leg >= morph.size()) {
+      throw BadInput("the " + morph.name + " has no leg number " + std::to_string(leg));
+    }
+    if (!seen.insert(leg).second) {
+      throw BadInput("leg " + morph.legs[leg].name + " is disabled twice");
+    }
+  }
+  if (seen.size() == morph.size()) {
+    throw BadInput("every leg of the " + morph.name + " is disabled: there is no landscape");
+  }
+  learning::AnnealingParams params;
+  params.period_set = spec.period_set;
+  params.threshold_deg = spec.threshold_deg;
+  learning::validate(params);
+  for (int p : spec.period_set) neural::lock_steps(p);  // BadInput for periods that never lock
+  if (spec.windows < 1) {
+    throw BadInput("windows must be at least 1, got " + std::to_string(spec.windows));
+  }
+  if (spec.window_steps < 1) {
+    throw BadInput("window steps must be at least 1, got " + std::to_string(spec.window_steps));
+  }
+}
+
+void walk_steps(const sim::SimModel& model, sim::SimState& state, long steps) {
+  for (long t = 0; t < steps; ++t) sim::sim_step(model, state);
+}
+
+sim::Pose2 trunk_pose(const sim::SimModel& model, const sim::SimState& state) {
+  const sim::Position p = sim::trunk_position(model, state);
+  return {p.x, p.y, sim::trunk_yaw_deg(model, state)};
+}
+
+CombinationMeasure measure_combination(const sim::SimModel& model,
+                                       const std::vector<std::size_t>& disabled,
+                                       const learning::Periods& periods, int windows,
+                                       long window_steps, double threshold_deg) {
+  if (windows < 1) throw BadInput("windows must be at least 1, got " + std::to_string(windows));
+  // A robot already walking on its remaining legs: locked controller, full delay lines.
+  sim::SimState state = sim::start_walk_state(model, {});
+  for (std::size_t leg : disabled) neural::set_disabled(state.controller, leg, true);
+  sim::warm_up_controller(model, state, sim::kControllerWarmup);
+
+  // Learning tries every candidate with the clients free (SPEC §5); equal periods stay locked
+  // because set_periods resets every CPG together.
+  CombinationMeasure m;
+  m.periods = periods;
+  neural::set_periods(model.controller, state.controller, periods);
+  neural::set_synchronised(state.controller, false);
+  m.settle_steps = learning::locked_settle_steps(model.controller, periods);
+  walk_steps(model, state, m.settle_steps);
+
+  m.holds = true;
+  for (int w = 0; w < windows; ++w) {
+    const sim::Pose2 start = trunk_pose(model, state);
+    walk_steps(model, state, window_steps);
+    const sim::WindowMeasure window = sim::measure_window(start, trunk_pose(model, state));
+    m.worst_deg = std::max(m.worst_deg, window.worst_deg());
+    m.holds = m.holds && window.worst_deg() < threshold_deg;
+    m.windows.push_back(window);
+  }
+  m.first_window_passes = std::abs(m.windows.front().yaw_deg) < threshold_deg;
+  return m;
+}
+
+std::vector<learning::Periods> landscape_combinations(const LandscapeSpec& spec) {
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const std::vector<std::size_t> working = working_legs(morph, spec.disabled);
+  std::vector<std::size_t> digit(working.size(), 0);
+  std::vector<learning::Periods> out;
+  for (;;) {
+    learning::Periods periods(morph.size(), learning::kStartPeriod);
+    for (std::size_t i = 0; i < working.size(); ++i) {
+      periods[working[i]] = spec.period_set[digit[i]];
+    }
+    out.push_back(periods);
+    // Odometer: the last working leg varies fastest.
+    std::size_t i = working.size();
+    while (i > 0 && ++digit[i - 1] == spec.period_set.size()) digit[--i] = 0;
+    if (i == 0) return out;
+  }
+}
+
+std::string combination_key(const robot::Morphology& morph,
+                            const std::vector<std::size_t>& disabled,
+                            const learning::Periods& periods) {
+  std::string out;
+  for (std::size_t leg : working_legs(morph, disabled)) {
+    if (!out.empty()) out += '_';
+    out += morph.legs[leg].name + "-" + std::to_string(periods[leg]);
+  }
+  return out;
+}
+
+nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph) {
+  nlohmann::json periods = nlohmann::json::object();
+  for (std::size_t leg = 0; leg < morph.size(); ++leg)
+    periods[morph.legs[leg].name] = m.periods[leg];
+  nlohmann::json windows = nlohmann::json::array();
+  for (const sim::WindowMeasure& w : m.windows) {
+    windows.push_back({{"yaw_deg", w.yaw_deg},
+                       {"path_deg", w.path_deg},
+                       {"forward_m", w.forward_m},
+                       {"lateral_m", w.lateral_m}});
+  }
+  return {{"periods", periods}, {"settle_steps", m.settle_steps},
+          {"windows", windows}, {"worst_deg", m.worst_deg},
+          {"holds", m.holds},   {"first_window_passes", m.first_window_passes}};
+}
+
+CombinationMeasure combination_from_json(const nlohmann::json& j, const robot::Morphology& morph) {
+  CombinationMeasure m;
+  for (const robot::Leg& leg : morph.legs) m.periods.push_back(j.at("periods").at(leg.name));
+  m.settle_steps = j.at("settle_steps");
+  for (const nlohmann::json& w : j.at("windows")) {
+    m.windows.push_back({w.at("yaw_deg"), w.at("path_deg"), w.at("forward_m"), w.at("lateral_m")});
+  }
+  m.worst_deg = j.at("worst_deg");
+  m.holds = j.at("holds");
+  m.first_window_passes = j.at("first_window_passes");
+  return m;
+}
+
+std::vector<std::size_t> ranked_combinations(const Landscape& landscape) {
+  const std::vector<CombinationMeasure>& c = landscape.combinations;
+  std::vector<std::size_t> order(c.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return c[a].worst_deg < c[b].worst_deg; });
+  return order;
+}
+
+std::optional<std::size_t> best_combination(const Landscape& landscape) {
+  for (std::size_t i : ranked_combinations(landscape)) {
+    if (landscape.combinations[i].holds) return i;
+  }
+  return std::nullopt;
+}
+
+Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
+                        bool progress, const std::vector<learning::Periods>& learned) {
+  validate(spec);
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  RunnerOptions runner;
+  runner.out_dir = out;
+  runner.jobs = jobs;
+  runner.arguments = arguments(spec);
+  runner.progress = progress;
+  validate(runner);
+
+  const std::vector<learning::Periods> combinations = landscape_combinations(spec);
+  std::vector<Task> tasks;
+  for (std::size_t i = 0; i < combinations.size(); ++i) {
+    Task task;
+    task.key = combination_key(morph, spec.disabled, combinations[i]);
+    task.group = "landscape";
+    task.run = static_cast<int>(i);
+    task.params = {{"periods", combinations[i]}};
+    tasks.push_back(std::move(task));
+  }
+  const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
+  const RunnerOutcome outcome = run_tasks(
+      tasks,
+      [&](const Task& task) {
+        const learning::Periods periods = task.params.at("periods");
+        return to_json(measure_combination(model, spec.disabled, periods, spec.windows,
+                                           spec.window_steps, spec.threshold_deg),
+                       morph);
+      },
+      runner);
+
+  Landscape landscape{spec, {}};
+  for (const nlohmann::json& result : outcome.results) {
+    landscape.combinations.push_back(combination_from_json(result, morph));
+  }
+  write_file_atomic(out / "landscape.csv", landscape_csv(landscape));
+  write_file_atomic(out / "summary.json",
+                    landscape_summary(landscape, learned).dump(kJsonIndent) + "\n");
+  return landscape;
+}
+
+std::string landscape_csv(const Landscape& landscape) {
+  const robot::Morphology& morph = robot::morphology(landscape.spec.kind);
+  const std::vector<std::size_t> working = working_legs(morph, landscape.spec.disabled);
+  std::string out;
+  for (std::size_t leg : working) out += morph.legs[leg].name + ",";
+  for (int w = 1; w <= landscape.spec.windows; ++w) {
+    const std::string n = std::to_string(w);
+    out += "w" + n + "_yaw_deg,w" + n + "_path_deg,";
+  }
+  out += "worst_deg,holds,first_window_passes\n";
+  for (const CombinationMeasure& m : landscape.combinations) {
+    for (std::size_t leg : working) out += std::to_string(m.periods[leg]) + ",";
+    for (const sim::WindowMeasure& w : m.windows) {
+      out += format_number(w.yaw_deg) + "," + format_number(w.path_deg) + ",";
+    }
+    out += format_number(m.worst_deg) + "," + (m.holds ? "1," : "0,") +
+           (m.first_window_passes ? "1\n" : "0\n");
+  }
+  return out;
+}
+
+nlohmann::json landscape_summary(const Landscape& landscape,
+                                 const std::vector<learning::Periods>& learned) {
+  const LandscapeSpec& spec = landscape.spec;
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const std::vector<CombinationMeasure>& c = landscape.combinations;
+  const auto entry = [&](std::size_t i) {
+    return nlohmann::json{{"periods", periods_json(morph, spec.disabled, c[i].periods)},
+                          {"worst_deg", c[i].worst_deg},
+                          {"holds", c[i].holds},
+                          {"first_window_passes", c[i].first_window_passes}};
+  };
+  const std::size_t holding =
+      std::count_if(c.begin(), c.end(), [](const CombinationMeasure& m) { return m.holds; });
+  const std::size_t first = std::count_if(
+      c.begin(), c.end(), [](const CombinationMeasure& m) { return m.first_window_passes; });
+
+  const std::vector<std::size_t> ranked = ranked_combinations(landscape);
+  std::vector<std::size_t> rank_of(c.size());
+  for (std::size_t r = 0; r < ranked.size(); ++r) rank_of[ranked[r]] = r + 1;
+  nlohmann::json top = nlohmann::json::array();
+  for (std::size_t r = 0; r < std::min(kLandscapeTop, ranked.size()); ++r) {
+    top.push_back(entry(ranked[r]));
+  }
+  nlohmann::json learned_json = nlohmann::json::array();
+  for (const learning::Periods& periods : learned) {
+    const auto it = std::find_if(c.begin(), c.end(),
+                                 [&](const CombinationMeasure& m) { return m.periods == periods; });
+    if (it == c.end()) throw std::logic_error("a learned combination is not in the landscape");
+    nlohmann::json e = entry(static_cast<std::size_t>(it - c.begin()));
+    e["rank"] = rank_of[static_cast<std::size_t>(it - c.begin())];
+    learned_json.push_back(e);
+  }
+  const std::optional<std::size_t> best = best_combination(landscape);
+
+  nlohmann::json summary = arguments(spec);
+  summary["count"] = c.size();
+  summary["holding"] = holding;
+  summary["share_holding"] = share(holding, c.size());
+  summary["first_window_passing"] = first;
+  summary["share_first_window_passing"] = share(first, c.size());
+  summary["best"] = best ? entry(*best) : nlohmann::json(nullptr);
+  summary["top"] = top;
+  summary["learned"] = learned_json;
+  return summary;
+}
+
+std::vector<learning::Periods> parse_learned(const nlohmann::json& j, const LandscapeSpec& spec) {
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  if (!j.is_array()) throw BadInput("learned combinations: expected a JSON array of {leg: period}");
+  std::vector<learning::Periods> out;
+  for (std::size_t n = 0; n < j.size(); ++n) {
+    const std::string where = "learned combination " + std::to_string(n + 1);
+    if (!j[n].is_object()) throw BadInput(where + " is not a {leg: period} object");
+    learning::Periods periods(morph.size(), learning::kStartPeriod);
+    std::vector<bool> named(morph.size(), false);
+    for (const auto& [name, value] : j[n].items()) {
+      const std::size_t leg = robot::leg_index(morph, name);
+      named[leg] = true;
+      if (is_disabled(spec.disabled, leg)) continue;
+      if (!value.is_number_integer() || std::find(spec.period_set.begin(), spec.period_set.end(),
+                                                  value.get<int>()) == spec.period_set.end()) {
+        throw BadInput(where + ": " + name + " = " + value.dump() + " is not in the period set");
+      }
+      periods[leg] = value.get<int>();
+    }
+    for (std::size_t leg : working_legs(morph, spec.disabled)) {
+      if (!named[leg]) throw BadInput(where + " does not name leg " + morph.legs[leg].name);
+    }
+    out.push_back(periods);
+  }
+  return out;
+}
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,111 @@
+// The landscape of one leg-failure scenario (issue 8): every combination of working-leg periods,
+// each walked and measured the same way, so the learners can be scored against the truth. A
+// combination is measured from a robot already walking (warmed-up, locked controller with the
+// legs failed), set to the combination, settled, then measured over W windows of 400 steps.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "learning/annealing.h"
+#include "learning/compensation.h"
+#include "sim/deviation.h"
+#include "sim/sim.h"
+
+namespace multicpg::experiments {
+
+// Windows measured per combination: 6 x 400 steps = 89 s at 27 Hz, long enough that a slow
+// drift shows in some window (issue 8).
+inline constexpr int kDefaultLandscapeWindows = 6;
+// Combinations listed in summary.json's "top" (issue 8).
+inline constexpr std::size_t kLandscapeTop = 10;
+
+// Everything that decides a landscape's results.
+struct LandscapeSpec {
+  robot::RobotKind kind = robot::RobotKind::hexapod;
+  std::vector<std::size_t> disabled;  // sorted, unique, not every leg
+  std::vector<int> period_set = learning::AnnealingParams{}.period_set;
+  int windows = kDefaultLandscapeWindows;
+  long window_steps = learning::kDefaultWindowSteps;
+  double threshold_deg = learning::kDefaultThresholdDeg;
+  sim::SimOptions sim;
+};
+
+// Throws BadInput (one line) for an unknown or repeated leg, every leg disabled, an empty period
+// set, a repeated period or one outside 1-9, windows < 1, window steps < 1, threshold <= 0.
+void validate(const LandscapeSpec& spec);
+
+// What one combination does (the ground truth of issue 8).
+struct CombinationMeasure {
+  learning::Periods periods;  // every leg; disabled legs keep 4
+  long settle_steps = 0;      // walked unmeasured after the periods were set
+  std::vector<sim::WindowMeasure> windows;
+  double worst_deg = 0.0;            // largest worst_deg() of the windows
+  bool holds = false;                // every window's worst_deg() under the threshold
+  bool first_window_passes = false;  // the paper's criterion on the first window: |yaw| < threshold
+};
+
+// Walks `steps` controller steps (the one stepping loop of the landscape).
+void walk_steps(const sim::SimModel& model, sim::SimState& state, long steps);
+
+// The trunk's pose now (position and front trunk yaw).
+sim::Pose2 trunk_pose(const sim::SimModel& model, const sim::SimState& state);
+
+// Measures one combination: start_walk_state with every leg at 4 and `disabled` failed from the
+// start, the controller warmed up alone for sim::kControllerWarmup steps; then `periods` set with
+// every client free (as learning tries a candidate), learning::locked_settle_steps unmeasured,
+// and `windows` windows of `window_steps` steps, each measured by sim::measure_window.
+CombinationMeasure measure_combination(const sim::SimModel& model,
+                                       const std::vector<std::size_t>& disabled,
+                                       const learning::Periods& periods, int windows,
+                                       long window_steps, double threshold_deg);
+
+// Every combination of the period set over the working legs, disabled legs at 4; the first
+// working leg varies slowest (5 periods, 5 working legs: 3,125).
+std::vector<learning::Periods> landscape_combinations(const LandscapeSpec& spec);
+
+// "R2-4_R3-5_L1-6_L2-8_L3-9": the working legs' periods, the name of the combination's run file.
+std::string combination_key(const robot::Morphology& morph,
+                            const std::vector<std::size_t>& disabled,
+                            const learning::Periods& periods);
+
+nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph);
+CombinationMeasure combination_from_json(const nlohmann::json& j, const robot::Morphology& morph);
+
+struct Landscape {
+  LandscapeSpec spec;
+  std::vector<CombinationMeasure> combinations;  // in landscape_combinations order
+};
+
+// Index of the best combination: the one that holds with the smallest worst deviation (the
+// first such in order on ties); empty if none holds.
+std::optional<std::size_t> best_combination(const Landscape& landscape);
+// Indices of the combinations from the smallest worst deviation up (ties in order).
+std::vector<std::size_t> ranked_combinations(const Landscape& landscape);
+
+// Runs every combination not yet saved in out/runs on `jobs` threads (experiments/runner.h;
+// resumable, refused for another spec), then writes out/landscape.csv and out/summary.json.
+// `learned`: combinations a learner found (every leg's period), placed in the summary.
+Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
+                        bool progress, const std::vector<learning::Periods>& learned = {});
+
+// landscape.csv: one row per combination: each working leg's period, per window yaw_deg and
+// path_deg, worst_deg, holds, first_window_passes (1/0). Numbers in shortest round-trip form.
+std::string landscape_csv(const Landscape& landscape);
+
+// summary.json: the spec, count, holding (count, share), first window passing (count, share),
+// best (periods, worst_deg; null if none holds), top (kLandscapeTop smallest worst deviations) and
+// learned (each with its worst_deg, holds and rank, 1 = smallest worst deviation).
+nlohmann::json landscape_summary(const Landscape& landscape,
+                                 const std::vector<learning::Periods>& learned);
+
+// Reads a JSON array of {leg: period} objects naming every working leg (disabled legs may be
+// named with any period and are set to 4). Throws BadInput (one line) for anything else or a
+// period outside the spec's period set.
+std::vector<learning::Periods> parse_learned(const nlohmann::json& j, const LandscapeSpec& spec);
+
+}  // namespace multicpg::experiments

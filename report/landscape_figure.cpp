@@ -1,0 +1,37 @@
+#include "report/landscape_figure.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "experiments/scenarios.h"
+
+namespace multicpg::report {
+
+FigureFiles draw_landscape(const experiments::Landscape& landscape,
+                           const std::vector<learning::Periods>& learned,
+                           const std::filesystem::path& out_dir) {
+  const experiments::LandscapeSpec& spec = landscape.spec;
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const std::optional<std::size_t> best = experiments::best_combination(landscape);
+  std::vector<LandscapePoint> points;
+  for (std::size_t i = 0; i < landscape.combinations.size(); ++i) {
+    const experiments::CombinationMeasure& m = landscape.combinations[i];
+    LandscapePoint p{experiments::working_periods_text(morph, m.periods, spec.disabled),
+                     {},
+                     m.worst_deg,
+                     m.holds,
+                     m.first_window_passes};
+    for (const sim::WindowMeasure& w : m.windows) p.window_worst_deg.push_back(w.worst_deg());
+    p.best = best == i;
+    p.learned = static_cast<int>(std::count(learned.begin(), learned.end(), m.periods));
+    points.push_back(std::move(p));
+  }
+  const std::string title =
+      morph.name + ", " +
+      (spec.disabled.empty() ? std::string("no leg")
+                             : experiments::scenario_name(morph, spec.disabled)) +
+      " disabled";
+  return plot_landscape(points, title, spec.threshold_deg, out_dir);
+}
+
+}  // namespace multicpg::report
