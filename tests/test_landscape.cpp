@@ -158,14 +158,17 @@ TEST(Landscape, SpecValidation) {
   EXPECT_NO_THROW(experiments::validate(spec));
 }
 
-// The CLI's landscape.csv against every combination walked independently here.
+// The CLI's landscape.csv against every combination walked independently here. The period set
+// {4, 8, 9} (27 of the 125 combinations, holding the two that hold over 6 windows: R1=9 R2=9
+// L1=4 and R1=8 R2=9 L1=4) keeps the test short; the full 125 are in docs/learning.md.
 TEST_F(LandscapeCli, QuadrupedL2MatchesABruteForceWalk) {
-  const auto r = run_cli("landscape --robot quadruped --disable L2 --jobs 2 --windows " +
+  const auto r = run_cli("landscape --robot quadruped --disable L2 --periods-set 4,8,9 --jobs 2 "
+                         "--windows " +
                          std::to_string(kTestWindows) + " --out " + dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("125 combinations"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("27 combinations"), std::string::npos) << r.out;
   const CsvTable csv = read_csv(dir_ + "/landscape.csv");
-  ASSERT_EQ(csv.rows.size(), 125u);
+  ASSERT_EQ(csv.rows.size(), 27u);
   const std::size_t worst = csv.column("worst_deg");
   const std::size_t holds = csv.column("holds");
   const std::size_t first = csv.column("first_window_passes");
@@ -188,10 +191,10 @@ TEST_F(LandscapeCli, QuadrupedL2MatchesABruteForceWalk) {
     EXPECT_EQ(row[first] == "1", expected.first_window_passes) << row[0] << row[1] << row[2];
     holding += expected.holds ? 1 : 0;
   }
-  EXPECT_EQ(seen.size(), 125u);
+  EXPECT_EQ(seen.size(), 27u);
 
   const nlohmann::json summary = nlohmann::json::parse(read_file(dir_ + "/summary.json"));
-  EXPECT_EQ(summary.at("count"), 125);
+  EXPECT_EQ(summary.at("count"), 27);
   EXPECT_EQ(summary.at("holding"), holding);
   EXPECT_EQ(summary.at("top").size(), experiments::kLandscapeTop);
   EXPECT_TRUE(fs::file_size(dir_ + "/landscape_map.png") > 0);
