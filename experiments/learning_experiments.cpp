@@ -63,7 +63,8 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string
   validate(runner);
   const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
   const RunnerOutcome outcome = run_tasks(
-      tasks, [&](const Task& task) { return run_task(model, spec.base, spec.check_windows, task); }, runner);
+      tasks, [&](const Task& task) { return run_task(model, spec.base, spec.check_windows, task); },
+      runner);
 
   ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
                         summarize(model.controller.morphology, tasks, outcome.results)};

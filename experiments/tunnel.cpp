@@ -78,7 +78,14 @@ LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim:
   LearnedTunnelRun out;
   out.learning = run_learning(open, options, /*record=*/false, 0, learning_observer).result;
   TunnelSpec spec;
-  spec.disabled = learning::failing_legs(options);
+  // The legs still failed when the timeline is over walk the tunnel failed.
+  std::vector<bool> failed(corridor.legs.size(), false);
+  for (const sim::Fault& f : learning::fault_timeline(options)) {
+    for (std::size_t leg : f.legs) failed[leg] = !f.recover;
+  }
+  for (std::size_t leg = 0; leg < failed.size(); ++leg) {
+    if (failed[leg]) spec.disabled.push_back(leg);
+  }
   spec.periods = out.learning.periods;
   spec.max_steps = max_steps;
   if (out.learning.steering) spec.steering = options.steering_params;

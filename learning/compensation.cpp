@@ -228,6 +228,18 @@ void validate(const CompensationOptions& options, const robot::Morphology& morph
 
 namespace {
 
+// Tells the walker's observer that episode `number` ended, held or not.
+void emit_episode_end(Walker& walker, int number, const Episode& episode) {
+  sim::Event done;
+  done.kind = sim::EventKind::episode_end;
+  done.episode = number;
+  done.trial = episode.trials;
+  done.periods = episode.periods;
+  done.deviation_deg = episode.final_deviation_deg;
+  done.accepted = episode.held;
+  walker.emit(done);
+}
+
 LearningResult compensate_paper(Walker& walker, const CompensationOptions& options) {
   const neural::ControllerModel& model = walker.controller_model();
   LearningResult result;
@@ -303,14 +315,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   episode.reason = result.reason;
   episode.periods = result.periods;
   episode.final_deviation_deg = result.final_deviation_deg;
-  sim::Event done;
-  done.kind = sim::EventKind::episode_end;
-  done.episode = 1;
-  done.trial = episode.trials;
-  done.periods = episode.periods;
-  done.deviation_deg = episode.final_deviation_deg;
-  done.accepted = episode.held;
-  walker.emit(done);
+  emit_episode_end(walker, 1, episode);
   result.episodes.push_back(std::move(episode));
   return result;
 }
@@ -370,8 +375,8 @@ class RobustRun {
   double error(const sim::WindowMeasure& m) const {
     double e = m.worst_deg();
     if (options_.steering == Steering::reflex) {
-      e = std::max(e, params_.threshold_deg * m.steering_effort /
-                          options_.steering_params.max_effort);
+      e = std::max(e,
+                   params_.threshold_deg * m.steering_effort / options_.steering_params.max_effort);
     }
     return e;
   }
@@ -462,14 +467,7 @@ class RobustRun {
     ep.final_deviation_deg = state.e_ref;
     for (TrialRecord& t : state.trace) result_.trace.push_back(std::move(t));
     result_.trials += state.trials;
-    sim::Event done;
-    done.kind = sim::EventKind::episode_end;
-    done.episode = number;
-    done.trial = ep.trials;
-    done.periods = ep.periods;
-    done.deviation_deg = ep.final_deviation_deg;
-    done.accepted = ep.held;
-    walker_.emit(done);
+    emit_episode_end(walker_, number, ep);
     result_.episodes.push_back(std::move(ep));
   }
 
@@ -478,9 +476,9 @@ class RobustRun {
     result_.steps_walked = walk_.walked();
     result_.steering_effort = walk_.effort();
     result_.steering = walk_.steering();
-    const bool held = std::all_of(
-        result_.final_windows.begin(), result_.final_windows.end(),
-        [&](const sim::WindowMeasure& m) { return error(m) <= params_.threshold_deg; });
+    const bool held =
+        std::all_of(result_.final_windows.begin(), result_.final_windows.end(),
+                    [&](const sim::WindowMeasure& m) { return error(m) <= params_.threshold_deg; });
     if (result_.episodes.empty()) {
       result_.status = held ? "no deviation" : "not converged";
       result_.converged = false;
@@ -494,8 +492,7 @@ class RobustRun {
       result_.reason = last.reason;
     }
     double worst = 0.0;
-    for (const sim::WindowMeasure& m : result_.final_windows)
-      worst = std::max(worst, error(m));
+    for (const sim::WindowMeasure& m : result_.final_windows) worst = std::max(worst, error(m));
     result_.final_deviation_deg = worst;
   }
 

@@ -431,8 +431,13 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
   });
   std::vector<std::string> header{"rank", "worst_deg", "holds", "first_window_passes",
                                   "best", "learned",   "label"};
-  for (std::size_t w = 1; w <= windows; ++w)
-    header.push_back("w" + std::to_string(w) + "_worst_deg");
+  for (std::size_t w = 1; w <= windows; ++w) {
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "w" + std::to_string(w).
+    std::string column = "w";
+    column += std::to_string(w);
+    column += "_worst_deg";
+    header.push_back(std::move(column));
+  }
   Csv csv(header);
   std::size_t holding = 0;
   std::size_t first = 0;

@@ -137,7 +137,7 @@ Image draw_frame(Renderer& renderer, const sim::SimModel& model, mjData* data,
 Image film_frame(Renderer& renderer, const sim::SimModel& model, const sim::SimState& state,
                  const CameraSpec& camera, const std::string& caption) {
   const std::unique_ptr<mjData, void (*)(mjData*)> scratch(mj_makeData(model.mj.get()),
-                                                          mj_deleteData);
+                                                           mj_deleteData);
   return draw_frame(renderer, model, scratch.get(), camera, frame_pose(model, state, caption));
 }
 

@@ -81,11 +81,15 @@ std::vector<std::size_t> parse_leg_list(const Morphology& morph, std::string_vie
     if (comma == std::string_view::npos) comma = list.size();
     std::string_view item = list.substr(start, comma - start);
     if (item.empty()) throw BadInput("empty leg name in list '" + std::string(list) + "'");
-    out.push_back(leg_index(morph, item));
+    const std::size_t leg = leg_index(morph, item);
+    if (std::find(out.begin(), out.end(), leg) != out.end()) {
+      throw BadInput("leg " + std::string(item) + " is listed twice in '" + std::string(list) +
+                     "'");
+    }
+    out.push_back(leg);
     start = comma + 1;
   }
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

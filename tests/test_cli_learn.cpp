@@ -99,7 +99,8 @@ TEST(CliLearn, PaperModeReproducesTheRecordedTraces) {
     const auto want = nlohmann::json::parse(read_file(entry.path().string()));
     std::string legs;
     for (const auto& leg : want.at("disabled")) {
-      legs += (legs.empty() ? "" : ",") + leg.get<std::string>();
+      if (!legs.empty()) legs += ',';
+      legs += leg.get<std::string>();
     }
     const auto r = run_cli("learn --mode paper --robot " + want.at("robot").get<std::string>() +
                            " --disable " + legs + " --seed " +

@@ -162,9 +162,10 @@ TEST(Landscape, SpecValidation) {
 // {4, 8, 9} (27 of the 125 combinations, holding the two that hold over 6 windows: R1=9 R2=9
 // L1=4 and R1=8 R2=9 L1=4) keeps the test short; the full 125 are in docs/learning.md.
 TEST_F(LandscapeCli, QuadrupedL2MatchesABruteForceWalk) {
-  const auto r = run_cli("landscape --robot quadruped --disable L2 --periods-set 4,8,9 --jobs 2 "
-                         "--windows " +
-                         std::to_string(kTestWindows) + " --out " + dir_);
+  const auto r = run_cli(
+      "landscape --robot quadruped --disable L2 --periods-set 4,8,9 --jobs 2 "
+      "--windows " +
+      std::to_string(kTestWindows) + " --out " + dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("27 combinations"), std::string::npos) << r.out;
   const CsvTable csv = read_csv(dir_ + "/landscape.csv");

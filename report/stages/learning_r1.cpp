@@ -66,8 +66,8 @@ Section learning_r1_stage(const StageContext& ctx) {
   const std::filesystem::path video = ctx.dir("videos") / "learning-r1.mp4";
   Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, ctx.sizes.film_speed, {}});
   FilmObserver observer(film);
-  const experiments::LearningRun run = experiments::run_learning(
-      hexapod, options, /*record=*/true, kAfterLearningSteps, &observer);
+  const experiments::LearningRun run =
+      experiments::run_learning(hexapod, options, /*record=*/true, kAfterLearningSteps, &observer);
   film.finish();
   const learning::LearningResult& r = run.result;
   const std::filesystem::path figures = ctx.dir("figures");

@@ -35,7 +35,8 @@ std::string stage_of_figure(std::string_view figure) {
       if (f == name) return std::string(s.id);
     }
   }
-  throw BadInput("figure '" + std::string(name) + "' is drawn by its own command (multicpg landscape), not by reproduce");
+  throw BadInput("figure '" + std::string(name) +
+                 "' is drawn by its own command (multicpg landscape), not by reproduce");
 }
 
 std::filesystem::path StageContext::dir(const std::string& name) const {

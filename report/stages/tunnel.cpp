@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "common/table.h"
-#include "experiments/paper.h"
 #include "experiments/learning_run.h"
+#include "experiments/paper.h"
 #include "experiments/scenarios.h"
 #include "report/film.h"
 #include "report/stages/stage.h"
@@ -43,7 +43,7 @@ struct Variant {
   std::vector<int> periods;
   double paper_deg;
   bool filmed;
-  std::vector<Point2>* path;  // where its trunk path is drawn, if anywhere
+  std::vector<Point2>* path;                         // where its trunk path is drawn, if anywhere
   std::optional<learning::SteeringParams> steering;  // robust learning walks with its reflex
 };
 
@@ -64,14 +64,14 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   ScenarioOutput out;
   TrunkPaths paths;
   std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
-                                 sc.before_deg, true, &paths.before}};
+                                 sc.before_deg, true, &paths.before, std::nullopt}};
   if (!learned.empty()) {
-    variants.push_back(
-        {"our learning", periods_from_text(morph, learned), sc.after_deg, true, &paths.after});
+    variants.push_back({"our learning", periods_from_text(morph, learned), sc.after_deg, true,
+                        &paths.after, std::nullopt});
   }
   variants.push_back({"the paper's learning",
                       periods_from_text(morph, paper::combination_text(sc.learned)), sc.after_deg,
-                      false, nullptr});
+                      false, nullptr, std::nullopt});
   // Issue 8: robust learning (learn --mode robust) in the open field from a walking robot, then
   // its periods and steering reflex through the tunnel.
   {
