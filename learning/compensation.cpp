@@ -333,37 +333,31 @@ class RobustRun {
   LearningResult run() {
     result_.mode = Mode::robust;
     result_.settle_steps = settle_for(std::vector<int>(model_.size(), kStartPeriod));
-    long clean = 0;
-    while (clean < options_.monitor_windows || walk_.faults_pending()) {
+    long monitored = 0;  // windows walked since the last fault or episode
+    while (monitored < options_.monitor_windows || walk_.faults_pending()) {
       const sim::WindowMeasure m = walk_.measured_window();
       const int faults = walk_.take_fault_count();
       if (walk_.take_full_recovery()) {
         resynchronise();
-        clean = 0;
+        monitored = 0;
         result_.final_windows.clear();
         continue;
       }
       if (faults > 0) {
-        clean = 0;
+        monitored = 0;
         result_.final_windows.clear();
       }
       if (error(m) > params_.threshold_deg && faults == 0 && options_.learn_periods &&
           static_cast<int>(result_.episodes.size()) < options_.max_episodes) {
         episode(error(m));
-        clean = 0;
+        monitored = 0;
         result_.final_windows.clear();
         continue;
       }
       result_.final_windows.push_back(m);
-      if (error(m) <= params_.threshold_deg) {
-        ++clean;
-      } else if (faults == 0) {
-        // Steering alone, or no episode left: the run ends once the last fault is past and
-        // monitor_windows more windows were walked, held or not.
-        ++clean;
-      } else {
-        clean = 0;
-      }
+      // Held, or nothing left to learn with (steering alone, every episode used): either way
+      // the window counts toward the monitored windows that end the run.
+      if (faults == 0) ++monitored;
     }
     finish();
     return std::move(result_);
