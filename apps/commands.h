@@ -18,5 +18,6 @@ void register_tunnel(CLI::App& app);
 void register_reproduce(CLI::App& app);
 void register_figure(CLI::App& app);
 void register_landscape(CLI::App& app);
+void register_run(CLI::App& app);  // run, rerun, merge
 
 }  // namespace multicpg::apps

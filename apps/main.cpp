@@ -35,6 +35,7 @@ int run(int argc, char** argv) {
   apps::register_reproduce(app);
   apps::register_figure(app);
   apps::register_landscape(app);
+  apps::register_run(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -4,95 +4,56 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
-#include "experiments/learning_run.h"
-#include "experiments/runner.h"
+#include "experiments/options_json_bridge.h"
 #include "experiments/scenarios.h"
+#include "experiments/sweep.h"
 
 namespace multicpg::experiments {
 namespace {
 
-nlohmann::json arguments(const ExperimentSpec& spec, const std::string& experiment) {
-  // Every learning option (learning::to_json, the same record a learn run keeps); each task
-  // sets its own legs, seed and (beta study) beta.
-  return {{"experiment", experiment},
-          {"robot", robot::to_string(spec.kind)},
+// The document every preset shares: the spec's robot, runs, seed, options and record.
+nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind) {
+  return {{"robot", robot::to_string(kind)},
           {"runs", spec.runs},
           {"seed", spec.seed},
-          {"learning", learning::to_json(spec.base, robot::morphology(spec.kind))},
-          {"check_windows", spec.check_windows},
-          {"control_dt", spec.sim.control_dt},
-          {"physics_dt", spec.sim.physics_dt},
-          {"servo_gain", spec.sim.servo_gain}};
+          {"learning", learning_document(spec.base)},
+          {"sim", spec.sim},
+          {"record", {{"check_windows", spec.check_windows}}}};
 }
 
-// One learning run of a task: its disabled legs, seed and (beta study) beta.
-nlohmann::json run_task(const sim::SimModel& model, const learning::CompensationOptions& base,
-                        long check_windows, const Task& task) {
-  const robot::Morphology& morph = model.controller.morphology;
-  learning::CompensationOptions options = base;
-  options.disabled.clear();
-  options.faults.clear();
-  for (const nlohmann::json& name : task.params.at("disabled")) {
-    options.disabled.push_back(robot::leg_index(morph, name.get<std::string>()));
+ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& document) {
+  SweepRunOptions options;
+  options.out = spec.out;
+  if (spec.jobs > 0) options.jobs = spec.jobs;
+  options.progress = spec.progress;
+  try {
+    return *run_sweep(resolve_sweep(document), options).table;
+  } catch (const OptionError& e) {
+    throw BadInput(e.key() + " " + e.what());
   }
-  if (task.params.contains("beta")) options.annealing.beta = task.params.at("beta").get<double>();
-  options.seed = task.seed;
-  const LearningRun run =
-      run_learning(model, options, /*record=*/false, check_windows * options.window_steps);
-  nlohmann::json out = learning::to_json(run.result, morph, options.disabled);
-  if (check_windows > 0) {
-    nlohmann::json windows = nlohmann::json::array();
-    bool holds = true;
-    for (const sim::WindowMeasure& m : run.after_windows) {
-      windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
-      holds = holds && m.worst_deg() <= options.annealing.threshold_deg;
-    }
-    out["after_windows"] = windows;
-    out["holds_after"] = holds;
-  }
-  return out;
-}
-
-ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string& experiment,
-                                   const std::vector<Task>& tasks) {
-  RunnerOptions runner;
-  runner.out_dir = spec.out;
-  if (spec.jobs > 0) runner.jobs = spec.jobs;
-  runner.arguments = arguments(spec, experiment);
-  runner.progress = spec.progress;
-  validate(runner);
-  const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
-  const RunnerOutcome outcome = run_tasks(
-      tasks, [&](const Task& task) { return run_task(model, spec.base, spec.check_windows, task); },
-      runner);
-
-  ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
-                        summarize(model.controller.morphology, tasks, outcome.results)};
-  const bool beta = experiment == "beta";
-  write_file_atomic(spec.out / "table.csv",
-                    to_csv(beta ? beta_data(table.rows) : scenario_data(table.rows)));
-  write_file_atomic(spec.out / "table.md",
-                    to_markdown(beta ? beta_table(table.rows) : scenario_table(table.rows)));
-  nlohmann::json rows = nlohmann::json::array();
-  for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
-  nlohmann::json summary = arguments(spec, experiment);
-  summary["rows"] = rows;
-  write_file_atomic(spec.out / "summary.json", summary.dump(2) + "\n");
-  return table;
 }
 
 }  // namespace
 
+nlohmann::json scenario_table_document(const ExperimentSpec& spec) {
+  nlohmann::json doc = preset_document(spec, spec.kind);
+  doc["scenarios"] = "paper";
+  return doc;
+}
+
+nlohmann::json beta_study_document(const ExperimentSpec& spec, const std::vector<double>& betas) {
+  nlohmann::json doc = preset_document(spec, robot::RobotKind::hexapod);
+  doc["scenarios"] = {beta_study_scenario().name};
+  doc["learning"]["annealing"]["beta"] = betas;
+  return doc;
+}
+
 ExperimentTable run_scenario_table(const ExperimentSpec& spec) {
-  const robot::Morphology& morph = robot::morphology(spec.kind);
-  return run_tasks_to_table(
-      spec, "table", scenario_tasks(morph, paper_scenarios(spec.kind), spec.runs, spec.seed));
+  return run_preset(spec, scenario_table_document(spec));
 }
 
 ExperimentTable run_beta_study(const ExperimentSpec& spec, const std::vector<double>& betas) {
-  ExperimentSpec hexapod = spec;
-  hexapod.kind = robot::RobotKind::hexapod;
-  return run_tasks_to_table(hexapod, "beta", beta_tasks(betas, spec.runs, spec.seed));
+  return run_preset(spec, beta_study_document(spec, betas));
 }
 
 ExperimentTable read_experiment(const std::filesystem::path& out) {

@@ -18,7 +18,7 @@ struct ExperimentSpec {
   std::uint64_t seed = 1;
   int jobs = 0;  // 0 = every core
   std::filesystem::path out;
-  // Settings of every run; each run's seed, disabled legs (and beta) come from its task.
+  // Settings of every run; each run's seed and disabled legs (and beta) come from its task.
   learning::CompensationOptions base;
   // Windows walked after each run with its final controller, to see whether it holds (issue 8).
   long check_windows = 0;
@@ -26,13 +26,12 @@ struct ExperimentSpec {
   bool progress = true;
 };
 
-// An experiment's results: one summary row per scenario or beta, written to OUT as table.csv,
-// table.md and summary.json.
-struct ExperimentTable {
-  std::string experiment;  // "table" or "beta"
-  std::string robot;
-  std::vector<GroupSummary> rows;
-};
+// The experiments as documents of experiments/sweep.h (what examples/paper-*.toml hold with
+// the default options), run through run_sweep.
+// Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each.
+nlohmann::json scenario_table_document(const ExperimentSpec& spec);
+// R1+R2 disabled on the hexapod, spec.runs runs per beta.
+nlohmann::json beta_study_document(const ExperimentSpec& spec, const std::vector<double>& betas);
 
 // Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each.
 ExperimentTable run_scenario_table(const ExperimentSpec& spec);

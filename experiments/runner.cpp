@@ -45,14 +45,6 @@ std::uint64_t splitmix64(std::uint64_t x) {
   return x ^ (x >> 31);
 }
 
-bool key_names_a_file(const std::string& key) {
-  if (key.empty() || key.front() == '.') return false;
-  return std::all_of(key.begin(), key.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '+' ||
-           c == '-' || c == '_' || c == '.' || c == '=';
-  });
-}
-
 void check_keys(const std::vector<Task>& tasks) {
   std::set<std::string> seen;
   for (const Task& t : tasks) {
@@ -214,6 +206,14 @@ class Progress {
 
 std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key) {
   return splitmix64(splitmix64(base_seed) ^ fnv1a64(key));
+}
+
+bool key_names_a_file(std::string_view key) {
+  if (key.empty() || key.front() == '.') return false;
+  return std::all_of(key.begin(), key.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '+' ||
+           c == '-' || c == '_' || c == '.' || c == '=';
+  });
 }
 
 std::string run_key(std::string_view group, int run) {

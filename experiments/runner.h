@@ -30,6 +30,9 @@ using TaskFunction = std::function<nlohmann::json(const Task&)>;
 // the base by SplitMix64, so it is the same on every machine and for every thread count.
 std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key);
 
+// Whether `key` can name a run file: letters, digits, + - _ . =, not starting with a dot.
+bool key_names_a_file(std::string_view key);
+
 // "<group>_run<NNN>": the key of run `run` of `group`.
 std::string run_key(std::string_view group, int run);
 

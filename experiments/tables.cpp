@@ -154,11 +154,11 @@ std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::v
   return rows;
 }
 
-Table scenario_data(const std::vector<GroupSummary>& rows) {
-  Table t;
-  for (const char* title : {"scenario", "runs", "converged", "no_deviation", "share_converged",
-                            "final_deviation_mean_deg", "final_deviation_sd_deg", "trials_mean",
-                            "trials_sd", "best_periods", "best_count"}) {
+Table scenario_data(const std::vector<GroupSummary>& rows, const std::string& group_title) {
+  Table t{{{group_title}}, {}};
+  for (const char* title :
+       {"runs", "converged", "no_deviation", "share_converged", "final_deviation_mean_deg",
+        "final_deviation_sd_deg", "trials_mean", "trials_sd", "best_periods", "best_count"}) {
     t.columns.push_back({title});
   }
   for (const GroupSummary& r : rows) {
@@ -172,8 +172,8 @@ Table scenario_data(const std::vector<GroupSummary>& rows) {
   return t;
 }
 
-Table scenario_table(const std::vector<GroupSummary>& rows) {
-  Table t{{{"Disabled", Align::left},
+Table scenario_table(const std::vector<GroupSummary>& rows, const std::string& group_title) {
+  Table t{{{group_title, Align::left},
            {"Runs"},
            {"Converged (share)"},
            {"No deviation"},

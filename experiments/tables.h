@@ -46,13 +46,24 @@ struct GroupSummary {
 std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::vector<Task>& tasks,
                                     const std::vector<nlohmann::json>& results);
 
+// An experiment's results: one summary row per scenario, beta or grid point, written to OUT as
+// table.csv, table.md and summary.json.
+struct ExperimentTable {
+  std::string experiment;  // "table", "beta" or "grid" (experiments/sweep.h)
+  std::string robot;
+  std::vector<GroupSummary> rows;
+};
+
 nlohmann::json to_json(const GroupSummary& row);
 GroupSummary group_summary_from_json(const nlohmann::json& row);
 
 // Scenario tables (Fig. 11, 13): shown (table.md, results.md, index.html; mean ± SD cells) and
 // data (table.csv; one number per cell).
-Table scenario_table(const std::vector<GroupSummary>& rows);
-Table scenario_data(const std::vector<GroupSummary>& rows);
+// `group_title` heads the first column (a grid's rows are its points and scenarios).
+Table scenario_table(const std::vector<GroupSummary>& rows,
+                     const std::string& group_title = "Disabled");
+Table scenario_data(const std::vector<GroupSummary>& rows,
+                    const std::string& group_title = "scenario");
 // Beta tables (Fig. 14): groups are betas.
 Table beta_table(const std::vector<GroupSummary>& rows);
 Table beta_data(const std::vector<GroupSummary>& rows);

@@ -1,0 +1,182 @@
+// multicpg run | rerun | merge: experiments as files (issue 10). `run` resolves a TOML
+// experiment file (experiments/experiment_file.h) and runs it, or one shard of it; `rerun`
+// runs one recorded run again (or films it); `merge` joins the shards of a job array.
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "apps/commands.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/experiment_file.h"
+#include "experiments/scenarios.h"
+#include "report/film.h"
+
+namespace multicpg::apps {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunOptions {
+  std::string file;
+  std::string out;
+  std::optional<int> jobs;
+  std::optional<int> runs;
+  std::string shard = "0/1";
+  bool check = false;
+};
+
+int checked_jobs(const std::optional<int>& jobs) {
+  if (jobs && *jobs < 1) throw BadInput("--jobs must be at least 1, got " + std::to_string(*jobs));
+  return jobs.value_or(experiments::default_jobs());
+}
+
+void print_table(const experiments::ExperimentTable& t) {
+  std::cout << (t.experiment == "beta" ? to_markdown(experiments::beta_table(t.rows))
+                : t.experiment == "grid"
+                    ? to_markdown(experiments::scenario_table(t.rows, "Grid point"))
+                    : to_markdown(experiments::scenario_table(t.rows)));
+}
+
+void run(const RunOptions& o) {
+  if (o.runs && *o.runs < 1) {
+    throw BadInput("--runs must be at least 1, got " + std::to_string(*o.runs));
+  }
+  const experiments::Shard shard = experiments::parse_shard(o.shard);
+  const int jobs = checked_jobs(o.jobs);
+  const experiments::Sweep sweep = experiments::load_experiment_file(o.file, o.runs);
+  std::size_t in_shard = 0;
+  for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
+    in_shard += static_cast<int>(i % static_cast<std::size_t>(shard.count)) == shard.index;
+  }
+  std::size_t points = 1;
+  for (const experiments::GridAxis& a : sweep.grid) points *= a.values.size();
+  const std::size_t scenarios = sweep.resolved.at("scenarios").size();
+  std::cout << o.file << ": " << sweep.tasks.size() << " runs (" << points << " grid points x "
+            << scenarios << " scenarios x " << sweep.resolved.at("runs") << " runs)";
+  if (shard.count > 1) std::cout << ", " << in_shard << " in shard " << o.shard;
+  std::cout << "\n";
+  if (o.check) return;
+  if (o.out.empty()) throw BadInput("--out: name the directory for the runs (or use --check)");
+  experiments::SweepRunOptions options;
+  options.out = o.out;
+  options.jobs = jobs;
+  options.shard = shard;
+  const experiments::SweepOutcome outcome = experiments::run_sweep(sweep, options);
+  if (outcome.table) {
+    print_table(*outcome.table);
+    std::cout << "\nwrote " << o.out
+              << "/{table.csv,table.md,summary.json,runs.csv,trials.csv} and " << o.out
+              << "/runs/\n";
+  } else {
+    std::cout << "wrote " << o.out << "/runs/ (shard " << o.shard
+              << "); join the shards with `multicpg merge`\n";
+  }
+}
+
+struct RerunOptions {
+  std::string dir;
+  std::string id;
+  std::string out;
+  std::string film;
+};
+
+void rerun(const RerunOptions& o) {
+  if (!o.film.empty()) report::film_format(o.film);  // an unknown file type fails first
+  const experiments::RecordedSweep recorded = experiments::read_sweep(o.dir);
+  const experiments::Task* task = nullptr;
+  for (const experiments::Task& t : recorded.sweep.tasks) {
+    if (t.key == o.id) task = &t;
+  }
+  if (task == nullptr) {
+    throw BadInput("'" + o.dir + "' has no run " + o.id +
+                   " (RUN_ID: a file name in runs/ without .json)");
+  }
+  nlohmann::json result;
+  if (!o.film.empty()) {
+    const sim::SimModel model = experiments::make_task_model(*task);
+    report::FilmSpec spec;
+    spec.out = o.film;
+    report::Film film(model, spec);
+    report::FilmObserver observer(film);
+    result = experiments::run_sweep_task(*task, &observer);
+    film.finish();
+    std::cout << "wrote " << o.film << " (" << film.frames() << " frames)\n";
+  } else {
+    result = experiments::run_sweep_task(*task);
+  }
+  if (!o.out.empty()) {
+    experiments::RunnerOptions runner;
+    runner.out_dir = o.out;
+    runner.jobs = 1;
+    runner.progress = false;
+    runner.arguments = recorded.sweep.resolved;
+    if (recorded.shard.count > 1)
+      runner.arguments["shard"] = experiments::to_string(recorded.shard);
+    ensure_writable_dir(o.out);
+    experiments::run_tasks(
+        {*task}, [&](const experiments::Task&) { return result; }, runner);
+    std::cout << "wrote " << (fs::path(o.out) / "runs" / (o.id + ".json")).string() << "\n";
+  }
+  const fs::path saved_path = fs::path(o.dir) / "runs" / (o.id + ".json");
+  std::ifstream in(saved_path, std::ios::binary);
+  std::ostringstream saved;
+  saved << in.rdbuf();
+  const std::string saved_text = saved.str();
+  std::cout << o.id << ": " << result.at("status").get<std::string>() << " after "
+            << result.at("trials") << " trials";
+  if (saved_text.empty()) {
+    std::cout << " (" << saved_path.string() << " not saved yet)\n";
+    return;
+  }
+  if (experiments::parse_sealed(saved_text, saved_path).at("result") != result) {
+    throw RuntimeFailure("rerun of " + o.id + " differs from " + saved_path.string());
+  }
+  std::cout << ", identical to " << saved_path.string() << "\n";
+}
+
+}  // namespace
+
+void register_run(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "run", "run an experiment file (TOML: scenarios, a grid of options, runs; README)");
+  cmd->add_option("FILE", o->file, "the experiment file (examples/*.toml)")->required();
+  cmd->add_option("--out", o->out, "directory for the runs, tables and CSVs (resumes)");
+  cmd->add_option("--jobs", o->jobs, "parallel runs (default: every core)");
+  cmd->add_option("--runs", o->runs, "runs per grid point and scenario (replaces the file's)");
+  cmd->add_option("--shard", o->shard,
+                  "i/N: run only the runs whose index % N == i (a job array; join with merge)")
+      ->capture_default_str();
+  cmd->add_flag("--check", o->check, "validate the file and print the run count, run nothing");
+  cmd->callback([o] { run(*o); });
+
+  auto r = std::make_shared<RerunOptions>();
+  CLI::App* re = app.add_subcommand(
+      "rerun", "run one run of an experiment directory again, from its recorded options");
+  re->add_option("DIR", r->dir, "the experiment directory")->required();
+  re->add_option("RUN_ID", r->id, "the run's file name in DIR/runs without .json")->required();
+  re->add_option("--out", r->out, "write the run file into this directory as well");
+  re->add_option("--film", r->film, "film the run (FILE.mp4, or FILE.png for its last step)");
+  re->callback([r] { rerun(*r); });
+
+  struct MergeOptions {
+    std::string out;
+    std::vector<std::string> dirs;
+  };
+  auto m = std::make_shared<MergeOptions>();
+  CLI::App* me = app.add_subcommand(
+      "merge", "join the shard directories of one experiment (run --shard) into OUT");
+  me->add_option("OUT", m->out, "the directory for the whole experiment")->required();
+  me->add_option("DIR", m->dirs, "the shard directories")->required();
+  me->callback([m] {
+    std::vector<fs::path> dirs(m->dirs.begin(), m->dirs.end());
+    print_table(experiments::merge_sweeps(m->out, dirs, /*progress=*/false));
+    std::cout << "\nwrote " << m->out
+              << "/{table.csv,table.md,summary.json,runs.csv,trials.csv} and " << m->out
+              << "/runs/\n";
+  });
+}
+
+}  // namespace multicpg::apps

@@ -1,0 +1,887 @@
+#include "experiments/sweep.h"
+
+#include <algorithm>
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/learning_run.h"
+#include "experiments/options_json_bridge.h"
+#include "experiments/scenarios.h"
+#include "sim/sim.h"
+
+namespace multicpg::experiments {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr int kJsonIndent = 2;
+constexpr std::size_t kMaxScenarioLegs = 3;  // SPEC §8: 1-3 disabled legs ("all")
+
+// Keys each run sets itself: its disabled legs or fault timeline and its seed.
+const std::set<std::string> kPerRunLearningKeys{"disabled", "faults", "seed"};
+
+std::string join(const std::vector<std::string>& parts, const std::string& sep) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : sep) + p;
+  return out;
+}
+
+std::string child(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+std::string indexed(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+std::string type_name(const json& j) {
+  if (j.is_boolean()) return "true or false";
+  if (j.is_number_integer()) return "a whole number";
+  if (j.is_number()) return "a number";
+  if (j.is_string()) return "a string";
+  if (j.is_array()) return "a list";
+  if (j.is_object()) return "a table";
+  return "a value";
+}
+
+// Checks a single value against its default's type (no grid).
+void check_type(const json& value, const json& def, const std::string& path) {
+  const auto wrong = [&] {
+    return OptionError(path, "must be " + type_name(def) + ", got " + value.dump());
+  };
+  if (def.is_null()) return;  // an optional: its from_json decides
+  if (def.is_boolean() || def.is_string()) {
+    if (value.type() != def.type()) throw wrong();
+  } else if (def.is_number_integer()) {
+    if (!value.is_number_integer()) throw wrong();
+    if (def.is_number_unsigned() && value.get<std::int64_t>() < 0) {
+      throw OptionError(path, "must be at least 0, got " + value.dump());
+    }
+  } else if (def.is_number()) {
+    if (!value.is_number()) throw wrong();
+  } else if (def.is_array()) {
+    if (!value.is_array()) throw wrong();
+    for (std::size_t i = 0; i < value.size() && !def.empty(); ++i) {
+      check_type(value[i], def.front(), indexed(path, i));
+    }
+  } else if (def.is_object()) {
+    throw wrong();
+  }
+}
+
+// A list where the default is no list, or a list of lists where it is one: a grid axis.
+bool is_grid(const json& value, const json& def) {
+  if (!value.is_array()) return false;
+  if (!def.is_array()) return true;
+  return !value.empty() &&
+         std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_array(); });
+}
+
+std::string known_keys(const json& def, const std::set<std::string>& except = {}) {
+  std::vector<std::string> keys;
+  for (const auto& item : def.items()) {
+    if (!except.count(item.key())) keys.push_back(item.key());
+  }
+  return join(keys, ", ");
+}
+
+// `out` = the defaults `def` with the document's `value` put in, every key and type checked;
+// grid lists go to `grid` (and stay lists in `out`).
+void merge_checked(const json& value, const json& def, const std::string& path, json& out,
+                   std::vector<GridAxis>& grid, const std::set<std::string>& forbidden = {}) {
+  if (def.is_object()) {
+    if (!value.is_object()) {
+      throw OptionError(path, "must be a table, got " + value.dump());
+    }
+    for (const auto& item : value.items()) {
+      const std::string key = child(path, item.key());
+      if (forbidden.count(item.key())) {
+        throw OptionError(key, "is set by each run (scenarios, seed), not here");
+      }
+      if (!def.contains(item.key())) {
+        throw OptionError(key, "is not an option here (known: " + known_keys(def, forbidden) + ")");
+      }
+      merge_checked(item.value(), def.at(item.key()), key, out[item.key()], grid);
+    }
+    return;
+  }
+  if (is_grid(value, def)) {
+    if (value.empty()) throw OptionError(path, "is an empty list");
+    for (std::size_t i = 0; i < value.size(); ++i) check_type(value[i], def, indexed(path, i));
+    grid.push_back({path, value});
+  } else {
+    check_type(value, def, path);
+  }
+  out = value;
+}
+
+// `j` read into a T by its from_json (found by argument-dependent lookup).
+template <typename T>
+T decode(const json& j) {
+  T t;
+  from_json(j, t);
+  return t;
+}
+
+// The options of one grid point, checked to read back as given (an unknown enum name, a
+// whole number given for a fractional one, ...).
+template <typename T>
+T options_from(const json& point, const std::string& section) {
+  T options;
+  try {
+    options = decode<T>(point);
+  } catch (const OptionError& e) {
+    throw OptionError(child(section, e.key()), e.what());
+  } catch (const BadInput& e) {
+    throw OptionError(section, e.what());
+  } catch (const json::exception& e) {
+    throw OptionError(section, e.what());
+  }
+  const json full = options;
+  json readback = full;
+  for (const auto& item : full.items()) {
+    if (!point.contains(item.key())) readback.erase(item.key());  // set by each run
+  }
+  if (const std::optional<std::string> at = first_difference(point, readback, section)) {
+    throw OptionError(*at, "is not a valid value");
+  }
+  return options;
+}
+
+// A grid point's value of one axis as a short text ("0.1", "paper", "4-5-6").
+std::string value_text(const json& v) {
+  if (v.is_number_float()) return format_number(v.get<double>());
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_array()) {
+    std::vector<std::string> parts;
+    for (const json& e : v) parts.push_back(value_text(e));
+    return join(parts, "-");
+  }
+  return v.dump();
+}
+
+struct ScenarioSpec {
+  std::string name;
+  json resolved;  // the name of a leg set, or {name, faults} of a timeline
+  std::vector<std::size_t> disabled;
+  sim::FaultTimeline faults;
+};
+
+std::vector<std::size_t> parse_legs(const robot::Morphology& morph, const json& legs,
+                                    const std::string& path) {
+  std::vector<std::string> names;
+  if (legs.is_string()) {
+    std::string text = legs.get<std::string>();
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t plus = text.find('+', start);
+      names.push_back(text.substr(start, plus - start));
+      if (plus == std::string::npos) break;
+      start = plus + 1;
+    }
+  } else if (legs.is_array() && !legs.empty()) {
+    for (const json& n : legs) {
+      if (!n.is_string()) throw OptionError(path, "must name legs, got " + n.dump());
+      names.push_back(n.get<std::string>());
+    }
+  } else {
+    throw OptionError(path, "must name legs (\"R1+R3\" or [\"R1\", \"R3\"]), got " + legs.dump());
+  }
+  std::vector<std::size_t> out;
+  for (const std::string& name : names) {
+    try {
+      out.push_back(robot::leg_index(morph, name));
+    } catch (const BadInput& e) {
+      throw OptionError(path, e.what());
+    }
+  }
+  std::sort(out.begin(), out.end());
+  if (std::adjacent_find(out.begin(), out.end()) != out.end()) {
+    throw OptionError(path, "names a leg twice: " + legs.dump());
+  }
+  return out;
+}
+
+json leg_names(const robot::Morphology& morph, const std::vector<std::size_t>& legs) {
+  json out = json::array();
+  for (std::size_t leg : legs) out.push_back(morph.legs.at(leg).name);
+  return out;
+}
+
+ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
+                               const std::string& path) {
+  const json defaults{{"name", ""}, {"faults", json::array()}};
+  for (const auto& item : s.items()) {
+    if (!defaults.contains(item.key())) {
+      throw OptionError(child(path, item.key()), "is not a scenario key (known: name, faults)");
+    }
+  }
+  if (!s.contains("name") || !s.at("name").is_string()) {
+    throw OptionError(child(path, "name"), "must name the scenario (a string)");
+  }
+  ScenarioSpec out;
+  out.name = s.at("name").get<std::string>();
+  if (!key_names_a_file(out.name)) {
+    throw OptionError(child(path, "name"),
+                      "must be letters, digits and + - _ . =, got \"" + out.name + "\"");
+  }
+  const std::string faults_path = child(path, "faults");
+  if (!s.contains("faults") || !s.at("faults").is_array() || s.at("faults").empty()) {
+    throw OptionError(faults_path, "must list at least one fault ({step, legs, recover})");
+  }
+  json faults = json::array();
+  for (std::size_t i = 0; i < s.at("faults").size(); ++i) {
+    const json& f = s.at("faults")[i];
+    const std::string fp = indexed(faults_path, i);
+    if (!f.is_object()) throw OptionError(fp, "must be a table {step, legs, recover}");
+    const json fault_defaults{{"step", 0}, {"legs", json::array()}, {"recover", false}};
+    for (const auto& item : f.items()) {
+      if (!fault_defaults.contains(item.key())) {
+        throw OptionError(child(fp, item.key()), "is not a fault key (known: step, legs, recover)");
+      }
+    }
+    sim::Fault fault;
+    if (f.contains("step")) {
+      check_type(f.at("step"), fault_defaults.at("step"), child(fp, "step"));
+      fault.step = f.at("step").get<long>();
+    }
+    if (f.contains("recover")) {
+      check_type(f.at("recover"), fault_defaults.at("recover"), child(fp, "recover"));
+      fault.recover = f.at("recover").get<bool>();
+    }
+    fault.legs = parse_legs(morph, f.value("legs", json()), child(fp, "legs"));
+    try {
+      sim::validate(morph, {fault});
+    } catch (const BadInput& e) {
+      throw OptionError(fp, e.what());
+    }
+    out.faults.push_back(fault);
+    faults.push_back(
+        {{"step", fault.step}, {"legs", leg_names(morph, fault.legs)}, {"recover", fault.recover}});
+  }
+  try {
+    sim::validate(morph, out.faults);
+  } catch (const BadInput& e) {
+    throw OptionError(faults_path, e.what());
+  }
+  out.resolved = {{"name", out.name}, {"faults", faults}};
+  return out;
+}
+
+std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& doc) {
+  const robot::Morphology& morph = robot::morphology(kind);
+  if (!doc.contains("scenarios")) {
+    throw OptionError("scenarios", "is missing: \"paper\", \"all\" or a list of leg sets");
+  }
+  const json& s = doc.at("scenarios");
+  std::vector<ScenarioSpec> out;
+  if (s.is_string()) {
+    std::vector<Scenario> named;
+    try {
+      if (s == "paper") {
+        named = paper_scenarios(kind);
+      } else if (s == "all") {
+        named = mirror_scenarios(morph, kMaxScenarioLegs);
+      } else {
+        throw OptionError("scenarios", "must be \"paper\", \"all\" or a list, got " + s.dump());
+      }
+    } catch (const OptionError&) {
+      throw;
+    } catch (const BadInput& e) {
+      throw OptionError("scenarios", e.what());
+    }
+    for (const Scenario& n : named) out.push_back({n.name, n.name, n.disabled, {}});
+  } else if (s.is_array()) {
+    if (s.empty()) throw OptionError("scenarios", "is an empty list");
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const std::string path = indexed("scenarios", i);
+      if (s[i].is_object()) {
+        out.push_back(timeline_scenario(morph, s[i], path));
+      } else if (s[i].is_string()) {
+        const std::vector<std::size_t> legs = parse_legs(morph, s[i], path);
+        const std::string name = scenario_name(morph, legs);
+        out.push_back({name, name, legs, {}});
+      } else {
+        throw OptionError(
+            path, "must be a leg set (\"R1+R3\") or a fault timeline table, got " + s[i].dump());
+      }
+      for (std::size_t j = 0; j + 1 < out.size(); ++j) {
+        if (out[j].name == out.back().name) {
+          throw OptionError(path, "repeats the scenario " + out.back().name);
+        }
+      }
+    }
+  } else {
+    throw OptionError("scenarios", "must be \"paper\", \"all\" or a list, got " + s.dump());
+  }
+  return out;
+}
+
+// A whole number at `key` of `doc` in [lo, hi], or `fallback` when absent.
+long whole(const json& doc, const std::string& key, long fallback, long lo, long hi,
+           const std::string& path) {
+  if (!doc.contains(key)) return fallback;
+  const json& v = doc.at(key);
+  if (!v.is_number_integer()) {
+    throw OptionError(path, "must be a whole number, got " + v.dump());
+  }
+  const long n = v.get<long>();
+  if (n < lo || n > hi) {
+    throw OptionError(path, "must be in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                                ", got " + std::to_string(n));
+  }
+  return n;
+}
+
+// The grid points: one value per axis, the first axis slowest.
+std::vector<std::vector<json>> grid_points(const std::vector<GridAxis>& grid) {
+  std::vector<std::vector<json>> points{{}};
+  for (const GridAxis& axis : grid) {
+    std::vector<std::vector<json>> next;
+    for (const std::vector<json>& p : points) {
+      for (const json& v : axis.values) {
+        next.push_back(p);
+        next.back().push_back(v);
+      }
+    }
+    points = std::move(next);
+  }
+  return points;
+}
+
+// "learning.annealing.beta" -> "/annealing/beta" within its section.
+json::json_pointer pointer_in_section(const std::string& key) {
+  std::string p;
+  std::size_t start = key.find('.') + 1;
+  while (true) {
+    const std::size_t dot = key.find('.', start);
+    p += "/" + key.substr(start, dot - start);
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return json::json_pointer(p);
+}
+
+// Short axis names for keys and groups: the last key part, the whole key when two share it.
+std::vector<std::string> axis_names(const std::vector<GridAxis>& grid) {
+  std::vector<std::string> names;
+  for (const GridAxis& a : grid) names.push_back(a.key.substr(a.key.rfind('.') + 1));
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (std::count(names.begin(), names.end(), names[i]) > 1) names[i] = grid[i].key;
+  }
+  return names;
+}
+
+void check_sim(robot::RobotKind kind, const sim::SimOptions& options) {
+  try {
+    (void)sim::make_sim_model(kind, options);
+  } catch (const OptionError& e) {
+    throw OptionError(child("sim", e.key()), e.what());
+  } catch (const BadInput& e) {
+    throw OptionError("sim", e.what());
+  }
+}
+
+// OUT/experiment.json's arguments, if OUT holds an experiment.
+std::optional<json> stored_arguments(const fs::path& out) {
+  const fs::path path = out / "experiment.json";
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  const json record = parse_sealed(text.str(), path);
+  if (!record.contains("arguments")) {
+    throw BadInput("'" + path.string() + "' records no experiment arguments");
+  }
+  std::optional<json> arguments;
+  arguments.emplace(record.at("arguments"));
+  return arguments;
+}
+
+// Refuses OUT when it holds an experiment of other arguments, naming the first differing key.
+void refuse_other_experiment(const fs::path& out, const json& arguments) {
+  const std::optional<json> stored = stored_arguments(out);
+  if (!stored) return;
+  if (const std::optional<std::string> key = first_difference(*stored, arguments)) {
+    const json::json_pointer at("/" + [&] {
+      std::string p = *key;
+      std::replace(p.begin(), p.end(), '.', '/');
+      return p;
+    }());
+    const auto shown = [&](const json& j) {
+      return j.contains(at) ? j.at(at).dump() : std::string("nothing");
+    };
+    throw BadInput("'" + out.string() + "' holds an experiment made with another " + *key + " (" +
+                   shown(*stored) + " there, " + shown(arguments) +
+                   " now); use another output directory");
+  }
+}
+
+json arguments_of(const Sweep& sweep, const Shard& shard) {
+  json args = sweep.resolved;
+  if (shard.count > 1) args["shard"] = to_string(shard);
+  return args;
+}
+
+sim::SimModel make_task_model(robot::RobotKind kind, const Task& task) {
+  return sim::make_sim_model(kind, decode<sim::SimOptions>(task.params.at("sim")));
+}
+
+// Each distinct simulation of the tasks, made once and shared read-only by the threads.
+class Models {
+ public:
+  Models(robot::RobotKind kind, const std::vector<Task>& tasks) {
+    for (const Task& t : tasks) {
+      const std::string key = t.params.at("sim").dump();
+      if (!models_.count(key)) {
+        models_.emplace(key, make_task_model(kind, t));
+      }
+    }
+  }
+  const sim::SimModel& of(const Task& task) const {
+    return models_.at(task.params.at("sim").dump());
+  }
+
+ private:
+  std::map<std::string, sim::SimModel> models_;
+};
+
+json task_result(const sim::SimModel& model, const Task& task, sim::Observer* observer) {
+  const robot::Morphology& morph = model.controller.morphology;
+  const auto options = decode<learning::CompensationOptions>(task.params.at("learning"));
+  const json& record = task.params.at("record");
+  const long check_windows = record.at("check_windows").get<long>();
+  const LearningRun run = run_learning(model, options, /*record=*/false,
+                                       check_windows * options.window_steps, observer);
+  json out = learning::to_json(run.result, morph, learning::failing_legs(options));
+  if (check_windows > 0) {
+    json windows = json::array();
+    bool holds = true;
+    for (const sim::WindowMeasure& m : run.after_windows) {
+      windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
+      holds = holds && m.worst_deg() <= options.annealing.threshold_deg;
+    }
+    out["after_windows"] = windows;
+    out["holds_after"] = holds;
+  }
+  if (!record.at("trace").get<bool>()) out.erase("trace");
+  return out;
+}
+
+std::string cell(const json& v) {
+  if (v.is_null()) return "";
+  if (v.is_number_float()) return shortest(v.get<double>());
+  if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_array()) return value_text(v);
+  return v.dump();
+}
+
+// The columns every CSV row of a run starts with: key, scenario, run, seed, grid values.
+std::vector<std::string> run_columns(const Sweep& sweep) {
+  std::vector<std::string> cols{"key", "scenario", "run", "seed"};
+  for (const GridAxis& a : sweep.grid) cols.push_back(a.key);
+  return cols;
+}
+
+std::vector<std::string> run_cells(const Sweep& sweep, const Task& t) {
+  std::vector<std::string> cells{t.key, t.params.at("scenario").get<std::string>(),
+                                 std::to_string(t.run), std::to_string(t.seed)};
+  for (const GridAxis& a : sweep.grid) cells.push_back(cell(t.params.at("grid").at(a.key)));
+  return cells;
+}
+
+ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
+                              const std::vector<json>& results) {
+  const robot::Morphology& morph = robot::morphology(sweep.robot);
+  ExperimentTable table{sweep.table, std::string(robot::to_string(sweep.robot)),
+                        summarize(morph, sweep.tasks, results)};
+  Table data;
+  Table shown;
+  if (sweep.table == "beta") {
+    data = beta_data(table.rows);
+    shown = beta_table(table.rows);
+  } else if (sweep.table == "grid") {
+    data = scenario_data(table.rows, "group");
+    shown = scenario_table(table.rows, "Grid point");
+  } else {
+    data = scenario_data(table.rows);
+    shown = scenario_table(table.rows);
+  }
+  write_file_atomic(out / "table.csv", to_csv(data));
+  write_file_atomic(out / "table.md", to_markdown(shown));
+  write_file_atomic(out / "runs.csv", to_csv(runs_table(sweep, results)));
+  write_file_atomic(out / "trials.csv", to_csv(trials_table(sweep, results)));
+  json rows = json::array();
+  for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
+  const json summary{{"experiment", table.experiment},
+                     {"robot", table.robot},
+                     {"arguments", sweep.resolved},
+                     {"rows", rows}};
+  write_file_atomic(out / "summary.json", summary.dump(kJsonIndent) + "\n");
+  return table;
+}
+
+const std::set<std::string> kDocumentKeys{"kind", "robot",    "scenarios", "runs",
+                                          "seed", "learning", "sim",       "record"};
+
+}  // namespace
+
+Shard parse_shard(std::string_view text) {
+  const auto bad = [&] {
+    return BadInput("--shard must be i/N with 0 <= i < N, got '" + std::string(text) + "'");
+  };
+  const std::size_t slash = text.find('/');
+  if (slash == std::string_view::npos) throw bad();
+  Shard s;
+  const auto read = [&](std::string_view part, int& v) {
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+    if (ec != std::errc() || end != part.data() + part.size() || part.empty()) throw bad();
+  };
+  read(text.substr(0, slash), s.index);
+  read(text.substr(slash + 1), s.count);
+  if (s.count < 1 || s.index < 0 || s.index >= s.count) throw bad();
+  return s;
+}
+
+std::string to_string(const Shard& shard) {
+  return std::to_string(shard.index) + "/" + std::to_string(shard.count);
+}
+
+std::optional<std::string> first_difference(const json& a, const json& b, const std::string& path) {
+  if (a.is_object() && b.is_object()) {
+    std::set<std::string> keys;
+    for (const json* j : {&a, &b}) {
+      for (const auto& item : j->items()) keys.insert(item.key());
+    }
+    for (const std::string& k : keys) {
+      if (!a.contains(k) || !b.contains(k)) return child(path, k);
+      if (auto d = first_difference(a.at(k), b.at(k), child(path, k))) return d;
+    }
+    return std::nullopt;
+  }
+  if (a == b) return std::nullopt;
+  return path;
+}
+
+nlohmann::json learning_document(const learning::CompensationOptions& options) {
+  json j = options;
+  for (const std::string& key : kPerRunLearningKeys) j.erase(key);
+  return j;
+}
+
+Sweep resolve_sweep(const json& doc) {
+  if (!doc.is_object()) throw OptionError("", "an experiment must be a table of keys");
+  for (const auto& item : doc.items()) {
+    if (!kDocumentKeys.count(item.key())) {
+      throw OptionError(item.key(), "is not an experiment key (known: " +
+                                        join({kDocumentKeys.begin(), kDocumentKeys.end()}, ", ") +
+                                        ")");
+    }
+  }
+  Sweep sweep;
+  const std::string kind = doc.value("kind", json("learning")).is_string()
+                               ? doc.value("kind", std::string("learning"))
+                               : std::string();
+  if (kind != "learning") {
+    throw OptionError("kind", "must be \"learning\", got " + doc.at("kind").dump());
+  }
+  const json robot_name = doc.value("robot", json("hexapod"));
+  if (!robot_name.is_string())
+    throw OptionError("robot", "must be a string, got " + robot_name.dump());
+  try {
+    sweep.robot = robot::parse_robot(robot_name.get<std::string>());
+  } catch (const BadInput& e) {
+    throw OptionError("robot", e.what());
+  }
+  const robot::Morphology& morph = robot::morphology(sweep.robot);
+  const std::vector<ScenarioSpec> scenarios = resolve_scenarios(sweep.robot, doc);
+  constexpr long kMaxRuns = 1000000;
+  const long runs = whole(doc, "runs", kScenarioRuns, 1, kMaxRuns, "runs");
+  std::uint64_t seed = 1;
+  if (doc.contains("seed")) {
+    const json& s = doc.at("seed");
+    if (!s.is_number_integer() || (!s.is_number_unsigned() && s.get<std::int64_t>() < 0)) {
+      throw OptionError("seed", "must be a whole number >= 0, got " + s.dump());
+    }
+    seed = s.get<std::uint64_t>();
+  }
+
+  // Learning and sim: defaults, the document's values, the grid.
+  json learning = learning_document(learning::CompensationOptions{});
+  merge_checked(doc.value("learning", json::object()), json(learning::CompensationOptions{}),
+                "learning", learning, sweep.grid, kPerRunLearningKeys);
+  json sim_doc = sim::SimOptions{};
+  merge_checked(doc.value("sim", json::object()), json(sim::SimOptions{}), "sim", sim_doc,
+                sweep.grid);
+
+  const json record_in = doc.value("record", json::object());
+  if (!record_in.is_object()) throw OptionError("record", "must be a table");
+  for (const auto& item : record_in.items()) {
+    if (item.key() != "check_windows" && item.key() != "trace") {
+      throw OptionError(child("record", item.key()),
+                        "is not a record key (known: check_windows, trace)");
+    }
+  }
+  const long check_windows =
+      whole(record_in, "check_windows", 0, 0, kMaxCheckWindows, "record.check_windows");
+  const json trace = record_in.value("trace", json(true));
+  if (!trace.is_boolean()) throw OptionError("record.trace", "must be true or false");
+  const json record{{"check_windows", check_windows}, {"trace", trace}};
+
+  json resolved_scenarios = json::array();
+  for (const ScenarioSpec& s : scenarios) resolved_scenarios.push_back(s.resolved);
+  sweep.resolved = {{"kind", kind},
+                    {"robot", robot::to_string(sweep.robot)},
+                    {"scenarios", resolved_scenarios},
+                    {"runs", runs},
+                    {"seed", seed},
+                    {"learning", learning},
+                    {"sim", sim_doc},
+                    {"record", record}};
+
+  // Tasks: grid point, scenario, run; each checked before any runs.
+  const bool beta_table = sweep.grid.size() == 1 &&
+                          sweep.grid.front().key == "learning.annealing.beta" &&
+                          scenarios.size() == 1;
+  sweep.table = sweep.grid.empty() ? "table" : beta_table ? "beta" : "grid";
+  const bool name_scenario = sweep.grid.empty() || scenarios.size() > 1;
+  const std::vector<std::string> names = axis_names(sweep.grid);
+  std::set<std::string> sims_checked;
+  for (const std::vector<json>& point : grid_points(sweep.grid)) {
+    json learning_point = learning;
+    json sim_point = sim_doc;
+    json grid_values = json::object();
+    std::vector<std::string> key_parts;
+    std::vector<std::string> group_parts;
+    for (std::size_t a = 0; a < sweep.grid.size(); ++a) {
+      const std::string& key = sweep.grid[a].key;
+      json& section = key.rfind("learning.", 0) == 0 ? learning_point : sim_point;
+      section[pointer_in_section(key)] = point[a];
+      grid_values[key] = point[a];
+      key_parts.push_back(names[a] + value_text(point[a]));
+      group_parts.push_back(beta_table ? value_text(point[a])
+                                       : names[a] + "=" + value_text(point[a]));
+    }
+    const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
+    const auto sim_options = options_from<sim::SimOptions>(sim_point, "sim");
+    if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sweep.robot, sim_options);
+    for (const ScenarioSpec& s : scenarios) {
+      learning::CompensationOptions options = base;
+      options.disabled = s.disabled;
+      options.faults = s.faults;
+      try {
+        learning::validate(options, morph);
+      } catch (const OptionError& e) {
+        throw OptionError(child("learning", e.key()), e.what());
+      } catch (const BadInput& e) {
+        throw OptionError("learning", e.what() + std::string(" (scenario ") + s.name + ")");
+      }
+      std::vector<std::string> kp = key_parts;
+      std::vector<std::string> gp = group_parts;
+      if (name_scenario) {
+        kp.push_back(s.name);
+        gp.push_back(s.name);
+      }
+      const std::string group_key = join(kp, "_");
+      for (int run = 0; run < runs; ++run) {
+        Task task;
+        task.key = run_key(group_key, run);
+        task.group = join(gp, " ");
+        task.run = run;
+        task.seed = derive_seed(seed, task.key);
+        options.seed = task.seed;
+        task.params = {{"robot", robot::to_string(sweep.robot)},
+                       {"scenario", s.name},
+                       {"disabled", leg_names(morph, learning::failing_legs(options))},
+                       {"grid", grid_values},
+                       {"learning", options},
+                       {"sim", sim_options},
+                       {"record", record}};
+        sweep.tasks.push_back(std::move(task));
+      }
+    }
+  }
+  return sweep;
+}
+
+SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
+  const json arguments = arguments_of(sweep, options.shard);
+  ensure_writable_dir(options.out);
+  refuse_other_experiment(options.out, arguments);
+  std::vector<Task> tasks;
+  for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
+    if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
+        options.shard.index) {
+      tasks.push_back(sweep.tasks[i]);
+    }
+  }
+  RunnerOptions runner;
+  runner.out_dir = options.out;
+  runner.jobs = options.jobs;
+  runner.arguments = arguments;
+  runner.progress = options.progress;
+  validate(runner);
+  const Models models(sweep.robot, tasks);
+  const RunnerOutcome outcome = run_tasks(
+      tasks, [&](const Task& task) { return task_result(models.of(task), task, nullptr); }, runner);
+  SweepOutcome result;
+  result.tasks = tasks.size();
+  result.loaded = outcome.loaded;
+  result.ran = outcome.ran;
+  if (options.shard.count == 1) result.table = write_results(sweep, options.out, outcome.results);
+  return result;
+}
+
+sim::SimModel make_task_model(const Task& task) {
+  return make_task_model(robot::parse_robot(task.params.at("robot").get<std::string>()), task);
+}
+
+json run_sweep_task(const Task& task, sim::Observer* observer) {
+  return task_result(make_task_model(task), task, observer);
+}
+
+RecordedSweep read_sweep(const fs::path& dir) {
+  std::optional<json> arguments = stored_arguments(dir);
+  if (!arguments) {
+    throw BadInput("no experiment in '" + dir.string() + "' (missing experiment.json)");
+  }
+  RecordedSweep out;
+  if (arguments->contains("shard")) {
+    out.shard = parse_shard(arguments->at("shard").get<std::string>());
+    arguments->erase("shard");
+  }
+  try {
+    out.sweep = resolve_sweep(*arguments);
+  } catch (const OptionError& e) {
+    throw BadInput("'" + (dir / "experiment.json").string() + "': " + e.key() + " " + e.what());
+  }
+  return out;
+}
+
+ExperimentTable merge_sweeps(const fs::path& out, const std::vector<fs::path>& dirs,
+                             bool progress) {
+  if (dirs.empty()) throw BadInput("name at least one shard directory to merge");
+  std::optional<json> base;
+  std::map<std::string, fs::path> where;  // run key -> the shard directory holding it
+  std::set<int> shards;
+  int count = 0;
+  for (const fs::path& dir : dirs) {
+    std::optional<json> args = stored_arguments(dir);
+    if (!args) throw BadInput("no experiment in '" + dir.string() + "' (missing experiment.json)");
+    const Shard shard =
+        args->contains("shard") ? parse_shard(args->at("shard").get<std::string>()) : Shard{};
+    args->erase("shard");
+    if (!base) {
+      base = *args;
+      count = shard.count;
+    } else if (const std::optional<std::string> key = first_difference(*base, *args)) {
+      throw BadInput("'" + dir.string() + "' is not a shard of the experiment in '" +
+                     dirs.front().string() + "' (" + *key + " differs)");
+    }
+    if (shard.count != count || !shards.insert(shard.index).second) {
+      throw BadInput("'" + dir.string() + "' holds shard " + to_string(shard) +
+                     ", which repeats or does not fit shards of " + std::to_string(count));
+    }
+    for (const auto& run : fs::directory_iterator(dir / "runs")) {
+      if (run.path().extension() == ".json") where.emplace(run.path().stem().string(), dir);
+    }
+  }
+  const Sweep sweep = read_sweep(dirs.front()).sweep;
+  for (const Task& t : sweep.tasks) {
+    if (!where.count(t.key)) {
+      throw BadInput("run " + t.key + " is in none of the directories (a shard missing or " +
+                     "not finished)");
+    }
+  }
+  RunnerOptions runner;
+  runner.out_dir = out;
+  runner.arguments = sweep.resolved;
+  runner.progress = progress;
+  ensure_writable_dir(out);
+  refuse_other_experiment(out, sweep.resolved);
+  // The run files are taken as saved, after their checksum and their task are checked.
+  const RunnerOutcome outcome = run_tasks(
+      sweep.tasks,
+      [&](const Task& t) {
+        const fs::path path = where.at(t.key) / "runs" / (t.key + ".json");
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        const json saved = parse_sealed(text.str(), path);
+        const json expected{{"key", t.key},
+                            {"group", t.group},
+                            {"run", t.run},
+                            {"seed", t.seed},
+                            {"params", t.params}};
+        for (const auto& item : expected.items()) {
+          if (saved.value(item.key(), json()) != item.value()) {
+            throw BadInput("'" + path.string() + "' is not the run " + t.key + " (" + item.key() +
+                           " differs)");
+          }
+        }
+        return saved.at("result");
+      },
+      runner);
+  return write_results(sweep, out, outcome.results);
+}
+
+Table runs_table(const Sweep& sweep, const std::vector<json>& results) {
+  const robot::Morphology& morph = robot::morphology(sweep.robot);
+  Table t;
+  for (const std::string& c : run_columns(sweep)) t.columns.push_back({c});
+  const std::vector<std::string> outcome{"converged",
+                                         "status",
+                                         "reason",
+                                         "trials",
+                                         "initial_deviation_deg",
+                                         "final_deviation_deg",
+                                         "steps_walked",
+                                         "detection_step",
+                                         "settle_steps",
+                                         "steering_effort"};
+  for (const std::string& c : outcome) t.columns.push_back({c});
+  for (const robot::Leg& leg : morph.legs) t.columns.push_back({"period_" + leg.name});
+  const bool holds = sweep.resolved.at("record").at("check_windows").get<long>() > 0;
+  if (holds) t.columns.push_back({"holds_after"});
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const json& r = results[i];
+    std::vector<std::string> cells = run_cells(sweep, sweep.tasks[i]);
+    for (const std::string& c : outcome) cells.push_back(cell(r.value(c, json())));
+    for (const robot::Leg& leg : morph.legs) cells.push_back(cell(r.at("periods").at(leg.name)));
+    if (holds) cells.push_back(cell(r.value("holds_after", json())));
+    t.add_row(std::move(cells));
+  }
+  return t;
+}
+
+Table trials_table(const Sweep& sweep, const std::vector<json>& results) {
+  const robot::Morphology& morph = robot::morphology(sweep.robot);
+  Table t;
+  for (const std::string& c : run_columns(sweep)) t.columns.push_back({c});
+  t.columns.push_back({"trial"});
+  for (const robot::Leg& leg : morph.legs) t.columns.push_back({"period_" + leg.name});
+  const std::vector<std::string> fields{"deviation_deg", "accepted", "acceptance_probability",
+                                        "legs_changed", "redraws"};
+  for (const std::string& c : fields) t.columns.push_back({c});
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    for (const json& trial : results[i].value("trace", json::array())) {
+      std::vector<std::string> cells = run_cells(sweep, sweep.tasks[i]);
+      cells.push_back(cell(trial.at("trial")));
+      for (const robot::Leg& leg : morph.legs) {
+        cells.push_back(cell(trial.at("periods").at(leg.name)));
+      }
+      for (const std::string& c : fields) cells.push_back(cell(trial.at(c)));
+      t.add_row(std::move(cells));
+    }
+  }
+  return t;
+}
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,122 @@
+// Experiments as data (issue 10): one document (an experiment file read by experiment_file.h,
+// or a preset built in memory) says everything that decides an experiment's runs; it is
+// resolved once (every default filled in, every value checked) into tasks for the runner
+// (runner.h), and the resolved document is what OUT/experiment.json records, so any run can be
+// rerun, any shard merged, and a resumed experiment refused when its document changed.
+//
+// Document keys:
+//   kind       "learning" (default): learning runs, tables per scenario or grid point
+//   robot      "hexapod" (default), "quadruped" or "octopod"
+//   scenarios  "paper" (paper_scenarios), "all" (mirror_scenarios up to 3 legs) or a list of
+//              disabled leg sets ("R1+R3") and fault timelines
+//              ({name, faults = [{step, legs, recover}]})
+//   runs       runs per grid point and scenario (default kScenarioRuns); seed: the base seed
+//   learning   learning::CompensationOptions keys (JSON names), except disabled, faults and
+//              seed, which each run sets
+//   sim        sim::SimOptions keys
+//   record     check_windows (windows walked after learning) and trace (the trial list)
+// Any learning or sim value may be a list (for a list-valued option: a list of lists); the
+// lists form a grid, and each grid point x scenario x run is one task.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "experiments/runner.h"
+#include "experiments/tables.h"
+#include "learning/compensation.h"
+#include "robot/morphology.h"
+#include "sim/events.h"
+#include "sim/sim.h"
+#include "sim/stepper.h"
+
+namespace multicpg::experiments {
+
+// The tasks a job of a job array runs: those whose index % count == index.
+struct Shard {
+  int index = 0;
+  int count = 1;
+};
+
+// "i/N" with 0 <= i < N; throws BadInput (one line) for anything else.
+Shard parse_shard(std::string_view text);
+std::string to_string(const Shard& shard);
+
+// One swept option: its dotted key ("learning.annealing.beta") and its values.
+struct GridAxis {
+  std::string key;
+  nlohmann::json values;  // a JSON array
+};
+
+inline constexpr long kMaxCheckWindows = 1000;
+
+struct Sweep {
+  nlohmann::json resolved;  // the document with every default filled in
+  robot::RobotKind robot = robot::RobotKind::hexapod;
+  std::vector<GridAxis> grid;  // in key order; the first varies slowest
+  std::vector<Task> tasks;     // every task, grid point by grid point, scenario, run
+  // "table" (no grid: one row per scenario, Figs. 11, 13), "beta" (beta alone swept on one
+  // scenario: Fig. 14) or "grid" (one row per grid point and scenario).
+  std::string table;
+};
+
+// Resolves a document; throws OptionError whose key is the dotted path of the first bad value
+// ("learning.annealing.beta", "scenarios[2]") for a wrong type, an unknown key, an empty list,
+// a bad leg name or an out-of-range value (learning::validate and sim checks, before any run).
+Sweep resolve_sweep(const nlohmann::json& document);
+
+// The learning options as a document's "learning": every key but those each run sets.
+nlohmann::json learning_document(const learning::CompensationOptions& options);
+
+// The first dotted path at which two JSON values differ ("learning.annealing.beta"), rooted at
+// `path`; empty when equal.
+std::optional<std::string> first_difference(const nlohmann::json& a, const nlohmann::json& b,
+                                            const std::string& path = "");
+
+struct SweepRunOptions {
+  std::filesystem::path out;
+  int jobs = default_jobs();
+  Shard shard;
+  bool progress = true;
+};
+
+struct SweepOutcome {
+  std::size_t tasks = 0;  // of the shard
+  int loaded = 0;
+  int ran = 0;
+  std::optional<ExperimentTable> table;  // written when the shard is the whole experiment
+};
+
+// Runs the shard's tasks in OUT (resumable; refused when OUT holds another resolved document,
+// naming the first differing key). The whole experiment also writes table.csv, table.md,
+// summary.json, runs.csv (one row per run) and trials.csv (one row per trial).
+SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options);
+
+// The simulation a task runs on (its robot and sim options).
+sim::SimModel make_task_model(const Task& task);
+
+// The result of one task, computed as run_sweep does; `observer` (may be null) sees every step.
+nlohmann::json run_sweep_task(const Task& task, sim::Observer* observer = nullptr);
+
+// The experiment recorded in DIR/experiment.json, and its shard.
+struct RecordedSweep {
+  Sweep sweep;
+  Shard shard;
+};
+RecordedSweep read_sweep(const std::filesystem::path& dir);
+
+// Copies the runs of the shard directories (each checked against its checksum and its task)
+// into OUT and writes the tables and CSVs, as one run_sweep of the whole would. Throws BadInput
+// when the directories are not shards of one resolved document or a run is missing.
+ExperimentTable merge_sweeps(const std::filesystem::path& out,
+                             const std::vector<std::filesystem::path>& dirs, bool progress);
+
+// runs.csv and trials.csv of an experiment's results (in task order).
+Table runs_table(const Sweep& sweep, const std::vector<nlohmann::json>& results);
+Table trials_table(const Sweep& sweep, const std::vector<nlohmann::json>& results);
+
+}  // namespace multicpg::experiments
