@@ -46,6 +46,9 @@ void run(const RunOptions& o) {
   const experiments::Shard shard = experiments::parse_shard(o.shard);
   const int jobs = checked_jobs(o.jobs);
   const experiments::Sweep sweep = experiments::load_experiment_file(o.file, o.runs);
+  if (o.out.empty() && !o.check) {
+    throw BadInput("--out: name the directory for the runs (or use --check)");
+  }
   std::size_t in_shard = 0;
   for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
     in_shard += static_cast<int>(i % static_cast<std::size_t>(shard.count)) == shard.index;
@@ -53,17 +56,20 @@ void run(const RunOptions& o) {
   std::size_t points = 1;
   for (const experiments::GridAxis& a : sweep.grid) points *= a.values.size();
   const std::size_t scenarios = sweep.resolved.at("scenarios").size();
-  std::cout << o.file << ": " << sweep.tasks.size() << " runs (" << points << " grid points x "
-            << scenarios << " scenarios x " << sweep.resolved.at("runs") << " runs)";
-  if (shard.count > 1) std::cout << ", " << in_shard << " in shard " << o.shard;
-  std::cout << "\n";
-  if (o.check) return;
-  if (o.out.empty()) throw BadInput("--out: name the directory for the runs (or use --check)");
+  std::ostringstream count;
+  count << o.file << ": " << sweep.tasks.size() << " runs (" << points << " grid points x "
+        << scenarios << " scenarios x " << sweep.resolved.at("runs") << " runs)";
+  if (shard.count > 1) count << ", " << in_shard << " in shard " << o.shard;
+  if (o.check) {
+    std::cout << count.str() << "\n";
+    return;
+  }
   experiments::SweepRunOptions options;
   options.out = o.out;
   options.jobs = jobs;
   options.shard = shard;
   const experiments::SweepOutcome outcome = experiments::run_sweep(sweep, options);
+  std::cout << count.str() << "\n";
   if (outcome.table) {
     print_table(*outcome.table);
     std::cout << "\nwrote " << o.out

@@ -71,12 +71,12 @@ std::optional<long> line_of(const Lines& lines, std::string key) {
 
 Sweep load_experiment_file(const std::filesystem::path& file, std::optional<int> runs) {
   const std::string name = file.string();
+  if (std::filesystem::is_directory(file)) throw BadInput(name + ": is a directory, not a file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
   std::ostringstream text;
   text << in.rdbuf();
   if (!in.good() && !in.eof()) throw BadInput(name + ": cannot read");
-  if (std::filesystem::is_directory(file)) throw BadInput(name + ": is a directory, not a file");
   toml::table table;
   try {
     table = toml::parse(text.str(), name);

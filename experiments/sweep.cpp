@@ -75,6 +75,18 @@ void check_type(const json& value, const json& def, const std::string& path) {
   }
 }
 
+// `value` as the default's number type: a whole number given for a fractional option is
+// recorded as the fraction it means (1 -> 1.0), so equal documents record equal values.
+json as_default_type(const json& value, const json& def) {
+  if (def.is_number_float() && value.is_number_integer()) return value.get<double>();
+  if (def.is_array() && value.is_array() && !def.empty()) {
+    json out = json::array();
+    for (const json& v : value) out.push_back(as_default_type(v, def.front()));
+    return out;
+  }
+  return value;
+}
+
 // A list where the default is no list, or a list of lists where it is one: a grid axis.
 bool is_grid(const json& value, const json& def) {
   if (!value.is_array()) return false;
@@ -113,12 +125,17 @@ void merge_checked(const json& value, const json& def, const std::string& path, 
   }
   if (is_grid(value, def)) {
     if (value.empty()) throw OptionError(path, "is an empty list");
-    for (std::size_t i = 0; i < value.size(); ++i) check_type(value[i], def, indexed(path, i));
-    grid.push_back({path, value});
+    json values = json::array();
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      check_type(value[i], def, indexed(path, i));
+      values.push_back(as_default_type(value[i], def));
+    }
+    grid.push_back({path, values});
+    out = values;
   } else {
     check_type(value, def, path);
+    out = as_default_type(value, def);
   }
-  out = value;
 }
 
 // `j` read into a T by its from_json (found by argument-dependent lookup).
