@@ -14,6 +14,7 @@
 #include "common/errors.h"
 #include "experiments/landscape.h"
 #include "experiments/scenarios.h"
+#include "experiments/sweep.h"
 #include "report/landscape_figure.h"
 
 namespace multicpg::apps {
@@ -67,10 +68,21 @@ void run(const LandscapeOptions& o) {
   }
   const std::vector<learning::Periods> learned = read_learned(o.learned, spec);
   ensure_writable_dir(o.out);
+  // The same document an experiment file of kind "landscape" holds, resolved the same way.
+  const experiments::Sweep sweep =
+      experiments::resolve_sweep(experiments::landscape_document(spec));
+  run_landscape_and_report(*sweep.landscape, o.out, o.jobs.value_or(experiments::default_jobs()),
+                           learned);
+}
 
-  const experiments::Landscape landscape = experiments::run_landscape(
-      spec, o.out, o.jobs.value_or(experiments::default_jobs()), /*progress=*/true, learned);
-  const report::FigureFiles figure = report::draw_landscape(landscape, learned, o.out);
+}  // namespace
+
+void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std::string& out,
+                              int jobs, const std::vector<learning::Periods>& learned) {
+  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const experiments::Landscape landscape =
+      experiments::run_landscape(spec, out, jobs, /*progress=*/true, learned);
+  const report::FigureFiles figure = report::draw_landscape(landscape, learned, out);
 
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);
   std::cout << std::fixed << std::setprecision(1) << morph.name << ", "
@@ -86,11 +98,9 @@ void run(const LandscapeOptions& o) {
   } else {
     std::cout << "best: no combination holds\n";
   }
-  std::cout << "wrote " << o.out << "/{landscape.csv,summary.json} and " << figure.png.string()
+  std::cout << "wrote " << out << "/{landscape.csv,summary.json} and " << figure.png.string()
             << "\n";
 }
-
-}  // namespace
 
 void register_landscape(CLI::App& app) {
   auto o = std::make_shared<LandscapeOptions>();

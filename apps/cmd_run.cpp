@@ -49,6 +49,16 @@ void run(const RunOptions& o) {
   if (o.out.empty() && !o.check) {
     throw BadInput("--out: name the directory for the runs (or use --check)");
   }
+  if (sweep.landscape) {
+    const std::size_t count = experiments::landscape_combinations(*sweep.landscape).size();
+    if (shard.count > 1) throw BadInput("--shard: a landscape runs whole (no shards)");
+    if (o.check) {
+      std::cout << o.file << ": a landscape of " << count << " combinations\n";
+      return;
+    }
+    run_landscape_and_report(*sweep.landscape, o.out, jobs);
+    return;
+  }
   std::size_t in_shard = 0;
   for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
     in_shard += static_cast<int>(i % static_cast<std::size_t>(shard.count)) == shard.index;

@@ -3,6 +3,10 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "experiments/landscape.h"
 
 namespace multicpg::apps {
 
@@ -19,5 +23,10 @@ void register_reproduce(CLI::App& app);
 void register_figure(CLI::App& app);
 void register_landscape(CLI::App& app);
 void register_run(CLI::App& app);  // run, rerun, merge
+
+// Walks a landscape in OUT (resumable), draws its map and prints what holds: `landscape` and
+// `run` of a kind = "landscape" file.
+void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std::string& out,
+                              int jobs, const std::vector<learning::Periods>& learned = {});
 
 }  // namespace multicpg::apps

@@ -374,14 +374,8 @@ std::vector<std::vector<json>> grid_points(const std::vector<GridAxis>& grid) {
 
 // "learning.annealing.beta" -> "/annealing/beta" within its section.
 json::json_pointer pointer_in_section(const std::string& key) {
-  std::string p;
-  std::size_t start = key.find('.') + 1;
-  while (true) {
-    const std::size_t dot = key.find('.', start);
-    p += "/" + key.substr(start, dot - start);
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
+  std::string p = key.substr(key.find('.'));
+  std::replace(p.begin(), p.end(), '.', '/');
   return json::json_pointer(p);
 }
 
@@ -545,8 +539,71 @@ ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
   return table;
 }
 
-const std::set<std::string> kDocumentKeys{"kind", "robot",    "scenarios", "runs",
-                                          "seed", "learning", "sim",       "record"};
+const std::set<std::string> kDocumentKeys{"kind",     "robot", "scenarios", "runs",     "seed",
+                                          "learning", "sim",   "record",    "landscape"};
+const std::set<std::string> kLandscapeKeys{"kind", "robot", "scenarios", "landscape", "sim"};
+
+json landscape_json(const LandscapeSpec& spec) {
+  return {{"period_set", spec.period_set},
+          {"windows", spec.windows},
+          {"window_steps", spec.window_steps},
+          {"threshold_deg", spec.threshold_deg}};
+}
+
+// Options of a kind that takes no grid: a list where one value belongs is refused.
+void refuse_grid(const std::vector<GridAxis>& grid) {
+  if (!grid.empty()) {
+    throw OptionError(grid.front().key, "takes one value here (a landscape has no grid)");
+  }
+}
+
+Sweep resolve_landscape(const json& doc, robot::RobotKind kind) {
+  for (const auto& item : doc.items()) {
+    if (!kLandscapeKeys.count(item.key())) {
+      throw OptionError(item.key(), "is not a landscape key (known: " +
+                                        join({kLandscapeKeys.begin(), kLandscapeKeys.end()}, ", ") +
+                                        ")");
+    }
+  }
+  const std::vector<ScenarioSpec> scenarios = resolve_scenarios(kind, doc);
+  if (scenarios.size() != 1 || !scenarios.front().faults.empty()) {
+    throw OptionError("scenarios", "a landscape takes one disabled leg set, e.g. [\"R1\"]");
+  }
+  LandscapeSpec spec;
+  spec.kind = kind;
+  spec.disabled = scenarios.front().disabled;
+  std::vector<GridAxis> grid;
+  const json defaults = landscape_json(spec);
+  json landscape = defaults;
+  merge_checked(doc.value("landscape", json::object()), defaults, "landscape", landscape, grid);
+  refuse_grid(grid);
+  spec.period_set = landscape.at("period_set").get<std::vector<int>>();
+  spec.windows = landscape.at("windows").get<int>();
+  spec.window_steps = landscape.at("window_steps").get<long>();
+  spec.threshold_deg = landscape.at("threshold_deg").get<double>();
+  json sim_doc = sim::SimOptions{};
+  merge_checked(doc.value("sim", json::object()), json(sim::SimOptions{}), "sim", sim_doc, grid);
+  refuse_grid(grid);
+  spec.sim = options_from<sim::SimOptions>(sim_doc, "sim");
+  try {
+    validate(spec);
+  } catch (const OptionError& e) {
+    throw OptionError(child("landscape", e.key()), e.what());
+  } catch (const BadInput& e) {
+    throw OptionError("landscape", e.what());
+  }
+  check_sim(kind, spec.sim);
+  Sweep sweep;
+  sweep.robot = kind;
+  sweep.table = "landscape";
+  sweep.resolved = {{"kind", "landscape"},
+                    {"robot", robot::to_string(kind)},
+                    {"scenarios", {scenarios.front().name}},
+                    {"landscape", landscape_json(spec)},
+                    {"sim", sim_doc}};
+  sweep.landscape = spec;
+  return sweep;
+}
 
 }  // namespace
 
@@ -587,6 +644,14 @@ std::optional<std::string> first_difference(const json& a, const json& b, const 
   return path;
 }
 
+nlohmann::json landscape_document(const LandscapeSpec& spec) {
+  return {{"kind", "landscape"},
+          {"robot", robot::to_string(spec.kind)},
+          {"scenarios", {scenario_name(robot::morphology(spec.kind), spec.disabled)}},
+          {"landscape", landscape_json(spec)},
+          {"sim", spec.sim}};
+}
+
 nlohmann::json learning_document(const learning::CompensationOptions& options) {
   json j = options;
   for (const std::string& key : kPerRunLearningKeys) j.erase(key);
@@ -603,19 +668,23 @@ Sweep resolve_sweep(const json& doc) {
     }
   }
   Sweep sweep;
-  const std::string kind = doc.value("kind", json("learning")).is_string()
-                               ? doc.value("kind", std::string("learning"))
-                               : std::string();
-  if (kind != "learning") {
-    throw OptionError("kind", "must be \"learning\", got " + doc.at("kind").dump());
+  const json kind_value = doc.value("kind", json("learning"));
+  const std::string kind = kind_value.is_string() ? kind_value.get<std::string>() : "";
+  if (kind != "learning" && kind != "landscape") {
+    throw OptionError("kind", "must be \"learning\" or \"landscape\", got " + kind_value.dump());
   }
   const json robot_name = doc.value("robot", json("hexapod"));
-  if (!robot_name.is_string())
+  if (!robot_name.is_string()) {
     throw OptionError("robot", "must be a string, got " + robot_name.dump());
+  }
   try {
     sweep.robot = robot::parse_robot(robot_name.get<std::string>());
   } catch (const BadInput& e) {
     throw OptionError("robot", e.what());
+  }
+  if (kind == "landscape") return resolve_landscape(doc, sweep.robot);
+  if (doc.contains("landscape")) {
+    throw OptionError("landscape", "belongs to kind = \"landscape\" files");
   }
   const robot::Morphology& morph = robot::morphology(sweep.robot);
   const std::vector<ScenarioSpec> scenarios = resolve_scenarios(sweep.robot, doc);

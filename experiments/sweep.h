@@ -5,7 +5,10 @@
 // rerun, any shard merged, and a resumed experiment refused when its document changed.
 //
 // Document keys:
-//   kind       "learning" (default): learning runs, tables per scenario or grid point
+//   kind       "learning" (default): learning runs, tables per scenario or grid point;
+//              "landscape": every period combination of one leg set walked without learning
+//              (landscape.h), with a "landscape" table (period_set, windows, window_steps,
+//              threshold_deg) and "sim", no grid
 //   robot      "hexapod" (default), "quadruped" or "octopod"
 //   scenarios  "paper" (paper_scenarios), "all" (mirror_scenarios up to 3 legs) or a list of
 //              disabled leg sets ("R1+R3") and fault timelines
@@ -26,6 +29,7 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/landscape.h"
 #include "experiments/runner.h"
 #include "experiments/tables.h"
 #include "learning/compensation.h"
@@ -60,14 +64,18 @@ struct Sweep {
   std::vector<GridAxis> grid;  // in key order; the first varies slowest
   std::vector<Task> tasks;     // every task, grid point by grid point, scenario, run
   // "table" (no grid: one row per scenario, Figs. 11, 13), "beta" (beta alone swept on one
-  // scenario: Fig. 14) or "grid" (one row per grid point and scenario).
+  // scenario: Fig. 14), "grid" (one row per grid point and scenario) or "landscape".
   std::string table;
+  std::optional<LandscapeSpec> landscape;  // kind "landscape" (then no tasks)
 };
 
 // Resolves a document; throws OptionError whose key is the dotted path of the first bad value
 // ("learning.annealing.beta", "scenarios[2]") for a wrong type, an unknown key, an empty list,
 // a bad leg name or an out-of-range value (learning::validate and sim checks, before any run).
 Sweep resolve_sweep(const nlohmann::json& document);
+
+// The document of a landscape (what examples/landscape-*.toml hold; `multicpg landscape`).
+nlohmann::json landscape_document(const LandscapeSpec& spec);
 
 // The learning options as a document's "learning": every key but those each run sets.
 nlohmann::json learning_document(const learning::CompensationOptions& options);

@@ -40,7 +40,9 @@ TEST(Sweep, EachExampleFileValidates) {
       {"quick.toml", "8 runs (2 grid points x 2 scenarios x 2 runs)"},
       {"paper-table-hexapod.toml", "240 runs (1 grid points x 24 scenarios x 10 runs)"},
       {"paper-table-quadruped.toml", "40 runs (1 grid points x 4 scenarios x 10 runs)"},
-      {"paper-beta.toml", "350 runs (7 grid points x 1 scenarios x 50 runs)"}};
+      {"paper-beta.toml", "350 runs (7 grid points x 1 scenarios x 50 runs)"},
+      {"landscape-r1.toml", "a landscape of 3125 combinations"},
+      {"landscape-quadruped-l2.toml", "a landscape of 125 combinations"}};
   for (const auto& [file, count] : files) {
     const CliResult r = run_cli("run " + kExamples + file + " --check");
     EXPECT_EQ(r.exit_code, 0) << file << "\n" << r.err;
@@ -240,6 +242,39 @@ TEST(Sweep, PaperPresetsEqualTheirExampleFiles) {
     fs::remove_all(dir + "/a");
     fs::remove_all(dir + "/b");
   }
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, LandscapePresetEqualsItsFile) {
+  const std::string dir = make_temp_dir("sweep-landscape-");
+  write(dir + "/l2.toml", R"(kind = "landscape"
+robot = "quadruped"
+scenarios = ["L2"]
+[landscape]
+period_set = [4, 5]
+windows = 1
+)");
+  ASSERT_EQ(run_cli("run " + kExamples + "landscape-quadruped-l2.toml --check").exit_code, 0);
+  const CliResult a = run_cli(
+      "landscape --robot quadruped --disable L2 --periods-set 4,5 "
+      "--windows 1 --jobs 2 --out " +
+      dir + "/a");
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const CliResult b = run_cli("run " + dir + "/l2.toml --jobs 2 --out " + dir + "/b");
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(first_line(a.out), first_line(b.out));
+  for (const char* name : {"experiment.json", "landscape.csv", "summary.json"}) {
+    EXPECT_FALSE(read_file(dir + "/a/" + name).empty()) << name;
+    EXPECT_EQ(read_file(dir + "/a/" + name), read_file(dir + "/b/" + name)) << name;
+  }
+  write(dir + "/bad.toml", "kind = \"landscape\"\nscenarios = [\"R1\", \"R2\"]\n");
+  expect_bad_input("run " + dir + "/bad.toml --check", dir + "/bad.toml:2: scenarios");
+  write(dir + "/bad.toml",
+        "kind = \"landscape\"\nscenarios = [\"R1\"]\n[landscape]\nwindows = [1, 2]\n");
+  expect_bad_input("run " + dir + "/bad.toml --check", dir + "/bad.toml:4: landscape.windows");
+  write(dir + "/bad.toml", "kind = \"landscape\"\nscenarios = [\"R1\"]\nruns = 3\n");
+  expect_bad_input("run " + dir + "/bad.toml --check",
+                   dir + "/bad.toml:3: runs is not a landscape key");
   fs::remove_all(dir);
 }
 
