@@ -53,7 +53,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
 void print_table(const experiments::ExperimentTable& t, const std::string& out) {
   std::cout << (t.experiment == "beta" ? to_markdown(experiments::beta_table(t.rows))
                                        : to_markdown(experiments::scenario_table(t.rows)))
-            << "\nwrote " << out << "/{table.csv,table.md,summary.json} and " << out << "/runs/\n";
+            << "\nwrote " << out << "/{table.csv,table.md,summary.json,runs.csv,trials.csv} and " << out << "/runs/\n";
 }
 
 void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with_beta) {

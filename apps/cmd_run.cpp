@@ -99,7 +99,10 @@ struct RerunOptions {
 };
 
 void rerun(const RerunOptions& o) {
-  if (!o.film.empty()) report::film_format(o.film);  // an unknown file type fails first
+  // An unknown file type fails before any work; a picture would show only the last step.
+  if (!o.film.empty() && report::film_format(o.film) != report::FilmFormat::video) {
+    throw BadInput("--film: name a video, FILE.mp4");
+  }
   const experiments::RecordedSweep recorded = experiments::read_sweep(o.dir);
   const experiments::Task* task = nullptr;
   for (const experiments::Task& t : recorded.sweep.tasks) {
@@ -174,7 +177,7 @@ void register_run(CLI::App& app) {
   re->add_option("DIR", r->dir, "the experiment directory")->required();
   re->add_option("RUN_ID", r->id, "the run's file name in DIR/runs without .json")->required();
   re->add_option("--out", r->out, "write the run file into this directory as well");
-  re->add_option("--film", r->film, "film the run (FILE.mp4, or FILE.png for its last step)");
+  re->add_option("--film", r->film, "film the run into FILE.mp4");
   re->callback([r] { rerun(*r); });
 
   struct MergeOptions {

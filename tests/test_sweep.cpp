@@ -199,6 +199,8 @@ TEST(Sweep, ShardsMergeToTheWholeAndAnyRunReruns) {
   EXPECT_EQ(read_file(dir + "/again/runs/beta10_run000.json"),
             read_file(dir + "/whole/runs/beta10_run000.json"));
   expect_bad_input("rerun " + dir + "/whole nosuch_run000", "has no run nosuch_run000");
+  expect_bad_input("rerun " + dir + "/whole beta10_run000 --film run.png", "--film");
+  expect_bad_input("rerun " + dir + "/whole beta10_run000 --film run.gif", "run.gif");
 
   // Resuming with a changed file is refused, naming the key.
   std::string changed = kSmall;
