@@ -141,6 +141,13 @@ void merge_checked(const json& value, const json& def, const std::string& path, 
   }
 }
 
+// "learning.annealing.beta" -> "/annealing/beta" within its section.
+json::json_pointer pointer_in_section(const std::string& key) {
+  std::string p = key.substr(key.find('.'));
+  std::replace(p.begin(), p.end(), '.', '/');
+  return json::json_pointer(p);
+}
+
 // `j` read into a T by its from_json (found by argument-dependent lookup).
 template <typename T>
 T decode(const json& j) {
@@ -169,7 +176,9 @@ T options_from(const json& point, const std::string& section) {
     if (!point.contains(item.key())) readback.erase(item.key());  // set by each run
   }
   if (const std::optional<std::string> at = first_difference(point, readback, section)) {
-    throw OptionError(*at, "is not a valid value");
+    const json::json_pointer ptr = pointer_in_section(*at);
+    throw OptionError(*at, "is not a valid value" +
+                               (point.contains(ptr) ? ": " + point.at(ptr).dump() : std::string()));
   }
   return options;
 }
@@ -368,13 +377,6 @@ std::vector<std::vector<json>> grid_points(const std::vector<GridAxis>& grid) {
     points = std::move(next);
   }
   return points;
-}
-
-// "learning.annealing.beta" -> "/annealing/beta" within its section.
-json::json_pointer pointer_in_section(const std::string& key) {
-  std::string p = key.substr(key.find('.'));
-  std::replace(p.begin(), p.end(), '.', '/');
-  return json::json_pointer(p);
 }
 
 // Short axis names for keys and groups: the last key part, the whole key when two share it.
