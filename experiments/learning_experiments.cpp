@@ -4,26 +4,29 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/provenance.h"
 #include "experiments/learning_run.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
+#include "learning/json.h"
+#include "sim/json.h"
 
 namespace multicpg::experiments {
-namespace {
+namespace {}  // namespace
 
-nlohmann::json arguments(const ExperimentSpec& spec, const std::string& experiment) {
-  // Every learning option (learning::to_json, the same record a learn run keeps); each task
-  // sets its own legs, seed and (beta study) beta.
-  return {{"experiment", experiment},
+nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind experiment) {
+  // The option structs whole (their JSON type macros), so a new option is recorded and compared
+  // on resume without a line here; each task sets its own legs, seed and (beta study) beta.
+  return {{"experiment", to_string(experiment)},
           {"robot", robot::to_string(spec.kind)},
           {"runs", spec.runs},
           {"seed", spec.seed},
-          {"learning", learning::to_json(spec.base, robot::morphology(spec.kind))},
+          {"learning", spec.base},
           {"check_windows", spec.check_windows},
-          {"control_dt", spec.sim.control_dt},
-          {"physics_dt", spec.sim.physics_dt},
-          {"servo_gain", spec.sim.servo_gain}};
+          {"sim", spec.sim}};
 }
+
+namespace {
 
 // One learning run of a task: its disabled legs, seed and (beta study) beta.
 nlohmann::json run_task(const sim::SimModel& model, const learning::CompensationOptions& base,
@@ -53,12 +56,13 @@ nlohmann::json run_task(const sim::SimModel& model, const learning::Compensation
   return out;
 }
 
-ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string& experiment,
+ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, ExperimentKind experiment,
                                    const std::vector<Task>& tasks) {
   RunnerOptions runner;
   runner.out_dir = spec.out;
   if (spec.jobs > 0) runner.jobs = spec.jobs;
-  runner.arguments = arguments(spec, experiment);
+  runner.arguments = experiment_arguments(spec, experiment);
+  runner.provenance = provenance(mj_versionString());
   runner.progress = spec.progress;
   validate(runner);
   const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
@@ -68,14 +72,14 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string
 
   ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
                         summarize(model.controller.morphology, tasks, outcome.results)};
-  const bool beta = experiment == "beta";
+  const bool beta = experiment == ExperimentKind::beta;
   write_file_atomic(spec.out / "table.csv",
                     to_csv(beta ? beta_data(table.rows) : scenario_data(table.rows)));
   write_file_atomic(spec.out / "table.md",
                     to_markdown(beta ? beta_table(table.rows) : scenario_table(table.rows)));
   nlohmann::json rows = nlohmann::json::array();
   for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
-  nlohmann::json summary = arguments(spec, experiment);
+  nlohmann::json summary = experiment_arguments(spec, experiment);
   summary["rows"] = rows;
   write_file_atomic(spec.out / "summary.json", summary.dump(2) + "\n");
   return table;
@@ -86,13 +90,24 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string
 ExperimentTable run_scenario_table(const ExperimentSpec& spec) {
   const robot::Morphology& morph = robot::morphology(spec.kind);
   return run_tasks_to_table(
-      spec, "table", scenario_tasks(morph, paper_scenarios(spec.kind), spec.runs, spec.seed));
+      spec, ExperimentKind::table,
+      scenario_tasks(morph, paper_scenarios(spec.kind), spec.runs, spec.seed));
 }
 
 ExperimentTable run_beta_study(const ExperimentSpec& spec, const std::vector<double>& betas) {
   ExperimentSpec hexapod = spec;
   hexapod.kind = robot::RobotKind::hexapod;
-  return run_tasks_to_table(hexapod, "beta", beta_tasks(betas, spec.runs, spec.seed));
+  return run_tasks_to_table(hexapod, ExperimentKind::beta, beta_tasks(betas, spec.runs, spec.seed));
+}
+
+std::string_view to_string(ExperimentKind kind) {
+  return kind == ExperimentKind::beta ? "beta" : "table";
+}
+
+ExperimentKind parse_experiment_kind(std::string_view text) {
+  if (text == "table") return ExperimentKind::table;
+  if (text == "beta") return ExperimentKind::beta;
+  throw BadInput("unknown experiment '" + std::string(text) + "' (table or beta)");
 }
 
 ExperimentTable read_experiment(const std::filesystem::path& out) {
@@ -102,12 +117,13 @@ ExperimentTable read_experiment(const std::filesystem::path& out) {
   nlohmann::json j;
   try {
     in >> j;
-    ExperimentTable table{
-        j.at("experiment").get<std::string>(), j.at("robot").get<std::string>(), {}};
+    ExperimentTable table{parse_experiment_kind(j.at("experiment").get<std::string>()),
+                          j.at("robot").get<std::string>(),
+                          {}};
     for (const nlohmann::json& row : j.at("rows"))
       table.rows.push_back(group_summary_from_json(row));
     return table;
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {
     throw BadInput("'" + file.string() + "' is not an experiment summary: " + e.what());
   }
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string_view>
 #include <vector>
 
 #include "experiments/tables.h"
@@ -11,6 +12,10 @@
 #include "sim/sim.h"
 
 namespace multicpg::experiments {
+
+// Runs per scenario or beta, and windows checked after each run (documented ranges).
+inline constexpr Limits<int> kRunsLimits{1, 100'000};
+inline constexpr Limits<long> kCheckWindowsLimits{0, 1000};
 
 struct ExperimentSpec {
   robot::RobotKind kind = robot::RobotKind::hexapod;
@@ -26,10 +31,19 @@ struct ExperimentSpec {
   bool progress = true;
 };
 
+// The paper's two learning experiments (SPEC §8).
+enum class ExperimentKind { table, beta };
+std::string_view to_string(ExperimentKind kind);              // "table", "beta"
+ExperimentKind parse_experiment_kind(std::string_view text);  // throws BadInput
+
+// What decides an experiment's results, as recorded in OUT/experiment.json and compared on
+// resume: the kind, robot, runs, seed and every learning and simulation option.
+nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind experiment);
+
 // An experiment's results: one summary row per scenario or beta, written to OUT as table.csv,
 // table.md and summary.json.
 struct ExperimentTable {
-  std::string experiment;  // "table" or "beta"
+  ExperimentKind experiment = ExperimentKind::table;
   std::string robot;
   std::vector<GroupSummary> rows;
 };

@@ -9,6 +9,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::report {
 namespace {
@@ -184,10 +185,10 @@ void FilmObserver::on_event(const sim::SimModel& model, const sim::SimState& /*s
   const robot::Morphology& morph = model.controller.morphology;
   switch (e.kind) {
     case sim::EventKind::fault:
-      caption_ = robot::leg_list_name(morph, e.legs) + " failed";
+      caption_ = robot::leg_set_name(morph, e.legs) + " failed";
       break;
     case sim::EventKind::recovery:
-      caption_ = robot::leg_list_name(morph, e.legs) + " works again";
+      caption_ = robot::leg_set_name(morph, e.legs) + " works again";
       break;
     case sim::EventKind::detection:
       caption_ = fmt_deviation("deviation ", e.deviation_deg) + ": learning starts";

@@ -13,6 +13,7 @@
 #include "experiments/scenarios.h"
 #include "report/film.h"
 #include "report/stages/stage.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::report {
 namespace {
@@ -60,7 +61,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   const std::string name(sc.disabled);
   std::string legs = name;
   std::replace(legs.begin(), legs.end(), '+', ',');
-  const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, legs);
+  const std::vector<std::size_t> disabled = robot::parse_leg_set(morph, legs);
   ScenarioOutput out;
   TrunkPaths paths;
   std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
@@ -106,9 +107,8 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
       film->finish();
       out.films.push_back(ctx.rel(video));
     }
-    out.rows.push_back({name, experiments::working_periods_text(morph, v.periods, disabled),
-                        v.source, fixed(t.deviation_deg, 2), fixed(t.forward_m, 2),
-                        fixed(t.lateral_m, 2),
+    out.rows.push_back({name, robot::period_map_text(morph, v.periods, disabled), v.source,
+                        fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
                         t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
                         "≈" + fixed(v.paper_deg, 2)});
     if (v.path == nullptr) continue;
