@@ -112,7 +112,7 @@ stop() {
     mapfile -t jobs < <(squeue -h -o %i 2>/dev/null)
     if [ ${#jobs[@]} -gt 0 ]; then
       scancel --quiet "${jobs[@]}" || true
-      wait_for "$stop_timeout_s" no_jobs || echo "slurm-local: jobs still queued, stopping anyway" >&2
+      wait_for "$stop_timeout_s" no_jobs || echo "slurm-local: jobs left, stopping anyway" >&2
     fi
   fi
   for file in slurmd.pid slurmctld.pid munge/munged.pid; do
@@ -189,7 +189,7 @@ start() {
   port=${SLURM_LOCAL_PORT:-$default_port}
   until port_free "$port" && port_free $((port + 1)); do
     port=$((port + 1))
-    [ "$port" -lt "$last_port" ] || die "no two free ports from ${SLURM_LOCAL_PORT:-$default_port} to $last_port"
+    [ "$port" -lt "$last_port" ] || die "no two free ports up to $last_port"
   done
   # munged wants the socket's directories searchable by all and writable by no one else.
   mkdir -p "$dir/munge" "$dir/state" "$dir/spool" "$dir/log"
@@ -208,7 +208,8 @@ start() {
     false
   fi
   trap - ERR
-  echo "slurm-local: node $node idle, $(nproc) CPUs, ports $port/$((port + 1)); export SLURM_CONF=$conf" >&2
+  echo "slurm-local: node $node idle, $(nproc) CPUs, ports $port and $((port + 1))" >&2
+  echo "slurm-local: export SLURM_CONF=$conf" >&2
 }
 
 "$command"

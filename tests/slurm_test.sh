@@ -19,6 +19,12 @@ compared=(runs)
 readonly ranks=2 shards=3
 # Generous limits for a sweep that takes well under a minute; only a hung job reaches them.
 readonly job_minutes=10
+mpi_script="$root/examples/slurm/mpi.sbatch"
+array_script="$root/examples/slurm/array.sbatch"
+# The MPI job on one node: the script asks for several nodes of a real cluster.
+mpi_job=(--nodes=1 --ntasks="$ranks" --ntasks-per-node="$ranks" --time="$job_minutes")
+# The array's tasks: one core each, the script asks for more.
+array_job=(--cpus-per-task=1 --time="$job_minutes")
 
 work="$(mktemp -d /tmp/multicpg-slurm.XXXXXX)"
 # munged wants every directory above its socket searchable by all.
@@ -35,6 +41,11 @@ trap finish EXIT
 fail() {
   echo "slurm_test: FAILED: $*" >&2
   exit 1
+}
+
+# The state of job ID (COMPLETED, FAILED, CANCELLED, ...; Slurm keeps it for minutes).
+job_state() {
+  scontrol show job --oneliner "$1" | sed -n 's/.* JobState=\([A-Z_]*\) .*/\1/p'
 }
 
 # Until `multicpg run` and `multicpg merge` exist (issue 10 items 1 and 3), a stand-in gives the
@@ -93,20 +104,23 @@ cd "$work"
 
 "$multicpg" run "$sweep" --out plain --jobs 1
 
-sbatch --wait --quiet --nodes=1 --ntasks="$ranks" --ntasks-per-node="$ranks" --time="$job_minutes" --output=mpi.log \
-  "$root/examples/slurm/mpi.sbatch" "$sweep" mpi ||
+sbatch --wait --quiet "${mpi_job[@]}" --output=mpi.log "$mpi_script" "$sweep" mpi ||
   fail "the MPI job failed: $(cat mpi.log)"
 
-array=$(sbatch --parsable --array=0-$((shards - 1)) --cpus-per-task=1 --time="$job_minutes" \
-  --output=shard-%a.log "$root/examples/slurm/array.sbatch" "$sweep" array)
-sbatch --wait --quiet --dependency="afterok:$array" --time="$job_minutes" --output=merge.log \
-  --wrap "\"$multicpg\" merge array/merged array/shard-*" ||
-  fail "the array or its merge failed: $(cat shard-*.log merge.log)"
+array=$(sbatch --parsable "${array_job[@]}" --array=0-$((shards - 1)) --output=shard-%a.log \
+  "$array_script" "$sweep" array)
+# A merge cancelled because a shard failed never ran, and sbatch --wait says 0 for it.
+if ! merge=$(sbatch --wait --parsable --dependency="afterok:$array" --time="$job_minutes" \
+  --output=merge.log --wrap "\"$multicpg\" merge array/merged array/shard-*") ||
+  [ "$(job_state "$merge")" != COMPLETED ]; then
+  fail "the array or its merge failed: $(cat shard-*.log merge.log 2>&1)"
+fi
 
 for style in mpi array/merged; do
   for item in "${compared[@]}"; do
     [ -e "plain/$item" ] || fail "the plain run has no $item"
-    diff -r "plain/$item" "$style/$item" >/dev/null || fail "$style/$item differs from the plain run"
+    diff -r "plain/$item" "$style/$item" >/dev/null ||
+      fail "$style/$item differs from the plain run"
   done
 done
 for ((i = 0; i < shards; i++)); do
@@ -114,13 +128,14 @@ for ((i = 0; i < shards; i++)); do
 done
 
 # A job whose program fails (here: the sweep file does not exist) must fail sbatch --wait.
-if sbatch --wait --quiet --nodes=1 --ntasks="$ranks" --ntasks-per-node="$ranks" --time="$job_minutes" --output=bad.log \
-  "$root/examples/slurm/mpi.sbatch" "$work/missing.toml" bad; then
+missing="$work/missing.toml"
+if sbatch --wait --quiet "${mpi_job[@]}" --output=bad.log "$mpi_script" "$missing" bad; then
   fail "a failing MPI job gave sbatch exit 0"
 fi
-if sbatch --wait --quiet --array=0-1 --cpus-per-task=1 --time="$job_minutes" --output=bad-%a.log \
-  "$root/examples/slurm/array.sbatch" "$work/missing.toml" bad; then
+if sbatch --wait --quiet "${array_job[@]}" --array=0-1 --output=bad-%a.log "$array_script" \
+  "$missing" bad; then
   fail "a failing job array gave sbatch exit 0"
 fi
 
-echo "slurm_test: the MPI job ($ranks ranks) and the merged array ($shards shards) match the plain run"
+echo "slurm_test: the MPI job ($ranks ranks) and the merged array ($shards shards)" \
+  "match the plain run; failing jobs fail"
