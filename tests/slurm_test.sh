@@ -37,6 +37,8 @@ finish() {
   exit $status
 }
 trap finish EXIT
+# A test runner's timeout or ^C stops the daemons too.
+trap 'exit 1' INT TERM HUP
 
 fail() {
   echo "slurm_test: FAILED: $*" >&2
