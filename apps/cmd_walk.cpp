@@ -44,10 +44,7 @@ struct Run {
 
 nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
   const robot::Morphology& morph = *run.morph;
-  nlohmann::json periods = nlohmann::json::object();
-  for (std::size_t i = 0; i < morph.size(); ++i) {
-    periods[morph.legs[i].name] = run.spec.start.periods[i];
-  }
+  const nlohmann::json periods = robot::period_map_json(morph, run.spec.start.periods);
   nlohmann::json faults = nlohmann::json::array();
   for (const sim::Fault& f : run.spec.faults) {
     faults.push_back(

@@ -392,9 +392,7 @@ class TrialCallback final : public sim::Observer {
                 const sim::Event& e) override {
     if (e.kind != sim::EventKind::trial_end || callback_.is_none()) return;
     const py::gil_scoped_acquire acquire;
-    py::dict periods;
-    for (std::size_t i = 0; i < e.periods.size(); ++i)
-      periods[py::str(morph_.legs[i].name)] = e.periods[i];
+    const py::object periods = to_python(robot::period_map_json(morph_, e.periods));
     callback_(py::dict(py::arg("episode") = e.episode, py::arg("trial") = e.trial,
                        py::arg("step") = e.step, py::arg("periods") = periods,
                        py::arg("deviation_deg") = e.deviation_deg,

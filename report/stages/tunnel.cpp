@@ -23,17 +23,6 @@ namespace paper = experiments::paper;
 // The tunnel films look down the corridor from behind the robot, far enough to see both walls.
 const CameraSpec kTunnelCamera{"trunk", 2.5, 0.0, -45.0, {}};
 
-// "R2=4 L1=6" (working_periods_text's form) on top of all-4 periods.
-std::vector<int> periods_from_text(const robot::Morphology& morph, const std::string& text) {
-  std::vector<int> periods(morph.size(), learning::kStartPeriod);
-  std::istringstream in(text);
-  for (std::string item; in >> item;) {
-    const std::size_t eq = item.find('=');
-    periods[robot::leg_index(morph, item.substr(0, eq))] = std::stoi(item.substr(eq + 1));
-  }
-  return periods;
-}
-
 std::string file_stem(std::string text) {
   std::replace(text.begin(), text.end(), '+', '-');
   return text;
@@ -67,12 +56,14 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
                                  sc.before_deg, true, &paths.before, std::nullopt}};
   if (!learned.empty()) {
-    variants.push_back({"our learning", periods_from_text(morph, learned), sc.after_deg, true,
-                        &paths.after, std::nullopt});
+    variants.push_back({"our learning",
+                        robot::parse_period_map(morph, learned, learning::kStartPeriod),
+                        sc.after_deg, true, &paths.after, std::nullopt});
   }
-  variants.push_back({"the paper's learning",
-                      periods_from_text(morph, paper::combination_text(sc.learned)), sc.after_deg,
-                      false, nullptr, std::nullopt});
+  variants.push_back(
+      {"the paper's learning",
+       robot::parse_period_map(morph, paper::combination_text(sc.learned), learning::kStartPeriod),
+       sc.after_deg, false, nullptr, std::nullopt});
   // Issue 8: robust learning (learn --mode robust) in the open field from a walking robot, then
   // its periods and steering reflex through the tunnel.
   {
