@@ -5,11 +5,13 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/text_plot.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/cpg_pair.h"
+#include "sim/walk.h"
 
 namespace multicpg::apps {
 namespace {
@@ -104,12 +106,18 @@ void register_cpg(CLI::App& app) {
   auto opts = std::make_shared<CpgOptions>();
   CLI::App* cmd =
       app.add_subcommand("cpg", "outputs of a master CPG and one client (paper Fig. 6)");
-  cmd->add_option("--period", opts->period, "master period, 1-9")->capture_default_str();
-  cmd->add_option("--client-period", opts->client_period, "client period, 1-9 (default: master's)");
+  const Limits<int> cpg_periods{neural::kMinPeriod, neural::kMaxPeriod};
+  cmd->add_option("--period", opts->period, "master period")
+      ->check(in(cpg_periods))
+      ->capture_default_str();
+  cmd->add_option("--client-period", opts->client_period, "client period (default: master's)")
+      ->check(in(cpg_periods));
   cmd->add_option("--sync", opts->sync, "on: client synchronised to the master (alpha = 1)")
       ->capture_default_str();
   cmd->add_flag("--uncontrolled", opts->uncontrolled, "no chaos control: both CPGs chaotic");
-  cmd->add_option("--steps", opts->steps, "steps to run")->capture_default_str();
+  cmd->add_option("--steps", opts->steps, "steps to run")
+      ->check(in(sim::kRunStepsLimits))
+      ->capture_default_str();
   cmd->add_option("--csv", opts->csv, "write step,master_x1,master_x2,client_x1,client_x2");
   cmd->callback([opts] { run_cpg(*opts); });
 }

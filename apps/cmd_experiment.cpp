@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
@@ -23,27 +24,19 @@ struct ExperimentOptions {
   std::string out;
   LearningFlags learning;
   long check_windows = 0;
-  SimFlags sim;
+  sim::SimOptions sim;
 };
 
 experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
-  if (o.runs < 1) throw BadInput("--runs must be at least 1, got " + std::to_string(o.runs));
-  if (o.jobs && *o.jobs < 1) {
-    throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
-  }
-
   experiments::ExperimentSpec spec;
   spec.kind = kind;
   spec.runs = o.runs;
-  spec.seed = o.learning.seed;
+  spec.seed = o.learning.options.seed;
   spec.jobs = o.jobs.value_or(0);
   spec.out = o.out;
   // Every leg set is overwritten per task; the validation needs one working leg set.
   spec.base =
       compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
-  if (o.check_windows < 0 || o.check_windows > 1000) {
-    throw BadInput("--check-windows must be in 0..1000, got " + std::to_string(o.check_windows));
-  }
   spec.check_windows = o.check_windows;
   spec.sim = sim_options(o.sim);
   ensure_writable_dir(spec.out);
@@ -51,23 +44,30 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
 }
 
 void print_table(const experiments::ExperimentTable& t, const std::string& out) {
-  std::cout << (t.experiment == "beta" ? to_markdown(experiments::beta_table(t.rows))
-                                       : to_markdown(experiments::scenario_table(t.rows)))
-            << "\nwrote " << out << "/{table.csv,table.md,summary.json,runs.csv,trials.csv} and " << out << "/runs/\n";
+  std::cout << (t.experiment == experiments::ExperimentKind::beta
+                    ? to_markdown(experiments::beta_table(t.rows))
+                    : to_markdown(experiments::scenario_table(t.rows)))
+            << "\nwrote " << out << "/{table.csv,table.md,summary.json,runs.csv,trials.csv} and "
+            << out << "/runs/\n";
 }
 
 void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with_beta) {
   o.runs = default_runs;
   // These are the paper's experiments: its algorithm unless --mode robust is asked for.
-  o.learning.mode = "paper";
-  cmd.add_option("--runs", o.runs, "learning runs per scenario")->capture_default_str();
+  o.learning.options.mode = learning::Mode::paper;
+  cmd.add_option("--runs", o.runs, "learning runs per scenario")
+      ->check(in(experiments::kRunsLimits))
+      ->capture_default_str();
   cmd.add_option("--out", o.out, "directory for the runs and tables (resumes what is there)")
-      ->required();
-  cmd.add_option("--jobs", o.jobs, "parallel runs (default: every core)");
+      ->required()
+      ->check(kNotEmpty);
+  cmd.add_option("--jobs", o.jobs, "parallel runs (default: every core)")
+      ->check(in(experiments::kJobsLimits));
   add_learning_flags(cmd, o.learning, with_beta);
   cmd.add_option("--check-windows", o.check_windows,
                  "windows walked after each run with its final controller; the run files say "
                  "whether every one held (holds_after)")
+      ->check(in(experiments::kCheckWindowsLimits))
       ->capture_default_str();
   add_sim_flags(cmd, o.sim);
 }

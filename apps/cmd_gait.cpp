@@ -4,11 +4,14 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/text_plot.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/gait.h"
+#include "robot/leg_sets.h"
+#include "sim/walk.h"
 
 namespace multicpg::apps {
 namespace {
@@ -29,7 +32,8 @@ void run_gait(const GaitOptions& o) {
   if (o.warmup < 0) throw BadInput("--warmup must not be negative");
 
   const neural::ControllerModel model = neural::make_controller_model(kind);
-  const std::vector<std::size_t> disabled = robot::parse_leg_list(model.morphology, o.disable);
+  const std::vector<std::size_t> disabled =
+      parse_leg_flag(model.morphology, o.disable, "--disable");
   std::optional<AtomicFile> csv;
   if (!o.csv.empty()) csv.emplace(o.csv);
 
@@ -42,7 +46,7 @@ void run_gait(const GaitOptions& o) {
   std::cout << model.morphology.name << ", period " << o.period << ", steps " << o.warmup << ".."
             << o.warmup + o.steps - 1 << " ('#' stance, '.' swing)";
   if (!disabled.empty()) {
-    std::cout << ", disabled " << robot::leg_list_name(model.morphology, disabled);
+    std::cout << ", disabled " << robot::leg_set_name(model.morphology, disabled);
   }
   std::cout << "\n" << gait_diagram(names, record.swing, o.warmup);
   const std::vector<double> fractions = experiments::swing_fractions(record);
@@ -74,8 +78,11 @@ void register_gait(CLI::App& app) {
   cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
   cmd->add_option("--period", opts->period, "CPG period: 1 (stop), 4, 5, 6, 8 or 9")
       ->capture_default_str();
-  cmd->add_option("--steps", opts->steps, "steps to show")->capture_default_str();
+  cmd->add_option("--steps", opts->steps, "steps to show")
+      ->check(in(sim::kRunStepsLimits))
+      ->capture_default_str();
   cmd->add_option("--warmup", opts->warmup, "steps run first, so the CPG locks and delays fill")
+      ->check(in(sim::kStepLimits))
       ->capture_default_str();
   cmd->add_option("--disable", opts->disable, "legs holding the disabled posture, e.g. R1,L2");
   cmd->add_option("--csv", opts->csv, "write step,<leg>... with 1 = swing, 0 = stance");

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -16,6 +17,7 @@
 #include "experiments/scenarios.h"
 #include "experiments/sweep.h"
 #include "report/landscape_figure.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::apps {
 namespace {
@@ -29,16 +31,8 @@ struct LandscapeOptions {
   double threshold = learning::kDefaultThresholdDeg;
   std::vector<int> period_set = learning::AnnealingParams{}.period_set;
   std::string learned;
-  SimFlags sim;
+  sim::SimOptions sim;
 };
-
-// --disable as leg indices; unlike robot::parse_leg_list alone, a leg named twice is an error.
-std::vector<std::size_t> parse_disabled(const robot::Morphology& morph, const std::string& list) {
-  const std::vector<std::size_t> legs = robot::parse_leg_list(morph, list);
-  const auto names = static_cast<std::size_t>(std::count(list.begin(), list.end(), ',')) + 1;
-  if (names != legs.size()) throw BadInput("--disable '" + list + "' names a leg twice");
-  return legs;
-}
 
 std::vector<learning::Periods> read_learned(const std::string& path,
                                             const experiments::LandscapeSpec& spec) {
@@ -57,7 +51,7 @@ void run(const LandscapeOptions& o) {
   spec.kind = robot::parse_robot(o.robot);
   const robot::Morphology& morph = robot::morphology(spec.kind);
   if (o.disable.empty()) throw BadInput("--disable: name at least one leg, e.g. R1");
-  spec.disabled = parse_disabled(morph, o.disable);
+  spec.disabled = parse_leg_flag(morph, o.disable, "--disable");
   spec.period_set = o.period_set;
   spec.windows = o.windows;
   spec.threshold_deg = o.threshold;
@@ -86,14 +80,14 @@ void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std:
 
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);
   std::cout << std::fixed << std::setprecision(1) << morph.name << ", "
-            << experiments::scenario_name(morph, spec.disabled)
-            << " disabled: " << summary.at("count") << " combinations, " << summary.at("holding")
-            << " hold (" << 100.0 * summary.at("share_holding").get<double>() << "%), "
+            << robot::leg_set_name(morph, spec.disabled) << " disabled: " << summary.at("count")
+            << " combinations, " << summary.at("holding") << " hold ("
+            << 100.0 * summary.at("share_holding").get<double>() << "%), "
             << 100.0 * summary.at("share_first_window_passing").get<double>()
             << "% pass the first window\n";
   if (const std::optional<std::size_t> best = experiments::best_combination(landscape)) {
     const experiments::CombinationMeasure& m = landscape.combinations[*best];
-    std::cout << "best: " << experiments::working_periods_text(morph, m.periods, spec.disabled)
+    std::cout << "best: " << robot::period_map_text(morph, m.periods, spec.disabled)
               << ", worst deviation " << std::setprecision(2) << m.worst_deg << " deg\n";
   } else {
     std::cout << "best: no combination holds\n";
@@ -112,12 +106,15 @@ void register_landscape(CLI::App& app) {
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2")->required();
   cmd->add_option("--out", o->out, "directory for the runs, CSV, summary and figure (resumes)")
       ->required();
-  cmd->add_option("--jobs", o->jobs, "parallel combinations (default: every core)");
+  cmd->add_option("--jobs", o->jobs, "parallel combinations (default: every core)")
+      ->check(in(experiments::kJobsLimits));
   cmd->add_option("--windows", o->windows, "400-step windows measured per combination")
+      ->check(in(experiments::kLandscapeWindowsLimits))
       ->capture_default_str();
   cmd->add_option("--threshold", o->threshold,
                   "a combination holds when every window's yaw change and path angle are under "
                   "this (deg)")
+      ->check(in(learning::kThresholdLimits))
       ->capture_default_str();
   cmd->add_option("--periods-set", o->period_set, "periods each working leg takes")
       ->delimiter(',')

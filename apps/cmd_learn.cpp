@@ -16,6 +16,7 @@
 #include "common/errors.h"
 #include "experiments/learning_run.h"
 #include "experiments/scenarios.h"
+#include "robot/leg_sets.h"
 #include "sim/record_csv.h"
 
 namespace multicpg::apps {
@@ -25,7 +26,7 @@ struct LearnOptions {
   std::string robot = "hexapod";
   WalkFlags faults;  // only the fault flags are declared
   LearningFlags learning;
-  SimFlags sim;
+  sim::SimOptions sim;
   bool json = false;
   std::string out;
 };
@@ -75,7 +76,7 @@ void print_episodes(std::ostream& out, const robot::Morphology& morph,
     const learning::Episode& e = r.episodes[i];
     out << "episode " << i + 1 << ": detected " << e.detection_deg << "° at step "
         << e.detection_step << ", " << e.trials << " trials, "
-        << experiments::working_periods_text(morph, e.periods, failing) << ", "
+        << robot::period_map_text(morph, e.periods, failing) << ", "
         << (e.held ? "held" : (e.interrupted ? "interrupted by a fault" : "not held")) << "\n";
   }
   out << "windows after the last fault or episode (yaw / path angle, deg):";
@@ -133,20 +134,20 @@ void run_learn(const LearnOptions& o) {
   }
   std::cout << ", faults";
   for (const sim::Fault& f : learning::fault_timeline(options)) {
-    std::cout << " " << robot::leg_list_name(morph, f.legs) << (f.recover ? " recover" : " fail")
+    std::cout << " " << robot::leg_set_name(morph, f.legs) << (f.recover ? " recover" : " fail")
               << "@" << f.step;
   }
-  std::cout << ", beta " << o.learning.beta << ", threshold " << o.learning.threshold
-            << "°, window " << options.window_steps << ", settle " << r.settle_steps << ", seed "
-            << o.learning.seed << "\n\n";
+  std::cout << ", beta " << options.annealing.beta << ", threshold "
+            << options.annealing.threshold_deg << "°, window " << options.window_steps
+            << ", settle " << r.settle_steps << ", seed " << options.seed << "\n\n";
   print_trace(std::cout, morph, run, failing);
   print_episodes(std::cout, morph, r, failing);
-  std::cout << "\n" << r.status;
+  std::cout << "\n" << learning::to_string(r.outcome);
   if (r.detection_step) {
     std::cout << " after " << r.trials
-              << " trials: " << experiments::working_periods_text(morph, r.periods, failing)
-              << " (deviation " << std::fixed << std::setprecision(2) << r.initial_deviation_deg
-              << "° -> " << r.final_deviation_deg << "°)";
+              << " trials: " << robot::period_map_text(morph, r.periods, failing) << " (deviation "
+              << std::fixed << std::setprecision(2) << r.initial_deviation_deg << "° -> "
+              << r.final_deviation_deg << "°)";
   }
   std::cout << "\n";
   if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";

@@ -11,7 +11,7 @@ namespace {
 struct ModelOptions {
   std::string robot = "hexapod";
   bool tunnel = false;
-  SimFlags sim;
+  sim::SimOptions sim;
   std::string out;
 };
 

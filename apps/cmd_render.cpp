@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
@@ -20,7 +21,7 @@ struct RenderOptions {
   bool learn = false;
   bool tunnel = false;
   LearningFlags learning;
-  SimFlags sim;
+  sim::SimOptions sim;
   std::string out;
   int width = report::kDefaultFrameWidth;
   int height = report::kDefaultFrameHeight;
@@ -50,8 +51,8 @@ void run_render(const RenderOptions& o) {
     report::FilmObserver observer(film);
     const experiments::LearningRun run =
         experiments::run_learning(model, *learn, false, 0, &observer);
-    const std::string summary =
-        run.result.status + " after " + std::to_string(run.result.trials) + " trials";
+    const std::string summary = std::string(learning::to_string(run.result.outcome)) + " after " +
+                                std::to_string(run.result.trials) + " trials";
     if (film.format() == report::FilmFormat::picture) film.picture(run.final_state, summary);
     film.finish();
     std::cout << summary << "; wrote " << o.out << " (" << film.frames() << " frames)\n";
@@ -81,14 +82,21 @@ void register_render(CLI::App& app) {
       "render", "render a walk or a learning run to a video (.mp4) or picture (.png), headless");
   cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
   add_walk_flags(*cmd, o->walk);
-  cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")->capture_default_str();
+  cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")
+      ->check(in(sim::kRunStepsLimits))
+      ->capture_default_str();
   cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
   add_learning_flags(*cmd, o->learning);
   add_sim_flags(*cmd, o->sim);
-  cmd->add_option("--width", o->width, "frame width in pixels")->capture_default_str();
-  cmd->add_option("--height", o->height, "frame height in pixels")->capture_default_str();
+  cmd->add_option("--width", o->width, "frame width in pixels")
+      ->check(in(report::kFrameSideLimits))
+      ->capture_default_str();
+  cmd->add_option("--height", o->height, "frame height in pixels")
+      ->check(in(report::kFrameSideLimits))
+      ->capture_default_str();
   cmd->add_option("--speed", o->speed, "controller steps per video frame (1 = real time)")
+      ->check(in(report::kFilmSpeedLimits))
       ->capture_default_str();
   cmd->callback([o] { run_render(*o); });
 }

@@ -4,7 +4,9 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "common/errors.h"
+#include "experiments/runner.h"
 #include "report/figures.h"
 #include "report/reproduce.h"
 
@@ -31,8 +33,11 @@ void register_reproduce(CLI::App& app) {
       "reproduce", "run every experiment of the paper and write DIR/index.html (resumable)");
   cmd->add_option("--out", o->run.out, "folder for the report")->required();
   cmd->add_flag("--quick", o->run.quick, "few learning runs and faster videos: a few minutes");
-  cmd->add_option("--jobs", o->jobs, "parallel learning runs (default: every core)");
-  cmd->add_option("--seed", o->run.seed, "base seed of every learning run")->capture_default_str();
+  cmd->add_option("--jobs", o->jobs, "parallel learning runs (default: every core)")
+      ->check(in(experiments::kJobsLimits));
+  cmd->add_option("--seed", o->run.seed, "base seed of every learning run")
+      ->check(seed_value())
+      ->capture_default_str();
   cmd->callback([o] {
     if (o->jobs && *o->jobs < 1) {
       throw BadInput("--jobs must be at least 1, got " + std::to_string(*o->jobs));
@@ -54,7 +59,9 @@ void register_figure(CLI::App& app) {
   cmd->add_option("names", o->names, "figure names")->required();
   cmd->add_option("--out", o->run.out, "folder for the figures and index.html")->required();
   cmd->add_flag("--quick", o->run.quick, "few learning runs for the learning tables");
-  cmd->add_option("--seed", o->run.seed, "base seed of the learning runs")->capture_default_str();
+  cmd->add_option("--seed", o->run.seed, "base seed of the learning runs")
+      ->check(seed_value())
+      ->capture_default_str();
   cmd->callback([o] {
     for (const std::string& name : o->names) {
       const std::string stage = report::stage_of_figure(name);

@@ -9,6 +9,7 @@
 #include "apps/commands.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/provenance.h"
 #include "experiments/experiment_file.h"
 #include "experiments/scenarios.h"
 #include "report/film.h"
@@ -33,8 +34,9 @@ int checked_jobs(const std::optional<int>& jobs) {
 }
 
 void print_table(const experiments::ExperimentTable& t) {
-  std::cout << (t.experiment == "beta" ? to_markdown(experiments::beta_table(t.rows))
-                : t.experiment == "grid"
+  std::cout << (t.experiment == experiments::ExperimentKind::beta
+                    ? to_markdown(experiments::beta_table(t.rows))
+                : t.experiment == experiments::ExperimentKind::grid
                     ? to_markdown(experiments::scenario_table(t.rows, "Grid point"))
                     : to_markdown(experiments::scenario_table(t.rows)));
 }
@@ -131,6 +133,7 @@ void rerun(const RerunOptions& o) {
     runner.jobs = 1;
     runner.progress = false;
     runner.arguments = recorded.sweep.resolved;
+    runner.provenance = provenance(mj_versionString());
     if (recorded.shard.count > 1)
       runner.arguments["shard"] = experiments::to_string(recorded.shard);
     ensure_writable_dir(o.out);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
@@ -15,6 +16,7 @@
 #include "experiments/scenarios.h"
 #include "experiments/tunnel.h"
 #include "report/film.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::apps {
 namespace {
@@ -38,12 +40,12 @@ void run_tunnel(TunnelOptions o, bool periods_given) {
   }
   std::cout << std::fixed << std::setprecision(2) << "tunnel " << out.tunnel_length_m << " m x "
             << out.tunnel_width_m << " m, disabled "
-            << (out.disabled.empty() ? "none" : robot::leg_list_name(morph, out.disabled)) << "\n";
+            << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled)) << "\n";
   if (out.learned) {
     std::cout << "learned in the open field (" << learning::to_string(out.options->mode)
-              << " mode): " << out.learned->status << " after " << out.learned->trials
-              << " trials, "
-              << experiments::working_periods_text(morph, out.learned->periods, out.disabled)
+              << " mode): " << learning::to_string(out.learned->outcome) << " after "
+              << out.learned->trials << " trials, "
+              << robot::period_map_text(morph, out.learned->periods, out.disabled)
               << (out.learned->steering ? ", steering reflex on" : "") << "\n";
   }
   std::cout << result << " after " << run.steps << " steps: forward " << run.forward_m
@@ -66,6 +68,7 @@ void register_tunnel(CLI::App& app) {
                 "controller through the tunnel");
   add_learning_flags(*cmd, o->request.learning);
   cmd->add_option("--max-steps", o->request.max_steps, "steps before giving up")
+      ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--video", o->request.video, "also film the run to FILE.mp4");
   cmd->add_flag("--json", o->json, "print one JSON object");

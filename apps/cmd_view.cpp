@@ -2,11 +2,13 @@
 #include <iostream>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "report/viewer.h"
 #include "sim/sim.h"
+#include "sim/walk.h"
 
 namespace multicpg::apps {
 namespace {
@@ -47,7 +49,8 @@ void register_view(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "watch the robot walk in a window (Space pause, Right step, 1-8 legs, S sync)");
   add_walk_flags(*cmd, opts->walk);
-  CLI::Option* steps = cmd->add_option("--steps", opts->steps, "quit after this many steps");
+  CLI::Option* steps = cmd->add_option("--steps", opts->steps, "quit after this many steps")
+                           ->check(in(sim::kRunStepsLimits));
   cmd->callback([opts, steps] { run_view(*opts, steps->count() > 0); });
 }
 

@@ -8,11 +8,14 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
 #include "apps/walk_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "learning/compensation.h"
+#include "robot/leg_sets.h"
 #include "sim/record_csv.h"
 #include "sim/walk.h"
 
@@ -27,7 +30,7 @@ struct WalkOptions {
   long settle = 0;
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
-  SimFlags sim;
+  sim::SimOptions sim;
   std::string csv;
   bool json = false;
 };
@@ -41,14 +44,11 @@ struct Run {
 
 nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
   const robot::Morphology& morph = *run.morph;
-  nlohmann::json periods = nlohmann::json::object();
-  for (std::size_t i = 0; i < morph.size(); ++i) {
-    periods[morph.legs[i].name] = run.spec.start.periods[i];
-  }
+  const nlohmann::json periods = robot::period_map_json(morph, run.spec.start.periods);
   nlohmann::json faults = nlohmann::json::array();
   for (const sim::Fault& f : run.spec.faults) {
     faults.push_back(
-        {{"step", f.step}, {"legs", robot::leg_list_name(morph, f.legs)}, {"recover", f.recover}});
+        {{"step", f.step}, {"legs", robot::leg_set_name(morph, f.legs)}, {"recover", f.recover}});
   }
   nlohmann::json windows = nlohmann::json::array();
   for (const sim::WindowMeasure& m : result.windows) {
@@ -88,7 +88,7 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
   out << (s.start.warmup > 0 ? " (warmed-up controller)" : " (cold controller)") << "\nfaults: ";
   if (s.faults.empty()) out << "none";
   for (const sim::Fault& f : s.faults) {
-    out << robot::leg_list_name(morph, f.legs) << (f.recover ? " recover" : " fail") << " at step "
+    out << robot::leg_set_name(morph, f.legs) << (f.recover ? " recover" : " fail") << " at step "
         << f.step << "  ";
   }
   out << "\n";
@@ -150,9 +150,13 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--settle", opts->settle,
                   "steps walked before measuring (delay lines fill after 126 steps for the "
                   "hexapod; p = 4 CPGs lock after about 740)")
+      ->check(in(sim::kStepLimits))
       ->capture_default_str();
-  cmd->add_option("--steps", opts->steps, "controller steps measured")->capture_default_str();
+  cmd->add_option("--steps", opts->steps, "controller steps measured")
+      ->check(in(sim::kRunStepsLimits))
+      ->capture_default_str();
   cmd->add_option("--window", opts->window, "steps per yaw-deviation window (SPEC §6)")
+      ->check(in(learning::kWindowStepsLimits))
       ->capture_default_str();
   add_sim_flags(*cmd, opts->sim);
   cmd->add_option("--csv", opts->csv,

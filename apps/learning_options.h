@@ -1,10 +1,8 @@
-// Flags shared by `learn` and `experiment`: the SA and trial settings of SPEC §6.
+// Flags shared by `learn`, `experiment`, `tunnel --learn` and `render --learn`: the learning
+// options of SPEC §6 and issue 8, bound directly to learning::CompensationOptions.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
-#include <optional>
-#include <string>
 
 #include "learning/compensation.h"
 #include "sim/stepper.h"
@@ -12,25 +10,18 @@
 namespace multicpg::apps {
 
 struct LearningFlags {
-  std::string mode = "robust";
-  std::string steering = "reflex";
-  int hold_windows = learning::kDefaultHoldWindows;
-  long monitor_windows = learning::kDefaultMonitorWindows;
-  bool no_period_learning = false;
-  double beta = learning::kDefaultBeta;
-  double threshold = learning::kDefaultThresholdDeg;
-  long window = learning::kDefaultWindowSteps;
-  std::optional<long> settle;
-  int max_trials = learning::kDefaultMaxTrials;
-  std::uint64_t seed = 1;
+  learning::CompensationOptions options;  // every flag writes its field here
+  bool robust_only = false;  // a robust-mode flag (--steering, --hold-windows, ...) was given
 };
 
-// Adds --beta --threshold --window --settle --max-trials --seed (without --beta when
-// `with_beta` is false: the beta study sets it per run).
+// Adds --mode --steering --hold-windows --monitor-windows --no-period-learning --beta
+// --threshold --window --settle --max-trials --seed, each range shown in --help and checked at
+// parse time (without --beta when `with_beta` is false: the beta study sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);
 
-// Options for one run; throws BadInput (one line) for a bad value or leg set. `faults` is the
-// whole timeline (apps/walk_flags.h parse_faults); it must fail some leg.
+// The options for one run: the bound flags with the fault timeline `faults` (apps/walk_flags.h
+// parse_faults; it must fail some leg). Throws BadInput (one line) for robust-mode flags in
+// paper mode or a bad leg set (learning::validate).
 learning::CompensationOptions compensation_options(const LearningFlags& flags,
                                                    const robot::Morphology& morph,
                                                    const sim::FaultTimeline& faults);

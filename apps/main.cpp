@@ -2,9 +2,12 @@
 // Exit codes: 0 success, 2 bad input, 1 runtime failure.
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "common/errors.h"
+#include "common/provenance.h"
 #include "sim/sim.h"
 
 namespace {
@@ -36,12 +39,23 @@ int run(int argc, char** argv) {
   apps::register_figure(app);
   apps::register_landscape(app);
   apps::register_run(app);
+  apps::refuse_empty_values(app);
   try {
+    if (argc > 1 && argv[1][0] != '-') {
+      try {
+        app.get_subcommand(argv[1]);
+      } catch (const CLI::OptionNotFound&) {
+        throw BadInput(std::string("unknown command '") + argv[1] + "' (see multicpg --help)");
+      }
+    }
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);  // --help
   } catch (const CLI::ParseError& e) {
     std::cerr << "multicpg: " << e.what() << "\n";
+    return 2;
+  } catch (const OptionError& e) {
+    std::cerr << "multicpg: " << e.key() << " " << e.what() << "\n";
     return 2;
   } catch (const BadInput& e) {
     std::cerr << "multicpg: " << e.what() << "\n";
@@ -57,5 +71,6 @@ int run(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   multicpg::sim::install_mujoco_handlers();
+  multicpg::set_command_line(argc, argv);
   return finish_stdout(run(argc, argv));
 }

@@ -9,9 +9,6 @@
 
 namespace multicpg::apps {
 
-// Periods that give a gait (SPEC §1: 1 = stop, 4 tripod, 5 tetrapod, 6 transition, 8, 9 waves).
-inline const std::set<int> kGaitPeriods{1, 4, 5, 6, 8, 9};
-
 // Throws unless value > 0.
 void require_positive(long value, const std::string& flag);
 void require_positive(double value, const std::string& flag);
@@ -24,8 +21,10 @@ void require_gait_period(int period, const std::string& flag);
 // A step number: a whole number in 0..sim::kMaxSteps, nothing else (no sign, no junk).
 long parse_step(const std::string& text, const std::string& flag);
 
-// "--periods 4" (every leg) or "--periods R1=5,R2=4" (unnamed legs keep `fallback`).
-std::vector<int> parse_periods(const robot::Morphology& morph, const std::string& spec,
-                               int fallback = 4);
+// robot::parse_leg_set / parse_period_map with the flag named in the error ("--periods: ...").
+std::vector<std::size_t> parse_leg_flag(const robot::Morphology& morph, const std::string& text,
+                                        const std::string& flag);
+std::vector<int> parse_periods_flag(const robot::Morphology& morph, const std::string& text,
+                                    const std::string& flag);
 
 }  // namespace multicpg::apps

@@ -1,5 +1,7 @@
 #include "apps/results_json.h"
 
+#include "learning/json.h"
+
 namespace multicpg::apps {
 
 nlohmann::json learn_json(const robot::Morphology& morph,
@@ -7,12 +9,8 @@ nlohmann::json learn_json(const robot::Morphology& morph,
                           const learning::LearningResult& result, long disable_at) {
   nlohmann::json json = learning::to_json(result, morph, learning::failing_legs(options));
   json["robot"] = morph.name;
-  json["seed"] = options.seed;
-  json["beta"] = options.annealing.beta;
-  json["threshold_deg"] = options.annealing.threshold_deg;
-  json["window_steps"] = options.window_steps;
   json["disable_at"] = disable_at;
-  json["options"] = learning::to_json(options, morph);
+  json["options"] = options;
   return json;
 }
 

@@ -1,25 +1,20 @@
-// Flags of every command that simulates a robot: time steps and servo gain (issue 3, SPEC §7).
+// Flags of every command that simulates a robot: time steps and servo gain (issue 3, SPEC §7),
+// bound directly to sim::SimOptions.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <optional>
 
 #include "sim/sim.h"
 
 namespace multicpg::apps {
 
-struct SimFlags {
-  double control_dt = sim::kDefaultControlDt;
-  std::optional<double> physics_dt;
-  std::optional<double> servo_gain;
-};
-
 // Adds --control-dt --physics-dt, and --servo-gain unless `with_servo` is false (commands that
-// only write the model).
-void add_sim_flags(CLI::App& cmd, SimFlags& flags, bool with_servo = true);
+// only write the model), writing into `options`, each range shown in --help and checked at parse
+// time.
+void add_sim_flags(CLI::App& cmd, sim::SimOptions& options, bool with_servo = true);
 
-// The simulation options; throws BadInput (one line) for a step <= 0, a control step that is not
-// a whole multiple of the physics step, or a servo gain <= 0.
-sim::SimOptions sim_options(const SimFlags& flags);
+// `options` checked whole (sim::validate: a control step that is not a whole multiple of the
+// physics step); throws OptionError naming the flag.
+sim::SimOptions sim_options(const sim::SimOptions& options);
 
 }  // namespace multicpg::apps

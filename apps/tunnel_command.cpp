@@ -3,7 +3,9 @@
 #include "apps/options.h"
 #include "apps/walk_flags.h"
 #include "common/errors.h"
+#include "learning/json.h"
 #include "report/film.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::apps {
 
@@ -11,10 +13,9 @@ TunnelOutcome run_tunnel_command(const TunnelRequest& o, sim::Observer* learning
   const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
   TunnelOutcome out;
   experiments::TunnelSpec spec;
-  spec.disabled = robot::parse_leg_list(morph, o.disable);
+  spec.disabled = parse_leg_flag(morph, o.disable, "--disable");
   require_working_leg(morph, spec.disabled);
-  spec.periods = parse_periods(morph, o.periods.value_or("4"));
-  require_positive(o.max_steps, "--max-steps");
+  spec.periods = parse_periods_flag(morph, o.periods.value_or("4"), "--periods");
   spec.max_steps = o.max_steps;
   if (o.learn) {
     if (o.periods) throw BadInput("--periods and --learn exclude each other: --learn finds them");
@@ -59,12 +60,10 @@ nlohmann::json tunnel_json(const robot::Morphology& morph, const TunnelOutcome& 
   nlohmann::json j{{"passed", run.passed},       {"touched_wall", run.touched_wall},
                    {"steps", run.steps},         {"forward_m", run.forward_m},
                    {"lateral_m", run.lateral_m}, {"deviation_deg", run.deviation_deg}};
-  nlohmann::json periods = nlohmann::json::object();
-  for (std::size_t i = 0; i < morph.size(); ++i) periods[morph.legs[i].name] = o.periods[i];
-  j["periods"] = periods;
+  j["periods"] = robot::period_map_json(morph, o.periods);
   if (o.learned) {
     j["learning"] = learning::to_json(*o.learned, morph, o.disabled);
-    j["options"] = learning::to_json(*o.options, morph);
+    j["options"] = *o.options;
   }
   return j;
 }

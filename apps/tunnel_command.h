@@ -22,7 +22,7 @@ struct TunnelRequest {
   LearningFlags learning;
   long max_steps = experiments::kTunnelMaxSteps;
   std::string video;  // .mp4 to film the tunnel walk; empty = none
-  SimFlags sim;
+  sim::SimOptions sim;
 };
 
 struct TunnelOutcome {

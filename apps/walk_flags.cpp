@@ -2,8 +2,10 @@
 
 #include <algorithm>
 
+#include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "common/errors.h"
+#include "robot/leg_sets.h"
 #include "sim/walk.h"
 
 namespace multicpg::apps {
@@ -18,6 +20,7 @@ void add_walk_flags(CLI::App& cmd, WalkFlags& f) {
   cmd.add_option("--warmup", f.warmup,
                  "controller steps run before the robot moves, so it starts walking with locked "
                  "CPGs and full delay lines")
+      ->check(in(sim::kStepLimits))
       ->capture_default_str();
   cmd.add_flag("--cold", f.cold, "start from a cold controller (no warm-up, as --warmup 0)");
 }
@@ -25,6 +28,7 @@ void add_walk_flags(CLI::App& cmd, WalkFlags& f) {
 void add_fault_flags(CLI::App& cmd, WalkFlags& f) {
   cmd.add_option("--disable", f.disable, "legs that fail, e.g. R1,R3");
   cmd.add_option("--disable-at", f.disable_at, "controller step (from 0) at which they fail")
+      ->check(in(sim::kStepLimits))
       ->capture_default_str();
   cmd.add_option("--fault", f.faults, "LEGS@STEP: these legs fail before that step (repeatable)");
   cmd.add_option("--recover", f.recoveries,
@@ -42,7 +46,7 @@ sim::Fault parse_fault(const robot::Morphology& morph, const std::string& text, 
   }
   sim::Fault f;
   f.recover = recover;
-  f.legs = robot::parse_leg_list(morph, text.substr(0, at));
+  f.legs = robot::parse_leg_set(morph, text.substr(0, at));
   f.step = parse_step(text.substr(at + 1), flag);
   return f;
 }
@@ -54,7 +58,7 @@ sim::FaultTimeline parse_faults(const robot::Morphology& morph, const WalkFlags&
     throw BadInput("--disable-at must not be negative, got " + std::to_string(f.disable_at));
   }
   sim::FaultTimeline faults;
-  const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, f.disable);
+  const std::vector<std::size_t> disabled = parse_leg_flag(morph, f.disable, "--disable");
   if (!disabled.empty()) faults.push_back({f.disable_at, disabled, false});
   for (const std::string& t : f.faults) faults.push_back(parse_fault(morph, t, false));
   for (const std::string& t : f.recoveries) faults.push_back(parse_fault(morph, t, true));
@@ -74,14 +78,13 @@ void require_working_leg(const robot::Morphology& morph, const std::vector<std::
 WalkChoice parse_walk_flags(const WalkFlags& f) {
   const robot::RobotKind kind = robot::parse_robot(f.robot);
   const robot::Morphology& morph = robot::morphology(kind);
-  WalkChoice choice{
-      kind,         parse_periods(morph, f.periods), robot::parse_leg_list(morph, f.disable),
-      f.disable_at, parse_faults(morph, f),          f.cold ? 0 : f.warmup};
+  WalkChoice choice{kind,
+                    parse_periods_flag(morph, f.periods, "--periods"),
+                    parse_leg_flag(morph, f.disable, "--disable"),
+                    f.disable_at,
+                    parse_faults(morph, f),
+                    f.cold ? 0 : f.warmup};
   require_working_leg(morph, choice.disabled);
-  if (f.warmup < 0 || f.warmup > sim::kMaxSteps) {
-    throw BadInput("--warmup must be in 0.." + std::to_string(sim::kMaxSteps) + ", got " +
-                   std::to_string(f.warmup));
-  }
   return choice;
 }
 

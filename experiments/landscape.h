@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/limits.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "sim/deviation.h"
@@ -21,6 +22,7 @@ namespace multicpg::experiments {
 // Windows measured per combination: 6 x 400 steps = 89 s at 27 Hz, long enough that a slow
 // drift shows in some window (issue 8).
 inline constexpr int kDefaultLandscapeWindows = 6;
+inline constexpr Limits<int> kLandscapeWindowsLimits{1, 1000};
 // Combinations listed in summary.json's "top" (issue 8).
 inline constexpr std::size_t kLandscapeTop = 10;
 

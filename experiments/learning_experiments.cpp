@@ -1,12 +1,14 @@
 #include "experiments/learning_experiments.h"
 
 #include <fstream>
+#include <stdexcept>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
-#include "experiments/options_json_bridge.h"
 #include "experiments/scenarios.h"
 #include "experiments/sweep.h"
+#include "learning/json.h"
+#include "sim/json.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -21,16 +23,21 @@ nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind
           {"record", {{"check_windows", spec.check_windows}}}};
 }
 
+// A preset's document resolved; a bad value is named by its key.
+Sweep resolve_preset(const nlohmann::json& document) {
+  try {
+    return resolve_sweep(document);
+  } catch (const OptionError& e) {
+    throw BadInput(e.key() + " " + e.what());
+  }
+}
+
 ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& document) {
   SweepRunOptions options;
   options.out = spec.out;
   if (spec.jobs > 0) options.jobs = spec.jobs;
   options.progress = spec.progress;
-  try {
-    return *run_sweep(resolve_sweep(document), options).table;
-  } catch (const OptionError& e) {
-    throw BadInput(e.key() + " " + e.what());
-  }
+  return *run_sweep(resolve_preset(document), options).table;
 }
 
 }  // namespace
@@ -56,6 +63,35 @@ ExperimentTable run_beta_study(const ExperimentSpec& spec, const std::vector<dou
   return run_preset(spec, beta_study_document(spec, betas));
 }
 
+std::string_view to_string(ExperimentKind kind) {
+  switch (kind) {
+    case ExperimentKind::table:
+      return "table";
+    case ExperimentKind::beta:
+      return "beta";
+    case ExperimentKind::grid:
+      return "grid";
+  }
+  return "table";
+}
+
+ExperimentKind parse_experiment_kind(std::string_view text) {
+  for (ExperimentKind kind : {ExperimentKind::table, ExperimentKind::beta, ExperimentKind::grid}) {
+    if (text == to_string(kind)) return kind;
+  }
+  throw BadInput("unknown experiment '" + std::string(text) + "' (table, beta or grid)");
+}
+
+nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind experiment) {
+  if (experiment == ExperimentKind::grid) {
+    throw std::invalid_argument("a grid is an experiment file's, not a preset's");
+  }
+  return resolve_preset(experiment == ExperimentKind::beta
+                            ? beta_study_document(spec, kBetaStudyValues)
+                            : scenario_table_document(spec))
+      .resolved;
+}
+
 ExperimentTable read_experiment(const std::filesystem::path& out) {
   const std::filesystem::path file = out / "summary.json";
   std::ifstream in(file);
@@ -63,12 +99,13 @@ ExperimentTable read_experiment(const std::filesystem::path& out) {
   nlohmann::json j;
   try {
     in >> j;
-    ExperimentTable table{
-        j.at("experiment").get<std::string>(), j.at("robot").get<std::string>(), {}};
+    ExperimentTable table{parse_experiment_kind(j.at("experiment").get<std::string>()),
+                          j.at("robot").get<std::string>(),
+                          {}};
     for (const nlohmann::json& row : j.at("rows"))
       table.rows.push_back(group_summary_from_json(row));
     return table;
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {
     throw BadInput("'" + file.string() + "' is not an experiment summary: " + e.what());
   }
 }

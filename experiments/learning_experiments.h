@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string_view>
 #include <vector>
 
 #include "experiments/tables.h"
@@ -11,6 +12,10 @@
 #include "sim/sim.h"
 
 namespace multicpg::experiments {
+
+// Runs per scenario or beta, and windows checked after each run (documented ranges).
+inline constexpr Limits<int> kRunsLimits{1, 100'000};
+inline constexpr Limits<long> kCheckWindowsLimits{0, 1000};
 
 struct ExperimentSpec {
   robot::RobotKind kind = robot::RobotKind::hexapod;
@@ -24,6 +29,24 @@ struct ExperimentSpec {
   long check_windows = 0;
   sim::SimOptions sim;
   bool progress = true;
+};
+
+// The tables of learning experiments: the paper's two, and a grid of options (sweep.h).
+enum class ExperimentKind { table, beta, grid };
+std::string_view to_string(ExperimentKind kind);              // "table", "beta", "grid"
+ExperimentKind parse_experiment_kind(std::string_view text);  // throws BadInput
+
+// What decides an experiment's results, as recorded in OUT/experiment.json and compared on
+// resume: its resolved document (experiments/sweep.h): robot, scenarios, runs, seed and every
+// learning and simulation option.
+nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind experiment);
+
+// An experiment's results: one summary row per scenario, beta or grid point, written to OUT as
+// table.csv, table.md and summary.json.
+struct ExperimentTable {
+  ExperimentKind experiment = ExperimentKind::table;
+  std::string robot;
+  std::vector<GroupSummary> rows;
 };
 
 // The experiments as documents of experiments/sweep.h (what examples/paper-*.toml hold with

@@ -25,7 +25,8 @@ const GroupSummary* find_row(const ExperimentTable& t, const std::string& group)
 }
 
 std::string markdown_table(const ExperimentTable& t) {
-  return to_markdown(t.experiment == "beta" ? beta_table(t.rows) : scenario_table(t.rows));
+  return to_markdown(t.experiment == ExperimentKind::beta ? beta_table(t.rows)
+                                                          : scenario_table(t.rows));
 }
 
 // Runs whose robot never deviated more than the threshold (e.g. R1+L1, a symmetric loss) have

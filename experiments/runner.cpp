@@ -73,38 +73,53 @@ std::optional<nlohmann::json> read_sealed(const fs::path& path) {
   return parse_sealed(text.str(), path);
 }
 
-// What OUT/experiment.json holds: the arguments and the run keys.
+// What OUT/experiment.json holds and a resume must match: the arguments and the run keys.
 nlohmann::json experiment_record(const std::vector<Task>& tasks, const nlohmann::json& arguments) {
   nlohmann::json keys = nlohmann::json::array();
   for (const Task& t : tasks) keys.push_back(t.key);
   return {{"arguments", arguments}, {"runs", keys}};
 }
 
-// "arguments (seed, runs)" naming the arguments that differ, or "runs" if only the list does.
-std::string what_differs(const nlohmann::json& stored, const nlohmann::json& now) {
-  const nlohmann::json a = stored.value("arguments", nlohmann::json::object());
-  const nlohmann::json& b = now.at("arguments");
-  if (!a.is_object()) return "arguments";
-  std::set<std::string> names;
-  for (const nlohmann::json* args : {&a, &b}) {
-    for (const auto& item : args->items()) names.insert(item.key());
-  }
-  std::string out;
-  for (const std::string& n : names) {
-    if (a.value(n, nlohmann::json()) != b.value(n, nlohmann::json())) {
-      out += (out.empty() ? "" : ", ") + n;
+constexpr const char* kProvenanceField = "provenance";
+
+// Adds to `out` the dotted path of every leaf where `a` and `b` differ
+// ("arguments.sim.servo_gain").
+void differing_keys(const nlohmann::json& a, const nlohmann::json& b, const std::string& path,
+                    std::vector<std::string>& out) {
+  if (a.is_object() && b.is_object()) {
+    std::set<std::string> names;
+    for (const nlohmann::json* side : {&a, &b}) {
+      for (const auto& item : side->items()) names.insert(item.key());
     }
+    for (const std::string& n : names) {
+      const std::string child = path.empty() ? n : path + "." + n;
+      if (!a.contains(n) || !b.contains(n)) {
+        out.push_back(child);
+      } else {
+        differing_keys(a.at(n), b.at(n), child, out);
+      }
+    }
+  } else if (a != b) {
+    out.push_back(path);
   }
-  return out.empty() ? "runs" : "arguments (" + out + ")";
+}
+
+// "arguments.seed, arguments.sim.servo_gain": every key whose value differs.
+std::string what_differs(const nlohmann::json& stored, const nlohmann::json& now) {
+  std::vector<std::string> keys;
+  differing_keys(stored, now, "", keys);
+  std::string out;
+  for (const std::string& k : keys) out += (out.empty() ? "" : ", ") + k;
+  return out;
 }
 
 // Makes OUT/runs and claims OUT for these arguments, or checks an earlier claim matches.
 void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
-                   const nlohmann::json& arguments) {
+                   const nlohmann::json& arguments, const nlohmann::json& provenance) {
   const fs::path record_path = out / "experiment.json";
   const nlohmann::json record = experiment_record(tasks, arguments);
   if (std::optional<nlohmann::json> stored = read_sealed(record_path)) {
-    stored->erase(kChecksumField);
+    stored->erase(kProvenanceField);
     if (*stored != record) {
       throw BadInput("'" + out.string() + "' holds an experiment made with other " +
                      what_differs(*stored, record) + "; use another output directory");
@@ -117,7 +132,9 @@ void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
                      "' holds runs but no experiment.json; use another output directory");
     }
   }
-  write_file_atomic(record_path, sealed(record).dump(kJsonIndent) + "\n");
+  nlohmann::json saved = record;
+  saved[kProvenanceField] = provenance;
+  write_file_atomic(record_path, sealed(saved).dump(kJsonIndent) + "\n");
 }
 
 fs::path run_path(const fs::path& out, const Task& task) {
@@ -260,7 +277,7 @@ RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
   // in. Under the lock no other multicpg writes here, so temporary files are strays of killed runs.
   const DirLock lock(options.out_dir);
   remove_stray_temps(options.out_dir);
-  claim_out_dir(options.out_dir, tasks, options.arguments);
+  claim_out_dir(options.out_dir, tasks, options.arguments, options.provenance);
 
   RunnerOutcome outcome;
   outcome.results.resize(tasks.size());

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/limits.h"
+
 namespace multicpg::experiments {
 
 // One run of an experiment.
@@ -38,6 +40,8 @@ std::string run_key(std::string_view group, int run);
 
 // All cores (1 if unknown).
 int default_jobs();
+// Parallel runs a user may ask for: far more than any machine's cores is a typo.
+inline constexpr Limits<int> kJobsLimits{1, 4096};
 
 struct RunnerOptions {
   std::filesystem::path out_dir;
@@ -45,6 +49,9 @@ struct RunnerOptions {
   // Everything that decides the results (not the thread count), as a JSON object. Stored in
   // OUT/experiment.json; resuming with different arguments is refused.
   nlohmann::json arguments = nlohmann::json::object();
+  // Where the results come from (common/provenance.h): stored in OUT/experiment.json when the
+  // experiment starts, never compared (a resume may come from another shell or machine).
+  nlohmann::json provenance = nlohmann::json::object();
   bool progress = true;  // runs done, elapsed and time left on stderr
 };
 
@@ -58,11 +65,12 @@ struct RunnerOutcome {
 };
 
 // Runs every task not yet saved in OUT/runs and returns all results. Throws BadInput if OUT
-// was made with other arguments or tasks, if a key is repeated or cannot name a file, if another
-// process is running in OUT (OUT/.multicpg.lock), or if a saved file is damaged (naming it).
-// Removes temporary files of killed runs (*.tmp<pid>) from OUT first.
-// If a task throws, no new task starts, the runs in flight finish and are saved, and the first
-// exception is rethrown: starting again repeats only the runs not saved.
+// was made with other arguments (naming each differing key, "arguments.learning.seed") or tasks, if
+// a key is repeated or cannot name a file, if another process is running in OUT
+// (OUT/.multicpg.lock), or if a saved file is damaged (naming it). Removes temporary files of
+// killed runs (*.tmp<pid>) from OUT first. If a task throws, no new task starts, the runs in flight
+// finish and are saved, and the first exception is rethrown: starting again repeats only the runs
+// not saved.
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/errors.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -59,12 +60,6 @@ nlohmann::json leg_names(const Morphology& morph, const Legs& legs) {
 
 }  // namespace
 
-std::string scenario_name(const Morphology& morph, const Legs& legs) {
-  std::string out;
-  for (std::size_t leg : legs) out += (out.empty() ? "" : "+") + morph.legs.at(leg).name;
-  return out;
-}
-
 std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_disabled) {
   std::vector<Legs> sets;
   const std::size_t n = morph.size();
@@ -80,7 +75,7 @@ std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_
     return a.size() != b.size() ? a.size() < b.size() : a < b;
   });
   std::vector<Scenario> out;
-  for (const Legs& legs : sets) out.push_back({scenario_name(morph, legs), legs});
+  for (const Legs& legs : sets) out.push_back({robot::leg_set_name(morph, legs), legs});
   return out;
 }
 
@@ -107,7 +102,7 @@ std::vector<Scenario> paper_scenarios(robot::RobotKind kind) {
 Scenario beta_study_scenario() {
   const Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
   const Legs legs{robot::leg_index(morph, "R1"), robot::leg_index(morph, "R2")};
-  return {scenario_name(morph, legs), legs};
+  return {robot::leg_set_name(morph, legs), legs};
 }
 
 std::vector<Task> scenario_tasks(const Morphology& morph, const std::vector<Scenario>& scenarios,
@@ -149,17 +144,6 @@ std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::ui
     }
   }
   return tasks;
-}
-
-std::string working_periods_text(const Morphology& morph, const std::vector<int>& periods,
-                                 const std::vector<std::size_t>& disabled) {
-  std::string out;
-  for (std::size_t i = 0; i < periods.size(); ++i) {
-    if (std::find(disabled.begin(), disabled.end(), i) != disabled.end()) continue;
-    if (!out.empty()) out += ' ';
-    out += morph.legs.at(i).name + "=" + std::to_string(periods[i]);
-  }
-  return out;
 }
 
 std::string format_number(double value) {

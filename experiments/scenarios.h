@@ -22,9 +22,6 @@ inline constexpr int kBetaRuns = 50;      // runs per beta, paper Fig. 14
 // Beta study (paper Fig. 14): 0 = random search, 10 ~ greedy.
 inline const std::vector<double> kBetaStudyValues{0.0, 0.1, 0.3, 0.5, 1.0, 5.0, 10.0};
 
-// "R1+R3" for sorted leg indices.
-std::string scenario_name(const robot::Morphology& morph, const std::vector<std::size_t>& legs);
-
 // Every set of 1..max_disabled legs up to left-right mirror, without a whole disabled side.
 // Single legs are all listed (the paper's six one-leg rows); a larger set and its mirror image
 // appear once, as the one with more right legs, ties going to the smaller leg indices (the
@@ -48,11 +45,6 @@ std::vector<Task> scenario_tasks(const robot::Morphology& morph,
 // group = format_number(b), params {"scenario", "disabled", "beta"}. Throws BadInput for
 // runs < 1 or a negative beta.
 std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::uint64_t base_seed);
-
-// "R2=5 R3=4 L1=5 L2=6 L3=5": the periods of the working legs in leg order, as the paper lists
-// a learned combination (Figs. 10, 11).
-std::string working_periods_text(const robot::Morphology& morph, const std::vector<int>& periods,
-                                 const std::vector<std::size_t>& disabled);
 
 // Shortest text that reads back as the same double: "0.1", "10".
 std::string format_number(double value);

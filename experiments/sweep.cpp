@@ -9,9 +9,13 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/limits.h"
+#include "common/provenance.h"
 #include "experiments/learning_run.h"
-#include "experiments/options_json_bridge.h"
 #include "experiments/scenarios.h"
+#include "learning/json.h"
+#include "robot/leg_sets.h"
+#include "sim/json.h"
 #include "sim/sim.h"
 
 namespace multicpg::experiments {
@@ -22,9 +26,6 @@ using nlohmann::json;
 
 constexpr int kJsonIndent = 2;
 constexpr std::size_t kMaxScenarioLegs = 3;  // SPEC §8: 1-3 disabled legs ("all")
-// Runs per grid point and scenario: a bound that catches a typo, not a limit of the runner (the
-// key's run number has 3 digits and grows beyond them).
-constexpr long kMaxRuns = 1000000;
 
 // Keys each run sets itself: its disabled legs or fault timeline and its seed.
 const std::set<std::string> kPerRunLearningKeys{"disabled", "faults", "seed"};
@@ -156,6 +157,22 @@ T decode(const json& j) {
   return t;
 }
 
+// Which top-level key of `point` its from_json refuses (an unknown enum name throws without
+// naming its key): each tried alone on the defaults; `section` when none alone fails.
+template <typename T>
+std::string failing_key(const json& point, const std::string& section) {
+  for (const auto& item : point.items()) {
+    json alone = T{};
+    alone[item.key()] = item.value();
+    try {
+      decode<T>(alone);
+    } catch (const std::exception&) {
+      return child(section, item.key());
+    }
+  }
+  return section;
+}
+
 // The options of one grid point, checked to read back as given (an unknown enum name, a
 // whole number given for a fractional one, ...).
 template <typename T>
@@ -165,10 +182,8 @@ T options_from(const json& point, const std::string& section) {
     options = decode<T>(point);
   } catch (const OptionError& e) {
     throw OptionError(child(section, e.key()), e.what());
-  } catch (const BadInput& e) {
-    throw OptionError(section, e.what());
-  } catch (const json::exception& e) {
-    throw OptionError(section, e.what());
+  } catch (const std::exception& e) {
+    throw OptionError(failing_key<T>(point, section), e.what());
   }
   const json full = options;
   json readback = full;
@@ -202,44 +217,22 @@ struct ScenarioSpec {
   sim::FaultTimeline faults;
 };
 
-std::vector<std::size_t> parse_legs(const robot::Morphology& morph, const json& legs,
-                                    const std::string& path) {
-  std::vector<std::string> names;
-  if (legs.is_string()) {
-    std::string text = legs.get<std::string>();
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t plus = text.find('+', start);
-      names.push_back(text.substr(start, plus - start));
-      if (plus == std::string::npos) break;
-      start = plus + 1;
+// A leg set given as "R1+R3" or ["R1", "R3"] (robot/leg_sets.h), at least one leg.
+robot::LegSet parse_legs(const robot::Morphology& morph, const json& legs,
+                         const std::string& path) {
+  robot::LegSet out;
+  try {
+    if (legs.is_string()) {
+      out = robot::parse_leg_set(morph, legs.get<std::string>());
+    } else if (legs.is_array()) {
+      out = robot::leg_set_from_json(morph, legs);
     }
-  } else if (legs.is_array() && !legs.empty()) {
-    for (const json& n : legs) {
-      if (!n.is_string()) throw OptionError(path, "must name legs, got " + n.dump());
-      names.push_back(n.get<std::string>());
-    }
-  } else {
+  } catch (const BadInput& e) {
+    throw OptionError(path, e.what());
+  }
+  if (out.empty()) {
     throw OptionError(path, "must name legs (\"R1+R3\" or [\"R1\", \"R3\"]), got " + legs.dump());
   }
-  std::vector<std::size_t> out;
-  for (const std::string& name : names) {
-    try {
-      out.push_back(robot::leg_index(morph, name));
-    } catch (const BadInput& e) {
-      throw OptionError(path, e.what());
-    }
-  }
-  std::sort(out.begin(), out.end());
-  if (std::adjacent_find(out.begin(), out.end()) != out.end()) {
-    throw OptionError(path, "names a leg twice: " + legs.dump());
-  }
-  return out;
-}
-
-json leg_names(const robot::Morphology& morph, const std::vector<std::size_t>& legs) {
-  json out = json::array();
-  for (std::size_t leg : legs) out.push_back(morph.legs.at(leg).name);
   return out;
 }
 
@@ -286,8 +279,9 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
     }
     fault.legs = parse_legs(morph, f.value("legs", json()), child(fp, "legs"));
     out.faults.push_back(fault);
-    faults.push_back(
-        {{"step", fault.step}, {"legs", leg_names(morph, fault.legs)}, {"recover", fault.recover}});
+    faults.push_back({{"step", fault.step},
+                      {"legs", robot::leg_set_json(morph, fault.legs)},
+                      {"recover", fault.recover}});
   }
   try {
     sim::validate(morph, out.faults);
@@ -329,7 +323,7 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
         out.push_back(timeline_scenario(morph, s[i], path));
       } else if (s[i].is_string()) {
         const std::vector<std::size_t> legs = parse_legs(morph, s[i], path);
-        const std::string name = scenario_name(morph, legs);
+        const std::string name = robot::leg_set_name(morph, legs);
         out.push_back({name, name, legs, {}});
       } else {
         throw OptionError(
@@ -348,19 +342,19 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
 }
 
 // A whole number at `key` of `doc` in [lo, hi], or `fallback` when absent.
-long whole(const json& doc, const std::string& key, long fallback, long lo, long hi,
-           const std::string& path) {
+template <class T>
+T whole(const json& doc, const std::string& key, T fallback, const Limits<T>& limits,
+        const std::string& path) {
   if (!doc.contains(key)) return fallback;
   const json& v = doc.at(key);
   if (!v.is_number_integer()) {
     throw OptionError(path, "must be a whole number, got " + v.dump());
   }
-  const long n = v.get<long>();
-  if (n < lo || n > hi) {
-    throw OptionError(path, "must be in " + std::to_string(lo) + ".." + std::to_string(hi) +
-                                ", got " + std::to_string(n));
+  const std::int64_t n = v.get<std::int64_t>();
+  if (n < static_cast<std::int64_t>(limits.lo) || n > static_cast<std::int64_t>(limits.hi)) {
+    throw OptionError(path, "must be in " + limits.text() + ", got " + std::to_string(n));
   }
-  return n;
+  return static_cast<T>(n);
 }
 
 // The grid points: one value per axis, the first axis slowest.
@@ -389,14 +383,8 @@ std::vector<std::string> axis_names(const std::vector<GridAxis>& grid) {
   return names;
 }
 
-void check_sim(robot::RobotKind kind, const sim::SimOptions& options) {
-  try {
-    (void)sim::make_sim_model(kind, options);
-  } catch (const OptionError& e) {
-    throw OptionError(child("sim", e.key()), e.what());
-  } catch (const BadInput& e) {
-    throw OptionError("sim", e.what());
-  }
+void check_sim(const sim::SimOptions& options) {
+  within("sim", [&] { sim::validate(options); });
 }
 
 // OUT/experiment.json's arguments, if OUT holds an experiment.
@@ -413,25 +401,6 @@ std::optional<json> stored_arguments(const fs::path& out) {
   std::optional<json> arguments;
   arguments.emplace(record.at("arguments"));
   return arguments;
-}
-
-// Refuses OUT when it holds an experiment of other arguments, naming the first differing key.
-void refuse_other_experiment(const fs::path& out, const json& arguments) {
-  const std::optional<json> stored = stored_arguments(out);
-  if (!stored) return;
-  if (const std::optional<std::string> key = first_difference(*stored, arguments)) {
-    const json::json_pointer at("/" + [&] {
-      std::string p = *key;
-      std::replace(p.begin(), p.end(), '.', '/');
-      return p;
-    }());
-    const auto shown = [&](const json& j) {
-      return j.contains(at) ? j.at(at).dump() : std::string("nothing");
-    };
-    throw BadInput("'" + out.string() + "' holds an experiment made with another " + *key + " (" +
-                   shown(*stored) + " there, " + shown(arguments) +
-                   " now); use another output directory");
-  }
 }
 
 json arguments_of(const Sweep& sweep, const Shard& shard) {
@@ -515,10 +484,10 @@ ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
                         summarize(morph, sweep.tasks, results)};
   Table data;
   Table shown;
-  if (sweep.table == "beta") {
+  if (sweep.table == ExperimentKind::beta) {
     data = beta_data(table.rows);
     shown = beta_table(table.rows);
-  } else if (sweep.table == "grid") {
+  } else if (sweep.table == ExperimentKind::grid) {
     data = scenario_data(table.rows, "group");
     shown = scenario_table(table.rows, "Grid point");
   } else {
@@ -531,7 +500,7 @@ ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
   write_file_atomic(out / "trials.csv", to_csv(trials_table(sweep, results)));
   json rows = json::array();
   for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
-  const json summary{{"experiment", table.experiment},
+  const json summary{{"experiment", to_string(table.experiment)},
                      {"robot", table.robot},
                      {"arguments", sweep.resolved},
                      {"rows", rows}};
@@ -592,10 +561,9 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind) {
   } catch (const BadInput& e) {
     throw OptionError("landscape", e.what());
   }
-  check_sim(kind, spec.sim);
+  check_sim(spec.sim);
   Sweep sweep;
   sweep.robot = kind;
-  sweep.table = "landscape";
   sweep.resolved = {{"kind", "landscape"},
                     {"robot", robot::to_string(kind)},
                     {"scenarios", {scenarios.front().name}},
@@ -647,7 +615,7 @@ std::optional<std::string> first_difference(const json& a, const json& b, const 
 nlohmann::json landscape_document(const LandscapeSpec& spec) {
   return {{"kind", "landscape"},
           {"robot", robot::to_string(spec.kind)},
-          {"scenarios", {scenario_name(robot::morphology(spec.kind), spec.disabled)}},
+          {"scenarios", {robot::leg_set_name(robot::morphology(spec.kind), spec.disabled)}},
           {"landscape", landscape_json(spec)},
           {"sim", spec.sim}};
 }
@@ -688,7 +656,7 @@ Sweep resolve_sweep(const json& doc) {
   }
   const robot::Morphology& morph = robot::morphology(sweep.robot);
   const std::vector<ScenarioSpec> scenarios = resolve_scenarios(sweep.robot, doc);
-  const long runs = whole(doc, "runs", kScenarioRuns, 1, kMaxRuns, "runs");
+  const int runs = whole(doc, "runs", kScenarioRuns, kRunsLimits, "runs");
   std::uint64_t seed = 1;
   if (doc.contains("seed")) {
     const json& s = doc.at("seed");
@@ -715,7 +683,7 @@ Sweep resolve_sweep(const json& doc) {
     }
   }
   const long check_windows =
-      whole(record_in, "check_windows", 0, 0, kMaxCheckWindows, "record.check_windows");
+      whole(record_in, "check_windows", 0L, kCheckWindowsLimits, "record.check_windows");
   const json trace = record_in.value("trace", json(true));
   if (!trace.is_boolean()) throw OptionError("record.trace", "must be true or false");
   const json record{{"check_windows", check_windows}, {"trace", trace}};
@@ -735,7 +703,9 @@ Sweep resolve_sweep(const json& doc) {
   const bool beta_table = sweep.grid.size() == 1 &&
                           sweep.grid.front().key == "learning.annealing.beta" &&
                           scenarios.size() == 1;
-  sweep.table = sweep.grid.empty() ? "table" : beta_table ? "beta" : "grid";
+  sweep.table = sweep.grid.empty() ? ExperimentKind::table
+                : beta_table       ? ExperimentKind::beta
+                                   : ExperimentKind::grid;
   const bool name_scenario = sweep.grid.empty() || scenarios.size() > 1;
   const std::vector<std::string> names = axis_names(sweep.grid);
   std::set<std::string> sims_checked;
@@ -756,7 +726,7 @@ Sweep resolve_sweep(const json& doc) {
     }
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(sim_point, "sim");
-    if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sweep.robot, sim_options);
+    if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options);
     for (const ScenarioSpec& s : scenarios) {
       learning::CompensationOptions options = base;
       options.disabled = s.disabled;
@@ -784,7 +754,7 @@ Sweep resolve_sweep(const json& doc) {
         options.seed = task.seed;
         task.params = {{"robot", robot::to_string(sweep.robot)},
                        {"scenario", s.name},
-                       {"disabled", leg_names(morph, learning::failing_legs(options))},
+                       {"disabled", robot::leg_set_json(morph, learning::failing_legs(options))},
                        {"grid", grid_values},
                        {"learning", options},
                        {"sim", sim_options},
@@ -799,7 +769,6 @@ Sweep resolve_sweep(const json& doc) {
 SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   const json arguments = arguments_of(sweep, options.shard);
   ensure_writable_dir(options.out);
-  refuse_other_experiment(options.out, arguments);
   std::vector<Task> tasks;
   for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
     if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
@@ -812,6 +781,7 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   runner.jobs = options.jobs;
   runner.arguments = arguments;
   runner.progress = options.progress;
+  runner.provenance = provenance(mj_versionString());
   validate(runner);
   const Models models(sweep.robot, tasks);
   const RunnerOutcome outcome = run_tasks(
@@ -889,8 +859,8 @@ ExperimentTable merge_sweeps(const fs::path& out, const std::vector<fs::path>& d
   runner.out_dir = out;
   runner.arguments = sweep.resolved;
   runner.progress = progress;
+  runner.provenance = provenance(mj_versionString());
   ensure_writable_dir(out);
-  refuse_other_experiment(out, sweep.resolved);
   // The run files are taken as saved, after their checksum and their task are checked.
   const RunnerOutcome outcome = run_tasks(
       sweep.tasks,

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "experiments/landscape.h"
+#include "experiments/learning_experiments.h"
 #include "experiments/runner.h"
 #include "experiments/tables.h"
 #include "learning/compensation.h"
@@ -56,16 +57,14 @@ struct GridAxis {
   nlohmann::json values;  // a JSON array
 };
 
-inline constexpr long kMaxCheckWindows = 1000;
-
 struct Sweep {
   nlohmann::json resolved;  // the document with every default filled in
   robot::RobotKind robot = robot::RobotKind::hexapod;
   std::vector<GridAxis> grid;  // in key order; the first varies slowest
   std::vector<Task> tasks;     // every task, grid point by grid point, scenario, run
-  // "table" (no grid: one row per scenario, Figs. 11, 13), "beta" (beta alone swept on one
-  // scenario: Fig. 14), "grid" (one row per grid point and scenario) or "landscape".
-  std::string table;
+  // table: no grid, one row per scenario (Figs. 11, 13); beta: beta alone swept on one
+  // scenario (Fig. 14); grid: one row per grid point and scenario. Unused for a landscape.
+  ExperimentKind table = ExperimentKind::table;
   std::optional<LandscapeSpec> landscape;  // kind "landscape" (then no tasks)
 };
 

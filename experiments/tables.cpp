@@ -7,6 +7,8 @@
 #include "common/errors.h"
 #include "experiments/paper.h"
 #include "experiments/scenarios.h"
+#include "learning/compensation.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -20,24 +22,14 @@ std::string pm(const MeanSd& m, int decimals) {
   return mean_pm_sd(m.mean, m.sd, decimals);
 }
 
-const nlohmann::json& field(const nlohmann::json& result, const Task& task, const char* name) {
-  if (!result.is_object() || !result.contains(name)) {
-    throw RuntimeFailure("run " + task.key + " has no '" + name + "' in its result");
+// The learning result of `task`; a record that is not one is a damaged experiment.
+learning::LearningResult read_result(const robot::Morphology& morph, const Task& task,
+                                     const nlohmann::json& result) {
+  try {
+    return learning::result_from_json(result, morph);
+  } catch (const BadInput& e) {
+    throw RuntimeFailure("run " + task.key + ": " + e.what());
   }
-  return result.at(name);
-}
-
-// "R2=5 R3=4 L1=5 L2=6 L3=5": the final periods of the working legs in leg order.
-std::string working_periods(const robot::Morphology& morph, const nlohmann::json& result,
-                            const Task& task) {
-  const nlohmann::json& by_name = field(result, task, "periods");
-  std::vector<int> periods;
-  std::vector<std::size_t> disabled;
-  for (const robot::Leg& leg : morph.legs) periods.push_back(by_name.at(leg.name).get<int>());
-  for (const nlohmann::json& name : field(result, task, "disabled")) {
-    disabled.push_back(robot::leg_index(morph, name.get<std::string>()));
-  }
-  return working_periods_text(morph, periods, disabled);
 }
 
 std::string best_cell(const GroupSummary& row) {
@@ -127,16 +119,17 @@ std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::v
     std::vector<double> trials;
     std::map<std::string, int> finals;  // ordered, so the first maximum is alphabetically first
     for (std::size_t i : members[group]) {
-      const nlohmann::json& r = results[i];
+      const learning::LearningResult r = read_result(morph, tasks[i], results[i]);
       ++row.runs;
-      initial.push_back(field(r, tasks[i], "initial_deviation_deg").get<double>());
-      deviations.push_back(field(r, tasks[i], "final_deviation_deg").get<double>());
-      trials.push_back(field(r, tasks[i], "trials").get<double>());
-      if (field(r, tasks[i], "status") == "no deviation") ++row.no_deviation;
-      if (field(r, tasks[i], "converged").get<bool>()) {
+      initial.push_back(r.initial_deviation_deg);
+      deviations.push_back(r.final_deviation_deg);
+      trials.push_back(r.trials);
+      if (r.outcome == learning::Outcome::no_deviation) ++row.no_deviation;
+      if (r.converged()) {
         ++row.converged;
-        if (trials.back() <= paper::kMostTrials) ++row.within_paper_trials;
-        ++finals[working_periods(morph, r, tasks[i])];
+        if (r.trials <= paper::kMostTrials) ++row.within_paper_trials;
+        const robot::LegSet disabled = robot::leg_set_from_json(morph, results[i].at("disabled"));
+        ++finals[robot::period_map_text(morph, r.periods, disabled)];
       }
     }
     row.initial_deviation_deg = mean_sd(initial);

@@ -46,14 +46,6 @@ struct GroupSummary {
 std::vector<GroupSummary> summarize(const robot::Morphology& morph, const std::vector<Task>& tasks,
                                     const std::vector<nlohmann::json>& results);
 
-// An experiment's results: one summary row per scenario, beta or grid point, written to OUT as
-// table.csv, table.md and summary.json.
-struct ExperimentTable {
-  std::string experiment;  // "table", "beta" or "grid" (experiments/sweep.h)
-  std::string robot;
-  std::vector<GroupSummary> rows;
-};
-
 nlohmann::json to_json(const GroupSummary& row);
 GroupSummary group_summary_from_json(const nlohmann::json& row);
 

@@ -9,6 +9,7 @@
 #include "apps/options.h"
 #include "common/errors.h"
 #include "experiments/runner.h"
+#include "robot/leg_sets.h"
 #include "robot/morphology.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -17,11 +18,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (robot::RobotKind kind : robot::kRobotKinds) {
     const robot::Morphology& morph = robot::morphology(kind);
     try {
-      robot::parse_leg_list(morph, text);
+      robot::parse_leg_set(morph, text);
     } catch (const BadInput&) {
     }
     try {
-      apps::parse_periods(morph, text);
+      robot::parse_period_map(morph, text, robot::kDefaultPeriod);
     } catch (const BadInput&) {
     }
   }

@@ -15,13 +15,6 @@ namespace {
 constexpr int kDropBits = 64 - 53;
 constexpr double kTwoToMinus53 = 0x1.0p-53;
 
-std::string number(double value) {
-  std::string s = std::to_string(value);
-  s.erase(s.find_last_not_of('0') + 1);
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  return s;
-}
-
 // Legs among `working` whose period differs between the two combinations.
 std::size_t distance(const Periods& a, const Periods& b, const std::vector<std::size_t>& working) {
   return static_cast<std::size_t>(std::count_if(working.begin(), working.end(),
@@ -56,24 +49,17 @@ void require_pending(const AnnealingState& state) {
 }  // namespace
 
 void validate(const AnnealingParams& params) {
-  if (!(params.beta >= 0.0) || !std::isfinite(params.beta)) {
-    throw BadInput("beta must be a number >= 0, got " + number(params.beta));
-  }
-  if (!(params.threshold_deg > 0.0) || !std::isfinite(params.threshold_deg)) {
-    throw BadInput("threshold must be a number of degrees > 0, got " +
-                   number(params.threshold_deg));
-  }
-  if (params.max_trials < 1) {
-    throw BadInput("max trials must be at least 1, got " + std::to_string(params.max_trials));
-  }
-  if (params.period_set.empty()) throw BadInput("the period set is empty");
+  require_in("beta", params.beta, kBetaLimits);
+  require_in("threshold_deg", params.threshold_deg, kThresholdLimits);
+  require_in("max_trials", params.max_trials, kMaxTrialsLimits);
+  if (params.period_set.empty()) throw OptionError("period_set", "is empty");
   std::set<int> seen;
   for (int p : params.period_set) {
     if (p < neural::kMinPeriod || p > neural::kMaxPeriod) {
-      throw BadInput("period " + std::to_string(p) + " in the period set is outside 1-9");
+      throw OptionError("period_set", "holds period " + std::to_string(p) + ", outside 1-9");
     }
     if (!seen.insert(p).second) {
-      throw BadInput("period " + std::to_string(p) + " appears twice in the period set");
+      throw OptionError("period_set", "holds period " + std::to_string(p) + " twice");
     }
   }
 }

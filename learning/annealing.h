@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "common/limits.h"
+
 namespace multicpg::learning {
 
 // One period per leg, in morphology order (R1..Rn, L1..Ln).
@@ -20,6 +22,12 @@ inline constexpr double kDefaultThresholdDeg = 8.0;  // E_req, paper §4
 inline constexpr int kDefaultMaxTrials = 200;        // SPEC §6 cap
 inline constexpr int kStartPeriod = 4;               // C0 = all 4 (tripod), Table 2
 
+// Documented ranges (issue 9 item 4): beta far past the paper's greedy 10 (Fig. 14); a threshold
+// between a thousandth of a degree and a U-turn; a trial cap far past the paper's 200 (SPEC §6).
+inline constexpr Limits<double> kBetaLimits{0.0, 100.0};
+inline constexpr Limits<double> kThresholdLimits{0.001, 180.0};
+inline constexpr Limits<int> kMaxTrialsLimits{1, 100'000};
+
 // What the search is (immutable during a run).
 struct AnnealingParams {
   double beta = kDefaultBeta;                   // 0 = random search, 10 ~ greedy (paper Fig. 14)
@@ -28,8 +36,8 @@ struct AnnealingParams {
   std::vector<int> period_set{4, 5, 6, 8, 9};   // Table 2 step (2)
 };
 
-// Throws BadInput (one line) for beta < 0, threshold <= 0, max_trials < 1, or a period set that
-// is empty, repeats a value or holds a period outside 1-9.
+// Throws OptionError (key "beta", "threshold_deg", "max_trials", "period_set") for a value
+// outside its limits, or a period set that is empty, repeats a value or holds a period outside 1-9.
 void validate(const AnnealingParams& params);
 
 // Why a run stopped.

@@ -7,6 +7,9 @@
 
 #include "common/angles.h"
 #include "common/errors.h"
+#include "common/limits.h"
+#include "robot/leg_sets.h"
+#include "sim/course_json.h"
 
 namespace multicpg::learning {
 namespace {
@@ -114,12 +117,6 @@ Periods current_periods(Walker& walker) {
   return periods;
 }
 
-nlohmann::json periods_json(const robot::Morphology& morph, const Periods& periods) {
-  nlohmann::json out = nlohmann::json::object();
-  for (std::size_t i = 0; i < periods.size(); ++i) out[morph.legs[i].name] = periods[i];
-  return out;
-}
-
 }  // namespace
 
 namespace {
@@ -142,6 +139,34 @@ long locked_settle_steps(const neural::ControllerModel& model, const Periods& pe
 
 std::string_view to_string(Mode mode) {
   return mode == Mode::paper ? "paper" : "robust";
+}
+
+std::string_view to_string(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::converged:
+      return "converged";
+    case Outcome::not_converged:
+      return "not converged";
+    case Outcome::no_deviation:
+      return "no deviation";
+  }
+  return "?";
+}
+
+Outcome parse_outcome(std::string_view text) {
+  for (Outcome o : {Outcome::converged, Outcome::not_converged, Outcome::no_deviation}) {
+    if (text == to_string(o)) return o;
+  }
+  throw BadInput("unknown outcome '" + std::string(text) +
+                 "' (converged, not converged or no deviation)");
+}
+
+StopReason parse_stop_reason(std::string_view text) {
+  for (StopReason r : {StopReason::running, StopReason::below_threshold, StopReason::trial_cap,
+                       StopReason::space_exhausted}) {
+    if (text == to_string(r)) return r;
+  }
+  throw BadInput("unknown stop reason '" + std::string(text) + "'");
 }
 
 std::string_view to_string(Steering steering) {
@@ -177,53 +202,42 @@ std::vector<std::size_t> failing_legs(const CompensationOptions& options) {
 }
 
 void validate(const CompensationOptions& options, const robot::Morphology& morph) {
-  validate(options.annealing);
-  if (options.window_steps < 1) {
-    throw BadInput("window must be at least 1 step, got " + std::to_string(options.window_steps));
-  }
-  if (options.settle_steps && *options.settle_steps < 0) {
-    throw BadInput("settle steps must not be negative, got " +
-                   std::to_string(*options.settle_steps));
-  }
-  if (options.fail_step < 0) {
-    throw BadInput("fail step must not be negative, got " + std::to_string(options.fail_step));
-  }
-  if (options.detection_windows < 1) {
-    throw BadInput("detection windows must be at least 1, got " +
-                   std::to_string(options.detection_windows));
-  }
+  within("annealing", [&] { validate(options.annealing); });
+  require_in("window_steps", options.window_steps, kWindowStepsLimits);
+  if (options.settle_steps) require_in("settle_steps", *options.settle_steps, kSettleStepsLimits);
+  require_in("fail_step", options.fail_step, Limits<long>{0, sim::kMaxSteps});
+  require_in("detection_windows", options.detection_windows, kDetectionWindowsLimits);
+  require_in("hold_windows", options.hold_windows, kHoldWindowsLimits);
+  require_in("monitor_windows", options.monitor_windows, kMonitorWindowsLimits);
+  require_in("max_episodes", options.max_episodes, kMaxEpisodesLimits);
+  within("steering_params", [&] { validate(options.steering_params); });
   std::vector<bool> seen(morph.size(), false);
   for (std::size_t leg : options.disabled) {
     if (leg >= morph.size()) {
-      throw BadInput("the " + morph.name + " has no leg number " + std::to_string(leg));
+      throw OptionError("disabled",
+                        "the " + morph.name + " has no leg number " + std::to_string(leg));
     }
-    if (seen[leg]) throw BadInput("leg " + morph.legs[leg].name + " is disabled twice");
+    if (seen[leg]) throw OptionError("disabled", "names leg " + morph.legs[leg].name + " twice");
     seen[leg] = true;
   }
   if (options.disabled.size() == morph.size()) {
-    throw BadInput("every leg of the " + morph.name + " is disabled: there is nothing to learn");
+    throw OptionError("disabled",
+                      "disables every leg of the " + morph.name + ": there is nothing to learn");
   }
   if (!options.faults.empty() && !options.disabled.empty()) {
-    throw BadInput("give either a fault timeline or --disable, not both");
+    throw OptionError("faults", "give either a fault timeline or disabled legs, not both");
   }
-  sim::validate(morph, options.faults);
-  if (options.mode == Mode::paper && options.faults.size() > 1) {
-    throw BadInput("--mode paper takes one fault (the paper's experiment); use --mode robust");
+  try {
+    sim::validate(morph, options.faults);
+  } catch (const OptionError&) {
+    throw;
+  } catch (const BadInput& e) {
+    throw OptionError("faults", e.what());
   }
-  if (options.mode == Mode::paper && !options.faults.empty() && options.faults.front().recover) {
-    throw BadInput("--mode paper takes no recovery; use --mode robust");
+  if (options.mode == Mode::paper &&
+      (options.faults.size() > 1 || (!options.faults.empty() && options.faults.front().recover))) {
+    throw OptionError("faults", "paper mode takes one fault and no recovery; use robust mode");
   }
-  if (options.hold_windows < 1) {
-    throw BadInput("hold windows must be at least 1, got " + std::to_string(options.hold_windows));
-  }
-  if (options.monitor_windows < 1) {
-    throw BadInput("monitor windows must be at least 1, got " +
-                   std::to_string(options.monitor_windows));
-  }
-  if (options.max_episodes < 1) {
-    throw BadInput("max episodes must be at least 1, got " + std::to_string(options.max_episodes));
-  }
-  validate(options.steering_params);
 }
 
 namespace {
@@ -261,7 +275,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   result.final_deviation_deg = e;
   result.periods = current_periods(walker);
   if (!(e > params.threshold_deg)) {
-    result.status = "no deviation";
+    result.outcome = Outcome::no_deviation;
     result.steps_walked = walk.walked();
     return result;
   }
@@ -299,8 +313,8 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
     neural::set_periods(model, walker.controller(), state.accepted);
   }
 
-  result.converged = state.stop == StopReason::below_threshold;
-  result.status = result.converged ? "converged" : "not converged";
+  result.outcome =
+      state.stop == StopReason::below_threshold ? Outcome::converged : Outcome::not_converged;
   result.reason = state.stop;
   result.trials = state.trials;
   result.final_deviation_deg = state.e_ref;
@@ -311,7 +325,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   episode.detection_step = *result.detection_step;
   episode.detection_deg = result.initial_deviation_deg;
   episode.trials = result.trials;
-  episode.held = result.converged;
+  episode.held = result.converged();
   episode.reason = result.reason;
   episode.periods = result.periods;
   episode.final_deviation_deg = result.final_deviation_deg;
@@ -474,15 +488,13 @@ class RobustRun {
         std::all_of(result_.final_windows.begin(), result_.final_windows.end(),
                     [&](const sim::WindowMeasure& m) { return error(m) <= params_.threshold_deg; });
     if (result_.episodes.empty()) {
-      result_.status = held ? "no deviation" : "not converged";
-      result_.converged = false;
+      result_.outcome = held ? Outcome::no_deviation : Outcome::not_converged;
       if (!result_.final_windows.empty()) {
         result_.initial_deviation_deg = error(result_.final_windows.front());
       }
     } else {
       const Episode& last = result_.episodes.back();
-      result_.converged = last.held && held;
-      result_.status = result_.converged ? "converged" : "not converged";
+      result_.outcome = last.held && held ? Outcome::converged : Outcome::not_converged;
       result_.reason = last.reason;
     }
     double worst = 0.0;
@@ -508,18 +520,6 @@ LearningResult compensate(Walker& walker, const CompensationOptions& options) {
 
 namespace {
 
-nlohmann::json windows_json(const std::vector<sim::WindowMeasure>& windows) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const sim::WindowMeasure& m : windows) {
-    out.push_back({{"yaw_deg", m.yaw_deg},
-                   {"path_deg", m.path_deg},
-                   {"forward_m", m.forward_m},
-                   {"lateral_m", m.lateral_m},
-                   {"steering_effort", m.steering_effort}});
-  }
-  return out;
-}
-
 nlohmann::json episodes_json(const LearningResult& result, const robot::Morphology& morph) {
   nlohmann::json out = nlohmann::json::array();
   for (const Episode& e : result.episodes) {
@@ -530,7 +530,7 @@ nlohmann::json episodes_json(const LearningResult& result, const robot::Morpholo
                    {"interrupted", e.interrupted},
                    {"reason", e.reason ? nlohmann::json(std::string(to_string(*e.reason)))
                                        : nlohmann::json(nullptr)},
-                   {"periods", periods_json(morph, e.periods)},
+                   {"periods", robot::period_map_json(morph, e.periods)},
                    {"final_deviation_deg", e.final_deviation_deg}});
   }
   return out;
@@ -543,7 +543,7 @@ nlohmann::json to_json(const LearningResult& result, const robot::Morphology& mo
   nlohmann::json trace = nlohmann::json::array();
   for (const TrialRecord& t : result.trace) {
     trace.push_back({{"trial", t.trial},
-                     {"periods", periods_json(morph, t.periods)},
+                     {"periods", robot::period_map_json(morph, t.periods)},
                      {"deviation_deg", t.deviation_deg},
                      {"accepted", t.accepted},
                      {"acceptance_probability", t.acceptance_probability},
@@ -553,14 +553,14 @@ nlohmann::json to_json(const LearningResult& result, const robot::Morphology& mo
   }
   nlohmann::json disabled_names = nlohmann::json::array();
   for (std::size_t leg : disabled) disabled_names.push_back(morph.legs.at(leg).name);
-  return {{"converged", result.converged},
-          {"status", result.status},
+  return {{"converged", result.converged()},
+          {"status", to_string(result.outcome)},
           {"reason", result.reason ? nlohmann::json(std::string(to_string(*result.reason)))
                                    : nlohmann::json(nullptr)},
           {"trials", result.trials},
           {"initial_deviation_deg", result.initial_deviation_deg},
           {"final_deviation_deg", result.final_deviation_deg},
-          {"periods", periods_json(morph, result.periods)},
+          {"periods", robot::period_map_json(morph, result.periods)},
           {"disabled", disabled_names},
           {"steps_walked", result.steps_walked},
           {"detection_step", result.detection_step ? nlohmann::json(*result.detection_step)
@@ -568,40 +568,58 @@ nlohmann::json to_json(const LearningResult& result, const robot::Morphology& mo
           {"settle_steps", result.settle_steps},
           {"mode", to_string(result.mode)},
           {"episodes", episodes_json(result, morph)},
-          {"final_windows", windows_json(result.final_windows)},
+          {"final_windows", nlohmann::json(result.final_windows)},
           {"steering_effort", result.steering_effort},
           {"trace", trace}};
 }
 
-nlohmann::json to_json(const CompensationOptions& o, const robot::Morphology& morph) {
-  nlohmann::json faults = nlohmann::json::array();
-  for (const sim::Fault& f : fault_timeline(o)) {
-    nlohmann::json legs = nlohmann::json::array();
-    for (std::size_t leg : f.legs) legs.push_back(morph.legs.at(leg).name);
-    faults.push_back({{"step", f.step}, {"legs", legs}, {"recover", f.recover}});
+namespace {
+
+std::optional<StopReason> reason_from_json(const nlohmann::json& j) {
+  if (j.is_null()) return std::nullopt;
+  return parse_stop_reason(j.get<std::string>());
+}
+
+}  // namespace
+
+LearningResult result_from_json(const nlohmann::json& j, const robot::Morphology& morph) {
+  try {
+    LearningResult r;
+    r.outcome = parse_outcome(j.at("status").get<std::string>());
+    if (j.at("converged").get<bool>() != r.converged()) {
+      throw BadInput("converged and status disagree");
+    }
+    r.reason = reason_from_json(j.at("reason"));
+    r.trials = j.at("trials").get<int>();
+    r.initial_deviation_deg = j.at("initial_deviation_deg").get<double>();
+    r.final_deviation_deg = j.at("final_deviation_deg").get<double>();
+    r.periods = robot::period_map_from_json(morph, j.at("periods"));
+    r.steps_walked = j.at("steps_walked").get<long>();
+    if (!j.at("detection_step").is_null()) r.detection_step = j.at("detection_step").get<long>();
+    r.settle_steps = j.at("settle_steps").get<long>();
+    r.mode = parse_mode(j.at("mode").get<std::string>());
+    for (const nlohmann::json& e : j.at("episodes")) {
+      r.episodes.push_back(Episode{
+          e.at("detection_step").get<long>(), e.at("detection_deg").get<double>(),
+          e.at("trials").get<int>(), e.at("held").get<bool>(), reason_from_json(e.at("reason")),
+          e.at("interrupted").get<bool>(), robot::period_map_from_json(morph, e.at("periods")),
+          e.at("final_deviation_deg").get<double>()});
+    }
+    r.final_windows = j.at("final_windows").get<std::vector<sim::WindowMeasure>>();
+    r.steering_effort = j.at("steering_effort").get<double>();
+    for (const nlohmann::json& t : j.at("trace")) {
+      r.trace.push_back(
+          TrialRecord{t.at("trial").get<int>(), robot::period_map_from_json(morph, t.at("periods")),
+                      t.at("deviation_deg").get<double>(), t.at("accepted").get<bool>(),
+                      t.at("acceptance_probability").get<double>(), t.at("legs_changed").get<int>(),
+                      t.at("redraws").get<int>()});
+    }
+    return r;
+  } catch (const nlohmann::json::exception& e) {
+    throw BadInput(std::string("not a learning result: ") + e.what());
+  } catch (const BadInput& e) {
+    throw BadInput(std::string("not a learning result: ") + e.what());
   }
-  const SteeringParams& sp = o.steering_params;
-  return {{"mode", to_string(o.mode)},
-          {"beta", o.annealing.beta},
-          {"threshold_deg", o.annealing.threshold_deg},
-          {"max_trials", o.annealing.max_trials},
-          {"period_set", o.annealing.period_set},
-          {"faults", faults},
-          {"window_steps", o.window_steps},
-          {"settle_steps", o.settle_steps ? nlohmann::json(*o.settle_steps) : nlohmann::json()},
-          {"detection_windows", o.detection_windows},
-          {"hold_windows", o.hold_windows},
-          {"monitor_windows", o.monitor_windows},
-          {"max_episodes", o.max_episodes},
-          {"learn_periods", o.learn_periods},
-          {"steering", to_string(o.steering)},
-          {"steering_params",
-           {{"heading_gain", sp.heading_gain},
-            {"lateral_gain", sp.lateral_gain},
-            {"integral_gain", sp.integral_gain},
-            {"max_heading_offset_deg", sp.max_heading_offset_deg},
-            {"max_effort", sp.max_effort}}},
-          {"seed", o.seed}};
 }
 
 }  // namespace multicpg::learning

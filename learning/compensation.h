@@ -79,6 +79,15 @@ inline constexpr long kDefaultMonitorWindows = 6;
 // Robust mode: learning episodes at most in one run (each restarts learning after a deviation).
 inline constexpr int kDefaultMaxEpisodes = 10;
 
+// Documented ranges (issue 9 item 4). A window or settle of up to 10^5 steps (an hour at 27 Hz);
+// counts of windows and episodes far past the defaults above.
+inline constexpr Limits<long> kWindowStepsLimits{1, 100'000};
+inline constexpr Limits<long> kSettleStepsLimits{0, 100'000};
+inline constexpr Limits<long> kDetectionWindowsLimits{1, 1000};
+inline constexpr Limits<int> kHoldWindowsLimits{1, 100};
+inline constexpr Limits<long> kMonitorWindowsLimits{1, 1000};
+inline constexpr Limits<int> kMaxEpisodesLimits{1, 1000};
+
 // How a compensation run is made.
 struct CompensationOptions {
   Mode mode = Mode::robust;
@@ -108,9 +117,10 @@ sim::FaultTimeline fault_timeline(const CompensationOptions& options);
 // Every leg that fails at some point, in leg order (for labels).
 std::vector<std::size_t> failing_legs(const CompensationOptions& options);
 
-// Throws BadInput (one line, naming legs) for invalid annealing params, window < 1,
-// settle < 0, fail step < 0, detection windows < 1, an unknown or repeated leg, every leg
-// disabled, a bad timeline (sim::validate), or a paper-mode run with more than one fault.
+// Throws OptionError (key "annealing.beta", "window_steps", "disabled", ...; one line, naming
+// legs) for a value outside its limits, an unknown or repeated leg, every leg disabled, a bad
+// timeline (sim::validate), or a paper-mode run with more than one fault. Paper mode ignores the
+// robust-mode options (hold, monitor and max episodes, learn_periods, steering).
 void validate(const CompensationOptions& options, const robot::Morphology& morph);
 
 // One learning episode: from a detecting window to the end of its annealing.
@@ -125,9 +135,17 @@ struct Episode {
   double final_deviation_deg = 0.0;
 };
 
+// How a run ended: converged (a combination held under the threshold), not converged (the trial
+// cap, the search space or the episodes ran out) or no deviation (no window ever exceeded the
+// threshold, so learning never started).
+enum class Outcome { converged, not_converged, no_deviation };
+std::string_view to_string(Outcome outcome);   // "converged", "not converged", "no deviation"
+Outcome parse_outcome(std::string_view text);  // throws BadInput naming the choices
+StopReason parse_stop_reason(std::string_view text);  // to_string(StopReason)'s names
+
 struct LearningResult {
-  bool converged = false;
-  std::string status;                // "converged", "not converged" or "no deviation"
+  Outcome outcome = Outcome::not_converged;
+  bool converged() const { return outcome == Outcome::converged; }
   std::optional<StopReason> reason;  // why annealing stopped; empty when it never started
   int trials = 0;
   double initial_deviation_deg = 0.0;  // E of C0: the detecting window (or the last window)
@@ -167,7 +185,8 @@ LearningResult compensate(Walker& walker, const CompensationOptions& options);
 nlohmann::json to_json(const LearningResult& result, const robot::Morphology& morph,
                        const std::vector<std::size_t>& disabled);
 
-// The options as recorded with a result (every field that changes it).
-nlohmann::json to_json(const CompensationOptions& options, const robot::Morphology& morph);
+// The result to_json wrote (without the steering state, which it does not record). Throws
+// BadInput naming the field when `j` is not such a record for `morph`.
+LearningResult result_from_json(const nlohmann::json& j, const robot::Morphology& morph);
 
 }  // namespace multicpg::learning

@@ -24,15 +24,11 @@ double input_for_amplitude(double amplitude) {
 }  // namespace
 
 void validate(const SteeringParams& p) {
-  for (double g : {p.heading_gain, p.lateral_gain, p.integral_gain}) {
-    if (!std::isfinite(g) || g < 0.0) throw BadInput("steering gains must be finite and >= 0");
-  }
-  if (!(p.max_heading_offset_deg > 0.0 && p.max_heading_offset_deg <= 90.0)) {
-    throw BadInput("the steering heading offset must be in (0, 90] deg");
-  }
-  if (!(p.max_effort > 0.0 && p.max_effort <= 1.0)) {
-    throw BadInput("the steering max effort must be in (0, 1]");
-  }
+  require_in("heading_gain", p.heading_gain, kSteeringGainLimits);
+  require_in("lateral_gain", p.lateral_gain, kSteeringGainLimits);
+  require_in("integral_gain", p.integral_gain, kSteeringGainLimits);
+  require_in("max_heading_offset_deg", p.max_heading_offset_deg, kHeadingOffsetLimits);
+  require_in("max_effort", p.max_effort, kMaxEffortLimits);
 }
 
 SteeringState start_steering(const sim::Pose2& course) {

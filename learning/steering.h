@@ -11,6 +11,7 @@
 // a steering change reaches the legs only through the delay lines (up to 126 steps).
 #pragma once
 
+#include "common/limits.h"
 #include "neural/drive.h"
 #include "sim/deviation.h"
 
@@ -27,8 +28,13 @@ struct SteeringParams {
   double max_effort = 0.75;
 };
 
-// Throws BadInput (one line) for a negative or non-finite gain, an offset outside (0, 90] or a
-// max effort outside (0, 1].
+// Documented ranges: gains up to 1000 (a full cut at a thousandth of a degree), a heading offset
+// up to a right angle, an effort share of a side's swing.
+inline constexpr Limits<double> kSteeringGainLimits{0.0, 1000.0};
+inline constexpr Limits<double> kHeadingOffsetLimits{0.1, 90.0};
+inline constexpr Limits<double> kMaxEffortLimits{0.01, 1.0};
+
+// Throws OptionError (key "heading_gain", ...) for a value outside its limits.
 void validate(const SteeringParams& params);
 
 // The line to keep: a point on it and its heading, set when the reflex starts (where the robot

@@ -43,6 +43,17 @@ struct ControllerModel {
   std::size_t size() const { return legs.size(); }
 };
 
+// Far beyond any weight, bias or constant of the paper (the largest is |w11| = 22, SPEC §1), yet
+// small enough that no neuron input overflows.
+inline constexpr double kMaxParamMagnitude = 1000.0;
+// Longest delay line step of tau or tau_l (the paper's are 18 and 90, SPEC §3): a delay line
+// holds a leg's whole history over 6 * tau + tau_l steps, so this keeps it small.
+inline constexpr int kMaxDelayStep = 1000;
+
+// Throws OptionError (key "cpg.w11", ...) for a non-finite parameter, one beyond
+// kMaxParamMagnitude, or a delay step outside 0..kMaxDelayStep.
+void validate(const ControllerParams& params);
+
 ControllerModel make_controller_model(robot::RobotKind kind, const ControllerParams& params = {});
 
 // What one leg's circuit is doing.

@@ -26,6 +26,7 @@
 #include "learning/compensation.h"
 #include "report/film.h"
 #include "report/render.h"
+#include "robot/leg_sets.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -98,7 +99,7 @@ std::string periods_text(const robot::Morphology& morph, const py::object& perio
 }
 
 std::vector<int> parse_periods(const robot::Morphology& morph, const py::object& periods) {
-  return apps::parse_periods(morph, periods_text(morph, periods));
+  return robot::parse_period_map(morph, periods_text(morph, periods), robot::kDefaultPeriod);
 }
 
 // A robot and its simulation model, shared read-only by every Simulation of it.
@@ -115,7 +116,11 @@ std::shared_ptr<Robot> make_robot(const std::string& name, bool tunnel, double c
                                   std::optional<double> servo_gain) {
   auto r = std::make_shared<Robot>();
   r->kind = robot::parse_robot(name);
-  r->options = apps::sim_options({control_dt, physics_dt, servo_gain});
+  sim::SimOptions options;
+  options.control_dt = control_dt;
+  options.physics_dt = physics_dt.value_or(0.0);
+  options.servo_gain = servo_gain.value_or(0.0);
+  r->options = apps::sim_options(options);
   r->options.scene.tunnel = tunnel;
   r->model = std::make_shared<const sim::SimModel>(sim::make_sim_model(r->kind, r->options));
   return r;
@@ -200,7 +205,7 @@ class Simulation {
 
   void set_failed(const py::object& legs, bool failed) {
     const std::lock_guard<std::mutex> lock(mutex_);
-    const std::vector<std::size_t> list = robot::parse_leg_list(robot_->morph(), leg_text(legs));
+    const std::vector<std::size_t> list = robot::parse_leg_set(robot_->morph(), leg_text(legs));
     if (list.empty()) throw BadInput("name at least one leg, e.g. \"R1\" or [\"R1\", \"R3\"]");
     stepper_->set_failed(list, failed);
   }
@@ -387,9 +392,7 @@ class TrialCallback final : public sim::Observer {
                 const sim::Event& e) override {
     if (e.kind != sim::EventKind::trial_end || callback_.is_none()) return;
     const py::gil_scoped_acquire acquire;
-    py::dict periods;
-    for (std::size_t i = 0; i < e.periods.size(); ++i)
-      periods[py::str(morph_.legs[i].name)] = e.periods[i];
+    const py::object periods = to_python(robot::period_map_json(morph_, e.periods));
     callback_(py::dict(py::arg("episode") = e.episode, py::arg("trial") = e.trial,
                        py::arg("step") = e.step, py::arg("periods") = periods,
                        py::arg("deviation_deg") = e.deviation_deg,
@@ -497,7 +500,7 @@ class Annealer {
     params_.threshold_deg = threshold;
     params_.max_trials = max_trials;
     state_ = learning::start_annealing(
-        params_, periods, robot::parse_leg_list(morph_, leg_text(disabled)), e_ref, seed);
+        params_, periods, robot::parse_leg_set(morph_, leg_text(disabled)), e_ref, seed);
   }
 
   std::optional<std::vector<int>> propose() {
@@ -722,18 +725,22 @@ PYBIND11_MODULE(_multicpg, m) {
                                  int hold_windows, long monitor_windows, bool period_learning,
                                  double beta, double threshold, long window,
                                  std::optional<long> settle, int max_trials, std::uint64_t seed) {
+    // Python's keyword arguments, one per option (the CLI binds its flags the same way).
     multicpg::apps::LearningFlags f;
-    f.mode = mode;
-    f.steering = steering;
-    f.hold_windows = hold_windows;
-    f.monitor_windows = monitor_windows;
-    f.no_period_learning = !period_learning;
-    f.beta = beta;
-    f.threshold = threshold;
-    f.window = window;
-    f.settle = settle;
-    f.max_trials = max_trials;
-    f.seed = seed;
+    multicpg::learning::CompensationOptions& o = f.options;
+    o.mode = multicpg::learning::parse_mode(mode);
+    o.steering = multicpg::learning::parse_steering(steering);
+    f.robust_only = steering != "reflex" || hold_windows != o.hold_windows ||
+                    monitor_windows != o.monitor_windows || !period_learning;
+    o.hold_windows = hold_windows;
+    o.monitor_windows = monitor_windows;
+    o.learn_periods = period_learning;
+    o.annealing.beta = beta;
+    o.annealing.threshold_deg = threshold;
+    o.window_steps = window;
+    o.settle_steps = settle;
+    o.annealing.max_trials = max_trials;
+    o.seed = seed;
     return f;
   };
 
@@ -791,7 +798,9 @@ PYBIND11_MODULE(_multicpg, m) {
                            threshold, window, settle, max_trials, seed);
         request.max_steps = max_steps;
         request.video = video;
-        request.sim = {control_dt, physics_dt, servo_gain};
+        request.sim.control_dt = control_dt;
+        request.sim.physics_dt = physics_dt.value_or(0.0);
+        request.sim.servo_gain = servo_gain.value_or(0.0);
         return mp::tunnel(request, observer);
       },
       py::kw_only(), py::arg("disable") = py::none(), py::arg("periods") = py::none(),

@@ -9,6 +9,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::report {
 namespace {
@@ -105,20 +106,21 @@ FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
   FramePose out;
   const mjModel* m = model.mj.get();
   out.qpos.assign(state.data->qpos, state.data->qpos + m->nq);
-  std::ostringstream periods;
-  std::string disabled;
+  std::vector<int> periods;
+  robot::LegSet disabled;
   const robot::Morphology& morph = model.controller.morphology;
   for (std::size_t i = 0; i < morph.size(); ++i) {
     const neural::LegState& leg = state.controller.legs[i];
-    periods << (i ? " " : "") << morph.legs[i].name << "=" << leg.cpg.period;
+    periods.push_back(leg.cpg.period);
     if (leg.disabled) {
       out.red.push_back(morph.legs[i].name + "_");
-      disabled += (disabled.empty() ? "" : " ") + morph.legs[i].name;
+      disabled.push_back(i);
     }
   }
   out.overlay.titles = "Step\nTime\nPeriods\nDisabled";
   out.overlay.values = std::to_string(state.step) + "\n" + fixed(state.data->time, 1) + " s\n" +
-                       periods.str() + "\n" + (disabled.empty() ? "none" : disabled);
+                       robot::period_map_text(morph, periods) + "\n" +
+                       (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled));
   if (!caption.empty()) {
     out.overlay.titles += "\n";
     out.overlay.values += "\n" + caption;
@@ -184,10 +186,10 @@ void FilmObserver::on_event(const sim::SimModel& model, const sim::SimState& /*s
   const robot::Morphology& morph = model.controller.morphology;
   switch (e.kind) {
     case sim::EventKind::fault:
-      caption_ = robot::leg_list_name(morph, e.legs) + " failed";
+      caption_ = robot::leg_set_name(morph, e.legs) + " failed";
       break;
     case sim::EventKind::recovery:
-      caption_ = robot::leg_list_name(morph, e.legs) + " works again";
+      caption_ = robot::leg_set_name(morph, e.legs) + " works again";
       break;
     case sim::EventKind::detection:
       caption_ = fmt_deviation("deviation ", e.deviation_deg) + ": learning starts";

@@ -28,6 +28,9 @@ enum class FilmFormat { video, picture };
 // .mp4 -> video, .png -> picture; anything else throws BadInput naming the allowed types.
 FilmFormat film_format(const std::filesystem::path& out);
 
+// Controller steps per frame: real time up to 1000 times faster (a 10^4-step run in 10 frames).
+inline constexpr Limits<int> kFilmSpeedLimits{1, 1000};
+
 struct FilmSpec {
   std::filesystem::path out;  // .mp4 or .png
   int width = kDefaultFrameWidth;

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "experiments/scenarios.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::report {
 
@@ -16,7 +17,7 @@ FigureFiles draw_landscape(const experiments::Landscape& landscape,
   std::vector<LandscapePoint> points;
   for (std::size_t i = 0; i < landscape.combinations.size(); ++i) {
     const experiments::CombinationMeasure& m = landscape.combinations[i];
-    LandscapePoint p{experiments::working_periods_text(morph, m.periods, spec.disabled),
+    LandscapePoint p{robot::period_map_text(morph, m.periods, spec.disabled),
                      {},
                      m.worst_deg,
                      m.holds,
@@ -28,8 +29,7 @@ FigureFiles draw_landscape(const experiments::Landscape& landscape,
   }
   const std::string title =
       morph.name + ", " +
-      (spec.disabled.empty() ? std::string("no leg")
-                             : experiments::scenario_name(morph, spec.disabled)) +
+      (spec.disabled.empty() ? std::string("no leg") : robot::leg_set_name(morph, spec.disabled)) +
       " disabled";
   return plot_landscape(points, title, spec.threshold_deg, out_dir);
 }

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/limits.h"
 #include "report/gl_context.h"
 #include "report/image.h"
 
@@ -17,6 +18,9 @@ namespace multicpg::report {
 
 inline constexpr int kDefaultFrameWidth = 640;
 inline constexpr int kDefaultFrameHeight = 480;
+// Frame sides a user may ask for: a thumbnail to 4K's 4096 px, which every GL driver's
+// offscreen buffer holds.
+inline constexpr Limits<int> kFrameSideLimits{16, 4096};
 
 // Where the camera looks from. With a track body the camera follows that body's subtree centre
 // of mass smoothly (MuJoCo's tracking camera); without one it looks at `lookat`.

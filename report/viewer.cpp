@@ -16,6 +16,7 @@
 #include "common/errors.h"
 #include "report/disabled_legs.h"
 #include "report/render.h"
+#include "robot/leg_sets.h"
 #include "sim/walk.h"
 
 namespace multicpg::report {
@@ -254,7 +255,7 @@ class Viewer {
              << state_.controller.legs[i].cpg.period;
     }
     values << "\n"
-           << (disabled.empty() ? "none" : robot::leg_list_name(morph, disabled)) << "\n"
+           << (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled)) << "\n"
            << (synchronised_ ? "synchronised" : "free") << "\n"
            << (paused_ ? "paused" : "running");
     return values.str();

@@ -73,33 +73,4 @@ std::size_t leg_index(const Morphology& morph, std::string_view name) {
                  ")");
 }
 
-std::vector<std::size_t> parse_leg_list(const Morphology& morph, std::string_view list) {
-  std::vector<std::size_t> out;
-  std::size_t start = 0;
-  while (start <= list.size() && !list.empty()) {
-    std::size_t comma = list.find(',', start);
-    if (comma == std::string_view::npos) comma = list.size();
-    std::string_view item = list.substr(start, comma - start);
-    if (item.empty()) throw BadInput("empty leg name in list '" + std::string(list) + "'");
-    const std::size_t leg = leg_index(morph, item);
-    if (std::find(out.begin(), out.end(), leg) != out.end()) {
-      throw BadInput("leg " + std::string(item) + " is listed twice in '" + std::string(list) +
-                     "'");
-    }
-    out.push_back(leg);
-    start = comma + 1;
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-std::string leg_list_name(const Morphology& morph, const std::vector<std::size_t>& legs) {
-  std::string out;
-  for (std::size_t i : legs) {
-    if (!out.empty()) out += ',';
-    out += morph.legs[i].name;
-  }
-  return out;
-}
-
 }  // namespace multicpg::robot

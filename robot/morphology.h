@@ -49,9 +49,5 @@ std::string_view to_string(Joint joint);
 // Parsers for user input; each throws BadInput with one line naming what is wrong.
 RobotKind parse_robot(std::string_view name);
 std::size_t leg_index(const Morphology& morph, std::string_view name);
-// "R1,R3" -> sorted indices; empty string -> empty list. A leg named twice is BadInput.
-std::vector<std::size_t> parse_leg_list(const Morphology& morph, std::string_view list);
-// "R1,L2" from indices, in leg order.
-std::string leg_list_name(const Morphology& morph, const std::vector<std::size_t>& legs);
 
 }  // namespace multicpg::robot

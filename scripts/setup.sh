@@ -1,9 +1,20 @@
 #!/usr/bin/env bash
 # Installs every Debian package in scripts/debian-packages.txt and builds multicpg into build/.
-# Usage: scripts/setup.sh            (as root on Debian 12)
+# --cluster also installs the Slurm packages of scripts/cluster-packages.txt (for a cluster node,
+# and for tests/slurm_test.sh, which brings up a one-node Slurm with scripts/slurm-local.sh).
+# Usage: scripts/setup.sh [--cluster]   (as root on Debian 12)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-mapfile -t packages < <(grep -v '^\s*#' "$root/scripts/debian-packages.txt" | grep -v '^\s*$')
+lists=("$root/scripts/debian-packages.txt")
+case "${1-}" in
+  "") ;;
+  --cluster) lists+=("$root/scripts/cluster-packages.txt") ;;
+  *)
+    echo "setup: unknown option '$1' (usage: scripts/setup.sh [--cluster])" >&2
+    exit 2
+    ;;
+esac
+mapfile -t packages < <(cat "${lists[@]}" | grep -v '^\s*#' | grep -v '^\s*$')
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

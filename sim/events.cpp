@@ -30,9 +30,9 @@ void validate(const robot::Morphology& morph, const FaultTimeline& faults) {
   long previous = 0;
   for (const Fault& f : faults) {
     const char* what = f.recover ? "--recover" : "--fault";
-    if (f.step < 0) {
-      throw BadInput(std::string(what) + " step must not be negative, got " +
-                     std::to_string(f.step));
+    if (f.step < 0 || f.step > kMaxSteps) {
+      throw BadInput(std::string(what) + " step must be in 0.." + std::to_string(kMaxSteps) +
+                     ", got " + std::to_string(f.step));
     }
     if (f.step < previous) throw BadInput("faults must be listed in step order");
     previous = f.step;

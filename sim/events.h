@@ -10,6 +10,10 @@
 
 namespace multicpg::sim {
 
+// Largest number of steps of any run, settle and warm-up included: 10^8 steps are 43 days of
+// walking at 27 Hz; past it step counts would overflow their sums.
+inline constexpr long kMaxSteps = 100'000'000;
+
 // Legs that fail (or recover) before controller step `step` of a run (SPEC §4: any step).
 struct Fault {
   long step = 0;

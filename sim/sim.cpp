@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "common/errors.h"
+#include "common/limits.h"
 #include "robot/joint_map.h"
 
 namespace multicpg::sim {
@@ -214,28 +215,42 @@ double default_physics_dt(double control_dt) {
 }
 
 int physics_substeps(double control_dt, double physics_dt) {
-  if (!(control_dt > 0.0)) throw BadInput("--control-dt must be positive");
-  if (!(physics_dt > 0.0)) throw BadInput("--physics-dt must be positive");
+  if (!(control_dt > 0.0)) throw OptionError("control_dt", "must be positive");
+  if (!(physics_dt > 0.0)) throw OptionError("physics_dt", "must be positive");
   const double ratio = control_dt / physics_dt;
   const double whole = std::round(ratio);
   if (!(whole <= static_cast<double>(kMaxSubsteps))) {
     std::ostringstream msg;
-    msg << "--control-dt " << control_dt << " / --physics-dt " << physics_dt << " = " << ratio
-        << " physics steps per control step; at most " << kMaxSubsteps;
-    throw BadInput(msg.str());
+    msg << "gives " << ratio << " physics steps per control step of " << control_dt
+        << " s; at most " << kMaxSubsteps;
+    throw OptionError("physics_dt", msg.str());
   }
   if (whole < 1.0 || std::abs(ratio - whole) > kStepRatioTolerance * ratio) {
     std::ostringstream msg;
-    msg << "--control-dt " << control_dt << " is not a whole multiple of --physics-dt "
-        << physics_dt << " (ratio " << ratio << ")";
-    throw BadInput(msg.str());
+    msg << "must divide the control step " << control_dt << " s a whole number of times, got "
+        << physics_dt << " s (ratio " << ratio << ")";
+    throw OptionError("physics_dt", msg.str());
   }
   return static_cast<int>(whole);
 }
 
+void validate(const SimOptions& options) {
+  require_in("control_dt", options.control_dt, kControlDtLimits);
+  require_in("physics_dt", options.physics_dt, kPhysicsDtLimits);
+  if (options.physics_dt != 0.0 && options.physics_dt < kMinPhysicsDt) {
+    throw OptionError("physics_dt", fmt::format("must be 0 (default) or at least {}, got {}",
+                                                kMinPhysicsDt, options.physics_dt));
+  }
+  require_in("servo_gain", options.servo_gain, kServoGainLimits);
+  require_in("scene.tunnel_length", options.scene.tunnel_length, kTunnelLengthLimits);
+  require_in("scene.tunnel_width", options.scene.tunnel_width, kTunnelWidthLimits);
+  within("controller", [&] { neural::validate(options.controller); });
+  physics_substeps(options.control_dt, resolved_physics_dt(options));
+}
+
 std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
+  validate(options);
   const double physics_dt = resolved_physics_dt(options);
-  physics_substeps(options.control_dt, physics_dt);
   const neural::ControllerModel controller =
       neural::make_controller_model(kind, options.controller);
   return robot::make_mjcf(robot::robot_body(kind),
@@ -252,6 +267,7 @@ void install_mujoco_handlers() {
 
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   install_mujoco_handlers();
+  validate(options);
   SimModel model{kind,
                  &robot::robot_body(kind),
                  neural::make_controller_model(kind, options.controller),
@@ -265,7 +281,6 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
                  {},
                  {}};
   model.substeps = physics_substeps(model.control_dt, model.physics_dt);
-  if (options.servo_gain < 0.0) throw BadInput("--servo-gain must not be negative");
   model.start_pose = start_pose(model.controller);
   model.xml =
       robot::make_mjcf(*model.body, mjcf_options(options, model.physics_dt, model.start_pose));

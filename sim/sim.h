@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/angles.h"
+#include "common/limits.h"
 #include "neural/controller.h"
 #include "robot/body.h"
 #include "robot/mjcf.h"
@@ -44,6 +45,17 @@ inline constexpr int kMaxSubsteps = 1'000'000;
 // Physics steps per controller step. Throws BadInput unless both steps are positive and
 // control_dt / physics_dt is a whole number within kStepRatioTolerance, at most kMaxSubsteps.
 int physics_substeps(double control_dt, double physics_dt);
+
+// Documented ranges (issue 9 item 4). The controller step: 0.1 ms to 1 s around the paper's
+// 37 ms; the physics step: down to 1 us (0 = default); servo gain up to 10^4 1/s (0 = default),
+// past which a servo reaches its target within one 5 ms physics step anyway.
+inline constexpr Limits<double> kControlDtLimits{1e-4, 1.0};
+inline constexpr Limits<double> kPhysicsDtLimits{0.0, 0.1};
+inline constexpr double kMinPhysicsDt = 1e-6;
+inline constexpr Limits<double> kServoGainLimits{0.0, 1e4};
+// The tunnel of the paper is 3 m x 1.2 m (paper §4); any other stays within a room's size.
+inline constexpr Limits<double> kTunnelLengthLimits{0.1, 100.0};
+inline constexpr Limits<double> kTunnelWidthLimits{0.1, 10.0};
 
 struct SimOptions {
   double control_dt = kDefaultControlDt;  // s
@@ -94,6 +106,11 @@ struct SimModel {
   int yaw_sensor = -1;              // sensordata address of the front trunk's quaternion
   int start_key = -1;
 };
+
+// Throws OptionError (key "control_dt", "controller.cpg.w11", ...) for a value outside its
+// range, a physics step below kMinPhysicsDt or one that does not divide the control step
+// (physics_substeps).
+void validate(const SimOptions& options);
 
 // Compiles MJCF text (through MuJoCo's in-memory file system). Throws RuntimeFailure if MuJoCo
 // rejects it.

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/limits.h"
 #include "sim/deviation.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
@@ -15,9 +16,10 @@ namespace multicpg::sim {
 
 // SPEC §6: deviation is measured over windows of 400 controller steps.
 inline constexpr long kDefaultWindow = 400;
-// Largest number of steps of any run, settle and warm-up included: 10^8 steps are 43 days of
-// walking at 27 Hz; past it step counts would overflow their sums.
-inline constexpr long kMaxSteps = 100'000'000;
+
+// Documented ranges of step counts: a run of at least one step, settles and warm-ups of none.
+inline constexpr Limits<long> kRunStepsLimits{1, kMaxSteps};
+inline constexpr Limits<long> kStepLimits{0, kMaxSteps};
 
 // Step numbers count controller steps from the start of the run (after the warm-up).
 struct WalkSpec {

@@ -80,8 +80,8 @@ TEST(CliCpg, WritesColumnsAndReportsOrbits) {
 }
 
 TEST(CliCpg, BadInput) {
-  expect_bad_input("cpg --period 0", "1-9");
-  expect_bad_input("cpg --period 10", "1-9");
+  expect_bad_input("cpg --period 0", "1..9");
+  expect_bad_input("cpg --period 10", "1..9");
   expect_bad_input("cpg --period 4 --client-period 11", "--client-period");
   expect_bad_input("cpg --steps 0", "--steps");
   expect_bad_input("cpg --sync maybe", "--sync");

@@ -63,7 +63,7 @@ TEST(CliLearn, BadInput) {
   expect_bad_input("learn --disable R1 --beta -1", "beta");
   expect_bad_input("learn --disable R1 --threshold 0", "threshold");
   expect_bad_input("learn --disable R1 --window 0", "window");
-  expect_bad_input("learn --disable R1 --max-trials 0", "max trials");
+  expect_bad_input("learn --disable R1 --max-trials 0", "--max-trials");
   expect_bad_input("learn --disable R1,R2,R3,L1,L2,L3", "every leg");
   expect_bad_input("learn --disable R9", "R9");
   expect_bad_input("learn --robot quadruped --disable R3", "R3");
@@ -83,9 +83,9 @@ TEST(CliLearn, BadInput) {
   expect_bad_input("learn --fault R1@12x", "--fault");
   expect_bad_input("learn --fault R1", "LEGS@STEP");
   expect_bad_input("learn --fault @400", "LEGS@STEP");
-  expect_bad_input("learn --fault R1@0 --fault R2@0 --mode paper", "--mode paper");
-  expect_bad_input("learn --disable R1 --hold-windows 0", "hold windows");
-  expect_bad_input("learn --disable R1 --monitor-windows 0", "monitor windows");
+  expect_bad_input("learn --fault R1@0 --fault R2@0 --mode paper", "paper mode");
+  expect_bad_input("learn --disable R1 --hold-windows 0", "--hold-windows");
+  expect_bad_input("learn --disable R1 --monitor-windows 0", "--monitor-windows");
 }
 
 // Issue 8: --mode paper is the paper's algorithm as it was before robust mode existed. The

@@ -35,8 +35,8 @@ TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
   const CompensationOptions o = options_for({0}, 1);
   const LearningResult r = compensate(walker, o);
 
-  ASSERT_TRUE(r.converged);
-  EXPECT_EQ(r.status, "converged");
+  ASSERT_TRUE(r.converged());
+  EXPECT_EQ(r.outcome, learning::Outcome::converged);
   EXPECT_EQ(r.reason, StopReason::below_threshold);
   EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeWalker::kGainDegPerStep * kDefaultWindowSteps,
               1e-9);
@@ -77,8 +77,8 @@ TEST(Compensation, HealthyRobotNeedsNoCompensation) {
   CompensationOptions o = options_for({}, 1);
   o.settle_steps = 10;
   const LearningResult r = compensate(walker, o);
-  EXPECT_FALSE(r.converged);
-  EXPECT_EQ(r.status, "no deviation");
+  EXPECT_FALSE(r.converged());
+  EXPECT_EQ(r.outcome, learning::Outcome::no_deviation);
   EXPECT_FALSE(r.reason.has_value());
   EXPECT_FALSE(r.detection_step.has_value());
   EXPECT_EQ(r.trials, 0);
@@ -96,7 +96,7 @@ TEST(Compensation, LateFailureIsDetectedAfterIt) {
   // [800,1200) holds 200 disabled steps: 19 deg > 8, detected at its end.
   EXPECT_EQ(*r.detection_step, 1200);
   EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeWalker::kGainDegPerStep * 200, 1e-9);
-  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.converged());
 }
 
 TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
@@ -106,8 +106,8 @@ TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   o.annealing.max_trials = 12;
   o.settle_steps = 0;
   const LearningResult r = compensate(walker, o);
-  EXPECT_FALSE(r.converged);
-  EXPECT_EQ(r.status, "not converged");
+  EXPECT_FALSE(r.converged());
+  EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::trial_cap);
   EXPECT_EQ(r.trials, 12);
   EXPECT_GE(r.final_deviation_deg, kDefaultThresholdDeg);
@@ -119,7 +119,7 @@ TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
   CompensationOptions o = options_for({0, 1, 2}, 4);  // only L2 works: 5 combinations
   o.settle_steps = 0;
   const LearningResult r = compensate(walker, o);
-  EXPECT_EQ(r.status, "not converged");
+  EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::space_exhausted);
   EXPECT_EQ(r.trials, 4);
 }
@@ -228,7 +228,7 @@ int count(const std::vector<sim::Event>& events, sim::EventKind kind) {
 TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
   FakeWalker walker(RobotKind::hexapod);
   const LearningResult r = compensate(walker, robust_options({{0, {0}, false}}, 1));
-  ASSERT_TRUE(r.converged);
+  ASSERT_TRUE(r.converged());
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_TRUE(r.episodes[0].held);
   // The run ends with the monitored windows, every one under the threshold on yaw and path.
@@ -247,7 +247,7 @@ TEST(RobustCompensation, SecondFaultLearnsTwice) {
   EXPECT_LT(r.episodes[0].detection_step, 30000);
   EXPECT_GT(r.episodes[1].detection_step, 30000);
   EXPECT_TRUE(r.episodes[1].held);
-  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.converged());
   // The second episode never changes a failed leg (R1, L2).
   EXPECT_EQ(r.periods[0], kStartPeriod);
   EXPECT_EQ(r.periods[4], r.episodes[0].periods[4]);

@@ -34,7 +34,7 @@ TEST(LearningSim, R1DisabledConvergesInNineOfTenSeeds) {
     const auto run = experiments::run_learning(hexapod(), r1_disabled(seed), false);
     // The paper's first window with R1 disabled: 37.86 deg to the right (Fig. 8).
     EXPECT_GT(run.result.initial_deviation_deg, 20.0) << "seed " << seed;
-    if (run.result.converged) {
+    if (run.result.converged()) {
       ++converged;
       EXPECT_LT(run.result.final_deviation_deg, learning::kDefaultThresholdDeg);
       EXPECT_EQ(run.result.periods[0], learning::kStartPeriod) << "the disabled leg never changes";

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <random>
@@ -10,11 +11,13 @@
 #include <stdexcept>
 
 #include "common/errors.h"
+#include "experiments/learning_experiments.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "experiments/tables.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
+#include "robot/leg_sets.h"
 #include "tests/fake_walker.h"
 
 namespace multicpg::experiments {
@@ -27,22 +30,20 @@ const robot::Morphology& hexapod() {
   return robot::morphology(RobotKind::hexapod);
 }
 
-// A result shaped like learning::to_json, drawn from the task's seed only.
+// The record (learning::to_json) of a learning result drawn from the task's seed only.
 nlohmann::json fake_result(const Task& task) {
   std::mt19937_64 rng(task.seed);
-  const int trials = 1 + static_cast<int>(learning::draw_below(rng, 30));
-  const bool converged = learning::draw_unit(rng) < 0.8;
-  nlohmann::json periods = nlohmann::json::object();
-  for (const robot::Leg& leg : hexapod().legs) {
-    periods[leg.name] = 4 + static_cast<int>(learning::draw_below(rng, 2));
+  learning::LearningResult r;
+  r.trials = 1 + static_cast<int>(learning::draw_below(rng, 30));
+  r.outcome = learning::draw_unit(rng) < 0.8 ? learning::Outcome::converged
+                                             : learning::Outcome::not_converged;
+  for (std::size_t leg = 0; leg < hexapod().size(); ++leg) {
+    r.periods.push_back(4 + static_cast<int>(learning::draw_below(rng, 2)));
   }
-  return {{"converged", converged},
-          {"status", converged ? "converged" : "not converged"},
-          {"trials", trials},
-          {"final_deviation_deg", 20.0 * learning::draw_unit(rng)},
-          {"initial_deviation_deg", 40.0},
-          {"periods", periods},
-          {"disabled", task.params.at("disabled")}};
+  r.final_deviation_deg = 20.0 * learning::draw_unit(rng);
+  r.initial_deviation_deg = 40.0;
+  return learning::to_json(r, hexapod(),
+                           robot::leg_set_from_json(hexapod(), task.params.at("disabled")));
 }
 
 // A fresh directory under the system temp dir, removed at the end of the test.
@@ -197,7 +198,7 @@ TEST(Runner, RefusesToResumeWithDifferentArguments) {
     run_tasks(tasks, fake_result, other);
     ADD_FAILURE() << "resumed with another seed";
   } catch (const BadInput& e) {
-    EXPECT_NE(std::string(e.what()).find("arguments (seed)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("other arguments.seed;"), std::string::npos) << e.what();
   }
   const std::vector<Task> fewer(tasks.begin(), tasks.end() - 1);
   EXPECT_THROW(run_tasks(fewer, fake_result, options(dir.path(), 1)), BadInput);
@@ -247,19 +248,77 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
   }
 }
 
+// Every leaf of `j` as a JSON pointer ("/learning/annealing/beta").
+void leaf_pointers(const nlohmann::json& j, const std::string& at, std::vector<std::string>& out) {
+  if (j.is_object() && !j.empty()) {
+    for (const auto& item : j.items()) leaf_pointers(item.value(), at + "/" + item.key(), out);
+  } else {
+    out.push_back(at);
+  }
+}
+
+// Another value of the same kind as `v`.
+nlohmann::json changed(const nlohmann::json& v) {
+  if (v.is_boolean()) return !v.get<bool>();
+  if (v.is_number_unsigned()) return v.get<std::uint64_t>() + 1;
+  if (v.is_number_integer()) return v.get<long>() + 1;
+  if (v.is_number_float()) return v.get<double>() + 1.0;
+  if (v.is_string()) return v.get<std::string>() + "x";
+  if (v.is_array()) {
+    nlohmann::json more = v;
+    more.push_back(1);
+    return more;
+  }
+  return 1;  // null: an optional that was not set
+}
+
+// Issue 9 item 1: the record holds every option of an experiment (learning, simulation,
+// controller parameters), and a resume with any one of them changed is refused naming its key.
+TEST(Runner, RefusesToResumeWhenAnyRecordedOptionDiffers) {
+  ExperimentSpec spec;
+  spec.runs = 3;
+  const nlohmann::json recorded = experiment_arguments(spec, ExperimentKind::table);
+  for (const char* key :
+       {"/learning/annealing/beta", "/learning/detection_windows", "/learning/annealing/period_set",
+        "/sim/servo_gain", "/sim/controller/cpg/w11", "/sim/controller/delays/tau_l"}) {
+    EXPECT_TRUE(recorded.contains(nlohmann::json::json_pointer(key))) << key;
+  }
+  std::vector<std::string> leaves;
+  leaf_pointers(recorded, "", leaves);
+  const std::vector<Task> tasks = small_experiment();
+  TempDir dir("refuse_each");
+  RunnerOptions first = options(dir.path(), 2);
+  first.arguments = recorded;
+  run_tasks(tasks, fake_result, first);
+  for (const std::string& leaf : leaves) {
+    RunnerOptions other = first;
+    const nlohmann::json::json_pointer ptr(leaf);
+    other.arguments[ptr] = changed(recorded[ptr]);
+    std::string dotted = "arguments" + leaf;
+    std::replace(dotted.begin(), dotted.end(), '/', '.');
+    try {
+      run_tasks(tasks, fake_result, other);
+      ADD_FAILURE() << "resumed with another " << leaf;
+    } catch (const BadInput& e) {
+      EXPECT_NE(std::string(e.what()).find("other " + dotted + ";"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_GT(leaves.size(), 60u);  // the controller's parameters alone are 37
+  EXPECT_NO_THROW(run_tasks(tasks, fake_result, first));
+}
+
 TEST(Tables, SummariesAndFormatting) {
   std::vector<Task> tasks;
   std::vector<nlohmann::json> results;
   auto add = [&](const std::string& group, bool converged, int trials, double deviation, int r2) {
     tasks.push_back({group + std::to_string(tasks.size()), group, 0, 0, {}});
-    nlohmann::json periods{{"R1", 4}, {"R2", r2}, {"R3", 4}, {"L1", 4}, {"L2", 4}, {"L3", 4}};
-    results.push_back({{"converged", converged},
-                       {"status", converged ? "converged" : "no deviation"},
-                       {"trials", trials},
-                       {"initial_deviation_deg", 10.0 * trials},
-                       {"final_deviation_deg", deviation},
-                       {"periods", periods},
-                       {"disabled", {"R1"}}});
+    learning::LearningResult r;
+    r.outcome = converged ? learning::Outcome::converged : learning::Outcome::no_deviation;
+    r.trials = trials;
+    r.initial_deviation_deg = 10.0 * trials;
+    r.final_deviation_deg = deviation;
+    r.periods = {4, r2, 4, 4, 4, 4};
+    results.push_back(learning::to_json(r, hexapod(), {0}));
   };
   add("R1", true, 10, 2.0, 6);
   add("R1", true, 20, 4.0, 5);

@@ -54,10 +54,11 @@ def main():
     ax.bar([0], [result["initial_deviation_deg"]], color="tab:grey", label="detecting window")
     colours = ["tab:green" if kept else "tab:red" for kept in trace["accepted"]]
     ax.bar(trace["trial"], trace["deviation_deg"], color=colours)
-    ax.axhline(result["threshold_deg"], color="black", linestyle="--", label="threshold")
+    threshold = result["options"]["annealing"]["threshold_deg"]
+    ax.axhline(threshold, color="black", linestyle="--", label="threshold")
     ax.set_xticks(range(0, result["trials"] + 1))
     ax.set_xlabel("trial")
-    ax.set_ylabel(f"deviation per {result['window_steps']}-step window (deg)")
+    ax.set_ylabel(f"deviation per {result['options']['window_steps']}-step window (deg)")
     ax.set_title("Deviation per trial (green kept, red rejected)")
     ax.legend()
     fig.savefig(out / "deviation.png", dpi=100)

@@ -10,6 +10,7 @@
 #include "experiments/scenarios.h"
 #include "report/film.h"
 #include "report/stages/stage.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::report {
 namespace {
@@ -117,7 +118,7 @@ Section learning_r1_stage(const StageContext& ctx) {
     for (std::size_t i = 0; i < w.record.rows(); ++i)
       path.push_back({w.record.x[i], w.record.y[i]});
   }
-  const std::string learned = experiments::working_periods_text(morph, r.periods, options.disabled);
+  const std::string learned = robot::period_map_text(morph, r.periods, options.disabled);
   paths.before_label = "all periods 4";
   paths.after_label = "learned: " + learned;
   const FigureFiles path_fig = plot_trunk_paths(paths, figures);
@@ -135,10 +136,10 @@ Section learning_r1_stage(const StageContext& ctx) {
               " (Fig. 8). Fig. 9: the 18 motor outputs, R1 constant, hind FTi inverted. Fig. 10: "
               "the disabled R1 still touches the ground intermittently.",
           "Seed " + std::to_string(ctx.options.seed) + ": " + fixed(r.initial_deviation_deg, 2) +
-              "° detected, then " + r.status + " after " + std::to_string(r.trials) +
-              " trials at " + fixed(r.final_deviation_deg, 2) + "° with " + learned +
-              ". R1's foot touched the ground in " + std::to_string(r1_touches) + " of the " +
-              std::to_string(kMotorFigureSteps) +
+              "° detected, then " + std::string(learning::to_string(r.outcome)) + " after " +
+              std::to_string(r.trials) + " trials at " + fixed(r.final_deviation_deg, 2) +
+              "° with " + learned + ". R1's foot touched the ground in " +
+              std::to_string(r1_touches) + " of the " + std::to_string(kMotorFigureSteps) +
               " steps of Fig. 10. The video shows the whole run at " +
               std::to_string(ctx.sizes.film_speed) + "× speed.",
           {ctx.image(fig8), ctx.image(fig9), ctx.image(fig10), ctx.image(path_fig)},

@@ -13,6 +13,7 @@
 #include "experiments/scenarios.h"
 #include "report/film.h"
 #include "report/stages/stage.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::report {
 namespace {
@@ -21,17 +22,6 @@ namespace paper = experiments::paper;
 
 // The tunnel films look down the corridor from behind the robot, far enough to see both walls.
 const CameraSpec kTunnelCamera{"trunk", 2.5, 0.0, -45.0, {}};
-
-// "R2=4 L1=6" (working_periods_text's form) on top of all-4 periods.
-std::vector<int> periods_from_text(const robot::Morphology& morph, const std::string& text) {
-  std::vector<int> periods(morph.size(), learning::kStartPeriod);
-  std::istringstream in(text);
-  for (std::string item; in >> item;) {
-    const std::size_t eq = item.find('=');
-    periods[robot::leg_index(morph, item.substr(0, eq))] = std::stoi(item.substr(eq + 1));
-  }
-  return periods;
-}
 
 std::string file_stem(std::string text) {
   std::replace(text.begin(), text.end(), '+', '-');
@@ -60,18 +50,20 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   const std::string name(sc.disabled);
   std::string legs = name;
   std::replace(legs.begin(), legs.end(), '+', ',');
-  const std::vector<std::size_t> disabled = robot::parse_leg_list(morph, legs);
+  const std::vector<std::size_t> disabled = robot::parse_leg_set(morph, legs);
   ScenarioOutput out;
   TrunkPaths paths;
   std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
                                  sc.before_deg, true, &paths.before, std::nullopt}};
   if (!learned.empty()) {
-    variants.push_back({"our learning", periods_from_text(morph, learned), sc.after_deg, true,
-                        &paths.after, std::nullopt});
+    variants.push_back({"our learning",
+                        robot::parse_period_map(morph, learned, learning::kStartPeriod),
+                        sc.after_deg, true, &paths.after, std::nullopt});
   }
-  variants.push_back({"the paper's learning",
-                      periods_from_text(morph, paper::combination_text(sc.learned)), sc.after_deg,
-                      false, nullptr, std::nullopt});
+  variants.push_back(
+      {"the paper's learning",
+       robot::parse_period_map(morph, paper::combination_text(sc.learned), learning::kStartPeriod),
+       sc.after_deg, false, nullptr, std::nullopt});
   // Issue 8: robust learning (learn --mode robust) in the open field from a walking robot, then
   // its periods and steering reflex through the tunnel.
   {
@@ -106,9 +98,8 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
       film->finish();
       out.films.push_back(ctx.rel(video));
     }
-    out.rows.push_back({name, experiments::working_periods_text(morph, v.periods, disabled),
-                        v.source, fixed(t.deviation_deg, 2), fixed(t.forward_m, 2),
-                        fixed(t.lateral_m, 2),
+    out.rows.push_back({name, robot::period_map_text(morph, v.periods, disabled), v.source,
+                        fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
                         t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
                         "≈" + fixed(v.paper_deg, 2)});
     if (v.path == nullptr) continue;

@@ -1,0 +1,55 @@
+// Checks of flag values at parse time, so every bad value is one line naming its flag (CLI11
+// prints "--beta: must be in 0..100, got -1") before any work starts (issue 9 item 4). Ranges
+// come from the option structs' Limits, the same that validate() and experiment files use.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <charconv>
+#include <cstdint>
+#include <string>
+
+#include "common/limits.h"
+
+namespace multicpg::apps {
+
+// A number in `limits`: not empty, no trailing junk, finite. Shown in --help as "in lo..hi".
+template <class T>
+CLI::Validator in(const Limits<T>& limits) {
+  return CLI::Validator(
+      [limits](std::string& text) -> std::string {
+        T value{};
+        if (text.empty()) return "needs a value in " + limits.text() + ", got an empty string";
+        if (!CLI::detail::lexical_cast(text, value)) {
+          return "'" + text + "' is not a number in " + limits.text();
+        }
+        if (!limits.contains(value)) return "must be in " + limits.text() + ", got " + text;
+        return {};
+      },
+      "in " + limits.text());
+}
+
+// A seed: a whole number 0..2^64-1 written in digits only (no sign, so -1 cannot wrap).
+inline CLI::Validator seed_value() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (text.empty() || ec != std::errc() || ptr != end) {
+          return "'" + text + "' is not a seed (a whole number 0..18446744073709551615)";
+        }
+        return {};
+      },
+      "0..2^64-1");
+}
+
+// A path or name that is not the empty string.
+inline const CLI::Validator kNotEmpty(
+    [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; },
+    "not empty");
+
+// Adds kNotEmpty to every option of `app` and its subcommands that takes a value: no flag of
+// multicpg has a meaning for the empty string (a number, path, name or list).
+void refuse_empty_values(CLI::App& app);
+
+}  // namespace multicpg::apps

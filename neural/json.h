@@ -1,0 +1,26 @@
+// The controller's parameters as JSON (nlohmann's type macros): keys are the member names, a
+// missing key keeps its default. Recorded with every result and read from experiment files.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "neural/controller.h"
+
+namespace multicpg::neural {
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(CpgParams, w11, w12, w21, theta1, theta2, lambda,
+                                                mu0)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PostProcessingParams, input_gain, bias1, bias2,
+                                                self_weight, gain, flip)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PsnParams, selector_weight, selector_bias,
+                                                input_weight, inhibition, hidden_weight,
+                                                hidden_bias, output_weight, output_bias)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(VrnParams, input_weight, steer_weight,
+                                                hidden_weight, hidden_bias, output_weight)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(MotorNeuronParams, tc_weight, inhibition,
+                                                psn_weight, bias)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(DelayParams, tau, tau_l)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ControllerParams, cpg, post, psn, vrn, motor,
+                                                delays)
+
+}  // namespace multicpg::neural

@@ -1,0 +1,141 @@
+
+#include "robot/leg_sets.h"
+
+#include <algorithm>
+#include <charconv>
+
+#include "common/errors.h"
+
+namespace multicpg::robot {
+namespace {
+
+// The items of `text` split at any of `separators`; an empty item is kept (and refused).
+std::vector<std::string_view> split(std::string_view text, std::string_view separators) {
+  std::vector<std::string_view> items;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = text.find_first_of(separators, start);
+    items.push_back(text.substr(start, end == std::string_view::npos ? end : end - start));
+    if (end == std::string_view::npos) return items;
+    start = end + 1;
+  }
+}
+
+int parse_gait_period(std::string_view text, std::string_view what) {
+  int value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end) {
+    throw BadInput(std::string(what) + ": '" + std::string(text) + "' is not a whole number");
+  }
+  if (!is_gait_period(value)) {
+    throw BadInput(std::string(what) + ": period " + std::to_string(value) +
+                   " gives no gait (allowed: " + gait_periods_text() + ")");
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string gait_periods_text() {
+  std::string out;
+  for (int p : kGaitPeriods) out += (out.empty() ? "" : ", ") + std::to_string(p);
+  return out;
+}
+
+bool is_gait_period(int period) {
+  return std::find(kGaitPeriods.begin(), kGaitPeriods.end(), period) != kGaitPeriods.end();
+}
+
+LegSet parse_leg_set(const Morphology& morph, std::string_view text) {
+  LegSet out;
+  if (text.empty()) return out;
+  for (std::string_view item : split(text, ",+")) {
+    if (item.empty()) throw BadInput("empty leg name in '" + std::string(text) + "'");
+    const std::size_t leg = leg_index(morph, item);
+    if (std::find(out.begin(), out.end(), leg) != out.end()) {
+      throw BadInput("leg " + std::string(item) + " is named twice in '" + std::string(text) + "'");
+    }
+    out.push_back(leg);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string leg_set_name(const Morphology& morph, const LegSet& legs) {
+  std::string out;
+  for (std::size_t leg : legs) out += (out.empty() ? "" : "+") + morph.legs.at(leg).name;
+  return out;
+}
+
+std::vector<int> parse_period_map(const Morphology& morph, std::string_view text, int fallback) {
+  if (text.find('=') == std::string_view::npos) {
+    return std::vector<int>(morph.size(), parse_gait_period(text, "period"));
+  }
+  std::vector<int> periods(morph.size(), fallback);
+  std::vector<bool> named(morph.size(), false);
+  for (std::string_view item : split(text, ", ")) {
+    const std::size_t eq = item.find('=');
+    if (eq == std::string_view::npos) {
+      throw BadInput("'" + std::string(item) + "' in '" + std::string(text) +
+                     "' is not LEG=PERIOD");
+    }
+    const std::size_t leg = leg_index(morph, item.substr(0, eq));
+    if (named[leg]) {
+      throw BadInput("leg " + morph.legs[leg].name + " is named twice in '" + std::string(text) +
+                     "'");
+    }
+    named[leg] = true;
+    periods[leg] = parse_gait_period(item.substr(eq + 1), morph.legs[leg].name);
+  }
+  return periods;
+}
+
+std::string period_map_text(const Morphology& morph, const std::vector<int>& periods,
+                            const LegSet& skip) {
+  std::string out;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    if (std::find(skip.begin(), skip.end(), i) != skip.end()) continue;
+    out += (out.empty() ? "" : " ") + morph.legs.at(i).name + "=" + std::to_string(periods[i]);
+  }
+  return out;
+}
+
+nlohmann::json leg_set_json(const Morphology& morph, const LegSet& legs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t leg : legs) out.push_back(morph.legs.at(leg).name);
+  return out;
+}
+
+LegSet leg_set_from_json(const Morphology& morph, const nlohmann::json& j) {
+  if (!j.is_array()) throw BadInput("a leg set must be an array of leg names");
+  std::string text;
+  for (const nlohmann::json& name : j) {
+    if (!name.is_string()) throw BadInput("a leg set must be an array of leg names");
+    if (!text.empty()) text += '+';
+    text += name.get<std::string>();
+  }
+  return parse_leg_set(morph, text);
+}
+
+nlohmann::json period_map_json(const Morphology& morph, const std::vector<int>& periods) {
+  nlohmann::json out = nlohmann::json::object();
+  for (std::size_t i = 0; i < periods.size(); ++i) out[morph.legs.at(i).name] = periods[i];
+  return out;
+}
+
+std::vector<int> period_map_from_json(const Morphology& morph, const nlohmann::json& j) {
+  if (!j.is_object()) throw BadInput("a period map must be an object {\"R1\": 4, ...}");
+  std::vector<int> periods(morph.size(), 0);
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    const auto it = j.find(morph.legs[i].name);
+    if (it == j.end() || !it->is_number_integer()) {
+      throw BadInput("the period map has no whole-number period for leg " + morph.legs[i].name);
+    }
+    periods[i] = it->get<int>();
+  }
+  if (j.size() != morph.size()) throw BadInput("the period map names legs the robot lacks");
+  return periods;
+}
+
+}  // namespace multicpg::robot

@@ -1,0 +1,174 @@
+// Issue 9 item 4: every bad input of every command is one line naming what is wrong and exit 2,
+// before any work. The table below is run through the real CLI: the numeric flags with values
+// outside their documented ranges, empty, non-numeric, with trailing junk, NaN and infinite, and
+// the leg sets, period maps, fault timelines, choices, paths and combinations users get wrong.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tests/cli_runner.h"
+
+namespace multicpg::testing {
+namespace {
+
+struct BadInput {
+  std::string args;
+  std::string must_mention;
+};
+
+// A numeric flag of a command: the arguments it needs to run, the flag and values out of range.
+struct NumericFlag {
+  std::string command;  // subcommand with what it needs besides the flag
+  std::string flag;
+  std::vector<std::string> out_of_range;
+};
+
+// Values no numeric flag takes: empty, words, trailing junk, NaN, infinities.
+const std::vector<std::string> kNotNumbers{"''", "abc", "12x", "nan", "inf", "-inf", "1e999"};
+
+std::vector<BadInput> numeric_cases() {
+  const std::string exp = "experiment table --robot quadruped --out /tmp/multicpg-bad-exp";
+  const std::vector<NumericFlag> flags{
+      {"learn --disable R1", "--beta", {"-1", "100.5"}},
+      {"learn --disable R1", "--threshold", {"0", "-3", "181"}},
+      {"learn --disable R1", "--window", {"0", "-400", "100001"}},
+      {"learn --disable R1", "--settle", {"-1", "100001"}},
+      {"learn --disable R1", "--max-trials", {"0", "100001"}},
+      {"learn --disable R1", "--hold-windows", {"0", "101"}},
+      {"learn --disable R1", "--monitor-windows", {"0", "1001"}},
+      {"learn --disable R1", "--control-dt", {"0", "-0.037", "1e-300", "2"}},
+      {"learn --disable R1", "--physics-dt", {"-0.001", "0.5"}},
+      {"learn --disable R1", "--servo-gain", {"-1", "1e5"}},
+      {"learn --disable R1", "--disable-at", {"-3", "100000001"}},
+      {"learn --disable R1", "--warmup", {"-1", "100000001"}},
+      {"walk", "--steps", {"0", "-5", "100000001"}},
+      {"walk", "--window", {"0", "100001"}},
+      {"walk", "--settle", {"-1"}},
+      {"walk", "--warmup", {"-1"}},
+      {"gait", "--steps", {"0"}},
+      {"gait", "--warmup", {"-2"}},
+      {"cpg", "--period", {"0", "10"}},
+      {"cpg", "--client-period", {"0", "10"}},
+      {"cpg", "--steps", {"0"}},
+      {"tunnel --disable R1", "--max-steps", {"0", "-1"}},
+      {"render --out /tmp/multicpg-bad.png", "--width", {"0", "15", "100000"}},
+      {"render --out /tmp/multicpg-bad.png", "--height", {"4097"}},
+      {"render --out /tmp/multicpg-bad.png", "--speed", {"0", "1001"}},
+      {"render --out /tmp/multicpg-bad.png", "--steps", {"0"}},
+      {exp, "--runs", {"0", "100001"}},
+      {exp, "--jobs", {"0", "-2", "5000"}},
+      {exp, "--check-windows", {"-1", "1001"}},
+      {"landscape --disable R1 --out /tmp/multicpg-bad-land", "--windows", {"0", "1001"}},
+      {"landscape --disable R1 --out /tmp/multicpg-bad-land", "--jobs", {"0"}},
+      {"landscape --disable R1 --out /tmp/multicpg-bad-land", "--threshold", {"0"}},
+      {"reproduce --out /tmp/multicpg-bad-rep", "--jobs", {"0"}},
+  };
+  std::vector<BadInput> cases;
+  for (const NumericFlag& f : flags) {
+    for (const std::string& v : f.out_of_range)
+      cases.push_back({f.command + " " + f.flag + " " + v, f.flag});
+  }
+  // Every kind of non-number for a sample of integer and floating flags of each command.
+  for (const auto& [command, flag] : std::vector<std::pair<std::string, std::string>>{
+           {"learn --disable R1", "--beta"},
+           {"learn --disable R1", "--window"},
+           {"walk", "--steps"},
+           {"walk", "--control-dt"},
+           {"render --out /tmp/multicpg-bad.png", "--width"},
+           {exp, "--runs"},
+           {"cpg", "--period"},
+       }) {
+    for (const std::string& v : kNotNumbers)
+      cases.push_back({command + " " + flag + " " + v, flag});
+  }
+  return cases;
+}
+
+const std::vector<BadInput> kOtherCases{
+    // Seeds: no sign, nothing past 2^64 - 1, no junk.
+    {"learn --disable R1 --seed -1", "--seed"},
+    {"learn --disable R1 --seed 18446744073709551616", "--seed"},
+    {"learn --disable R1 --seed 1.5", "--seed"},
+    {"learn --disable R1 --seed ''", "--seed"},
+    {"reproduce --out /tmp/multicpg-bad-rep --seed -7", "--seed"},
+    // Leg sets.
+    {"learn --disable R9", "R9"},
+    {"learn --disable R1,R1", "twice"},
+    {"learn --disable R1,", "empty leg"},
+    {"learn --disable R1++R3", "empty leg"},
+    {"learn --disable r1", "r1"},
+    {"learn --disable R1,R2,R3,L1,L2,L3", "every leg"},
+    {"learn --robot quadruped --disable R3", "R3"},
+    {"walk --disable R1,R2,R3,L1,L2,L3", "every leg"},
+    {"walk --robot quadruped --disable L3", "L3"},
+    {"tunnel --disable X1", "X1"},
+    {"landscape --disable R1,R1 --out /tmp/multicpg-bad-land", "twice"},
+    {"gait --disable R7", "R7"},
+    // Period maps.
+    {"walk --periods 7", "gives no gait"},
+    {"walk --periods 0", "gives no gait"},
+    {"walk --periods R1=5,R1=6", "twice"},
+    {"walk --periods R1=5,", "--periods"},
+    {"walk --periods R1=", "--periods"},
+    {"walk --periods =5", "--periods"},
+    {"walk --periods R1=5x", "--periods"},
+    {"walk --periods R1:5", "--periods"},
+    {"walk --periods R9=5", "R9"},
+    {"walk --periods ''", "--periods"},
+    {"tunnel --disable R1 --periods R2=3", "gives no gait"},
+    {"gait --period 7", "--period"},
+    // Fault timelines.
+    {"learn --fault R1,R1@0", "twice"},
+    {"learn --fault R1@0 --fault R1@500", "already failed"},
+    {"learn --fault R1@900 --recover R1@400", "has not failed"},
+    {"learn --recover R1@400", "has not failed"},
+    {"learn --fault R1@-5", "--fault"},
+    {"learn --fault R1@12x", "--fault"},
+    {"learn --fault R1", "LEGS@STEP"},
+    {"learn --fault @400", "LEGS@STEP"},
+    {"learn --fault R1@0 --fault R2@0 --mode paper", "paper mode"},
+    {"walk --fault R1@200000000", "--fault"},
+    // Choices.
+    {"learn --disable R1 --mode fast", "fast"},
+    {"learn --disable R1 --steering wheel", "wheel"},
+    {"learn --disable R1 --mode paper --steering off", "robust-mode"},
+    {"learn --disable R1 --mode paper --no-period-learning", "robust-mode"},
+    {"learn --robot spider --disable R1", "spider"},
+    {"walk --robot ''", "--robot"},
+    {"cpg --sync maybe", "--sync"},
+    {"experiment table --robot octopod --out /tmp/multicpg-bad-exp", "octopod"},
+    // Time steps that do not fit together.
+    {"walk --physics-dt 0.003", "--physics-dt"},
+    {"walk --control-dt 0.037 --physics-dt 0.0000001", "--physics-dt"},
+    {"walk --control-dt 0.0001 --physics-dt 0.001", "--physics-dt"},
+    // Paths and missing arguments.
+    {"learn", "--disable"},
+    {"learn --disable R1 --out ''", "--out"},
+    {"learn --disable R1 --out /proc/multicpg-out", "/proc/multicpg-out"},
+    {"walk --csv ''", "--csv"},
+    {"render --out ''", "--out"},
+    {"render --out /tmp/multicpg-bad.gif", "gif"},
+    {"render", "--out"},
+    {"experiment table --robot quadruped", "--out"},
+    {"experiment table --robot quadruped --out ''", "--out"},
+    {"experiment results --out /tmp/multicpg-bad.md", "at least one"},
+    {"landscape --out /tmp/multicpg-bad-land", "--disable"},
+    {"tunnel --disable R1 --learn --periods 4", "exclude"},
+    {"tunnel --disable R1 --video ''", "--video"},
+    {"model --out ''", "--out"},
+    // Unknown flags and commands.
+    {"walk --speed 3", "--speed"},
+    {"fly", "fly"},
+    {"learn --disable R1 --beta", "--beta"},
+};
+
+TEST(CliBadInput, EveryCaseIsOneLineAndExitTwo) {
+  std::vector<BadInput> cases = numeric_cases();
+  cases.insert(cases.end(), kOtherCases.begin(), kOtherCases.end());
+  ASSERT_GE(cases.size(), 150u);
+  for (const BadInput& c : cases) expect_bad_input(c.args, c.must_mention);
+}
+
+}  // namespace
+}  // namespace multicpg::testing
