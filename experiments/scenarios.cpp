@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
 
 #include "common/errors.h"
 #include "robot/leg_sets.h"
@@ -46,16 +45,6 @@ bool is_representative(const Morphology& morph, const Legs& legs) {
   const std::size_t mine = right_legs(morph, legs);
   const std::size_t theirs = right_legs(morph, other);
   return mine > theirs || (mine == theirs && legs <= other);
-}
-
-void require_runs(int runs) {
-  if (runs < 1) throw BadInput("runs must be at least 1, got " + std::to_string(runs));
-}
-
-nlohmann::json leg_names(const Morphology& morph, const Legs& legs) {
-  nlohmann::json out = nlohmann::json::array();
-  for (std::size_t leg : legs) out.push_back(morph.legs.at(leg).name);
-  return out;
 }
 
 }  // namespace
@@ -103,47 +92,6 @@ Scenario beta_study_scenario() {
   const Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
   const Legs legs{robot::leg_index(morph, "R1"), robot::leg_index(morph, "R2")};
   return {robot::leg_set_name(morph, legs), legs};
-}
-
-std::vector<Task> scenario_tasks(const Morphology& morph, const std::vector<Scenario>& scenarios,
-                                 int runs, std::uint64_t base_seed) {
-  require_runs(runs);
-  std::vector<Task> tasks;
-  for (const Scenario& s : scenarios) {
-    for (int run = 0; run < runs; ++run) {
-      const std::string key = run_key(s.name, run);
-      tasks.push_back({key,
-                       s.name,
-                       run,
-                       derive_seed(base_seed, key),
-                       {{"scenario", s.name}, {"disabled", leg_names(morph, s.disabled)}}});
-    }
-  }
-  return tasks;
-}
-
-std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::uint64_t base_seed) {
-  require_runs(runs);
-  const Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
-  const Scenario scenario = beta_study_scenario();
-  std::vector<Task> tasks;
-  for (double beta : betas) {
-    if (!(beta >= 0.0) || !std::isfinite(beta)) {
-      throw BadInput("beta must be a number >= 0, got " + format_number(beta));
-    }
-    const std::string group = format_number(beta);
-    for (int run = 0; run < runs; ++run) {
-      const std::string key = run_key("beta" + group, run);
-      tasks.push_back({key,
-                       group,
-                       run,
-                       derive_seed(base_seed, key),
-                       {{"scenario", scenario.name},
-                        {"disabled", leg_names(morph, scenario.disabled)},
-                        {"beta", beta}}});
-    }
-  }
-  return tasks;
 }
 
 std::string format_number(double value) {

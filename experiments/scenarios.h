@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "experiments/runner.h"
 #include "robot/morphology.h"
 
 namespace multicpg::experiments {
@@ -34,17 +33,6 @@ std::vector<Scenario> paper_scenarios(robot::RobotKind kind);
 
 // Beta study (Fig. 14): the hexapod with R1 and R2 disabled.
 Scenario beta_study_scenario();
-
-// Tasks of a scenario experiment: `runs` per scenario, keys "<scenario>_run<NNN>", group = the
-// scenario name, params {"scenario", "disabled": [leg names]}. Throws BadInput for runs < 1.
-std::vector<Task> scenario_tasks(const robot::Morphology& morph,
-                                 const std::vector<Scenario>& scenarios, int runs,
-                                 std::uint64_t base_seed);
-
-// Tasks of the beta study: `runs` per beta on beta_study_scenario(), keys "beta<b>_run<NNN>",
-// group = format_number(b), params {"scenario", "disabled", "beta"}. Throws BadInput for
-// runs < 1 or a negative beta.
-std::vector<Task> beta_tasks(const std::vector<double>& betas, int runs, std::uint64_t base_seed);
 
 // Shortest text that reads back as the same double: "0.1", "10".
 std::string format_number(double value);

@@ -14,6 +14,7 @@
 #include "experiments/learning_experiments.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
+#include "experiments/sweep.h"
 #include "experiments/tables.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
@@ -71,8 +72,9 @@ RunnerOptions options(const fs::path& out, int jobs) {
 
 std::vector<Task> small_experiment() {
   const std::vector<Scenario> all = paper_scenarios(RobotKind::hexapod);
-  const std::vector<Scenario> some(all.begin(), all.begin() + 5);
-  return scenario_tasks(hexapod(), some, 3, 1);
+  nlohmann::json names = nlohmann::json::array();
+  for (std::size_t i = 0; i < 5; ++i) names.push_back(all[i].name);
+  return resolve_sweep({{"scenarios", names}, {"runs", 3}, {"seed", 1}}).tasks;
 }
 
 std::string table_of(const std::vector<Task>& tasks, const RunnerOutcome& outcome) {
@@ -110,15 +112,18 @@ TEST(Scenarios, QuadrupedAndBetaStudy) {
   EXPECT_THROW(paper_scenarios(RobotKind::octopod), BadInput);
   EXPECT_EQ(beta_study_scenario().name, "R1+R2");
 
-  const std::vector<Task> tasks = beta_tasks(kBetaStudyValues, kBetaRuns, 1);
+  // The beta study's runs: keys "beta<b>_run<NNN>" (seeds come from them), one group per beta.
+  ExperimentSpec spec;
+  spec.runs = kBetaRuns;
+  const std::vector<Task> tasks = resolve_sweep(beta_study_document(spec, kBetaStudyValues)).tasks;
   EXPECT_EQ(tasks.size(), kBetaStudyValues.size() * kBetaRuns);
   EXPECT_EQ(tasks.front().key, "beta0_run000");
   EXPECT_EQ(tasks[kBetaRuns].group, "0.1");
-  EXPECT_EQ(tasks[kBetaRuns].params.at("beta"), 0.1);
+  EXPECT_EQ(tasks[kBetaRuns].params.at("learning").at("annealing").at("beta"), 0.1);
   EXPECT_EQ(tasks.back().key, "beta10_run049");
-  EXPECT_THROW(beta_tasks({-1.0}, 1, 1), BadInput);
-  EXPECT_THROW(beta_tasks({0.5}, 0, 1), BadInput);
-  EXPECT_THROW(scenario_tasks(hexapod(), paper_scenarios(RobotKind::hexapod), 0, 1), BadInput);
+  EXPECT_THROW(resolve_sweep(beta_study_document(spec, {-1.0})), OptionError);
+  spec.runs = 0;
+  EXPECT_THROW(resolve_sweep(scenario_table_document(spec)), OptionError);
 }
 
 TEST(Runner, SeedsComeFromKeysOnly) {
@@ -220,7 +225,9 @@ TEST(Runner, RejectsBadInput) {
 // The pieces together: compensation on the fake walker as the task, through runner and tables.
 TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
   const robot::Morphology& quad = robot::morphology(RobotKind::quadruped);
-  const std::vector<Task> tasks = scenario_tasks(quad, paper_scenarios(RobotKind::quadruped), 2, 5);
+  const std::vector<Task> tasks =
+      resolve_sweep({{"robot", "quadruped"}, {"scenarios", "paper"}, {"runs", 2}, {"seed", 5}})
+          .tasks;
   auto learn = [&](const Task& t) {
     learning::FakeWalker walker(RobotKind::quadruped);
     learning::CompensationOptions o;
