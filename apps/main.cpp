@@ -1,13 +1,16 @@
 // multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
-// Exit codes: 0 success, 2 bad input, 1 runtime failure.
+// Exit codes: 0 success, 2 bad input, 1 runtime failure (under mpirun: the job's, printed once).
 #include <cstdio>
 #include <iostream>
 
 #include "apps/commands.h"
 #include "common/errors.h"
+#include "experiments/processes.h"
 #include "sim/sim.h"
 
 namespace {
+
+using namespace multicpg;
 
 // Flushes standard output: a result that did not reach it (a full disk, a closed pipe) is a
 // failure, not a success. Returns the exit code to use.
@@ -19,8 +22,9 @@ int finish_stdout(int code) {
   return code == 0 ? 1 : code;
 }
 
-int run(int argc, char** argv) {
-  using namespace multicpg;
+// Runs the command; a failure comes back as its exit code and error line (printed by
+// ProcessGroup::finish, once for the whole job).
+experiments::Ending run(int argc, char** argv) {
   CLI::App app{"multicpg: multiple chaotic CPGs with learning for legged locomotion"};
   app.require_subcommand(1);
   apps::register_gait(app);
@@ -35,26 +39,31 @@ int run(int argc, char** argv) {
   apps::register_reproduce(app);
   apps::register_figure(app);
   apps::register_landscape(app);
+  const auto failed = [](int code, const char* what) {
+    return experiments::Ending{code, std::string("multicpg: ") + what};
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help
+    if (!experiments::is_primary_process()) return {};
+    return {app.exit(e), ""};  // --help
   } catch (const CLI::ParseError& e) {
-    std::cerr << "multicpg: " << e.what() << "\n";
-    return 2;
+    return failed(2, e.what());
   } catch (const BadInput& e) {
-    std::cerr << "multicpg: " << e.what() << "\n";
-    return 2;
+    return failed(2, e.what());
+  } catch (const experiments::FailedElsewhere& e) {
+    return {e.code(), ""};  // the failing process reports it
   } catch (const std::exception& e) {
-    std::cerr << "multicpg: " << e.what() << "\n";
-    return 1;
+    return failed(1, e.what());
   }
-  return 0;
+  return {};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   multicpg::sim::install_mujoco_handlers();
-  return finish_stdout(run(argc, argv));
+  // Under mpirun, one of the job's processes (experiments/processes.h).
+  multicpg::experiments::ProcessGroup processes(argc, argv);
+  return finish_stdout(processes.finish(run(argc, argv)));
 }

@@ -5,6 +5,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
+#include "experiments/processes.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 
@@ -68,6 +69,7 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, const std::string
 
   ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
                         summarize(model.controller.morphology, tasks, outcome.results)};
+  if (!is_primary_process()) return table;  // the primary writes OUT
   const bool beta = experiment == "beta";
   write_file_atomic(spec.out / "table.csv",
                     to_csv(beta ? beta_data(table.rows) : scenario_data(table.rows)));

@@ -1,6 +1,8 @@
 // Many independent runs on J threads, each saved as soon as it finishes, so an interrupted
 // experiment started again with the same arguments continues where it stopped (SPEC §8).
-// Results never depend on J: each run's seed comes from its key, never from thread or order.
+// Under mpirun the runs are shared among the processes too (experiments/processes.h).
+// Results never depend on J or the processes: each run's seed comes from its key, never from
+// thread, process or order.
 #pragma once
 
 #include <cstdint>
@@ -60,6 +62,10 @@ struct RunnerOutcome {
 // Removes temporary files of killed runs (*.tmp<pid>) from OUT first.
 // If a task throws, no new task starts, the runs in flight finish and are saved, and the first
 // exception is rethrown: starting again repeats only the runs not saved.
+// Under mpirun with several processes, every process calls run_tasks with the same tasks (they
+// run the same command): the primary (rank 0) does all of the above and hands the runs out one
+// at a time to whichever process (or thread of its own) is free, the others compute them on
+// `jobs` threads each; every process returns the same outcome or throws the same error.
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options);
 
