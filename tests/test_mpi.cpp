@@ -25,10 +25,10 @@ const std::string kExperiment =
 #ifdef MULTICPG_MPI
 // mpirun with the root permission (CI runs as root) and its help banners off (-q), as the README
 // tells users; extra processes share the 2 cores (--oversubscribe).
-std::string mpirun(int processes) {
+std::string mpirun(int processes, const std::string& program = MULTICPG_EXE) {
   return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MULTICPG_MPIEXEC
          " -q --oversubscribe -np " +
-         std::to_string(processes) + " " + MULTICPG_EXE + " ";
+         std::to_string(processes) + " " + program + " ";
 }
 #endif
 
@@ -178,6 +178,19 @@ TEST_F(Mpi, AFailingJobEndsWithOneLine) {
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("holds an experiment made with other arguments"), std::string::npos)
       << r.err;
+
+  // A run that fails on another process than the primary: the primary is told, stops handing
+  // out runs, and the job ends with that run's error.
+  r = run_shell(mpirun(3, MULTICPG_FAILING_JOB) + dir_ + "/in-run in-run");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("failed on process"), std::string::npos) << r.err;
+
+  // A process that fails before it reaches the runner: the others, waiting there, end too.
+  r = run_shell(mpirun(3, MULTICPG_FAILING_JOB) + dir_ + "/before-run before-run");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("process 1 cannot start"), std::string::npos) << r.err;
 
   // Commands that cannot share their work among processes say so.
   r = run_shell(mpirun(2) + "reproduce --quick --out " + dir_ + "/reproduce");
