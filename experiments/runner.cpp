@@ -11,6 +11,7 @@
 #include <deque>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <mutex>
 #include <optional>
@@ -373,20 +374,20 @@ RunnerOutcome coordinate(const std::vector<Task>& tasks, const TaskFunction& fn,
       continue;
     }
     const auto from = static_cast<std::size_t>(m->from);
-    if (m->tag == kResult || m->tag == kFailed) {
+    // Our own messages; a damaged one fails the run like any error.
+    const auto read = [&](const std::function<void(nlohmann::json)>& use) {
       --in_flight[from];
       try {
-        nlohmann::json body = nlohmann::json::parse(m->text);
-        const std::size_t index = body.at("index");
-        if (m->tag == kResult) {
-          session->finished(index, std::move(body.at("result")));
-        } else {
-          session->failed(exception_from(body.at("error")));
-        }
+        use(nlohmann::json::parse(m->text));
       } catch (const nlohmann::json::exception&) {
         session->failed(std::current_exception());
       }
+    };
+    if (m->tag == kFailed) {
+      read([&](nlohmann::json body) { session->failed(exception_from(body.at("error"))); });
     }
+    // The answer goes out before the result is saved: the process computes its next run
+    // meanwhile instead of waiting for the disk.
     const std::optional<std::size_t> task = session ? session->next() : std::nullopt;
     if (task) {
       send_message(m->from, kTask, std::to_string(*task));
@@ -394,6 +395,11 @@ RunnerOutcome coordinate(const std::vector<Task>& tasks, const TaskFunction& fn,
     } else {
       send_message(m->from, kStop, "");
       stopped[from] = true;
+    }
+    if (m->tag == kResult) {
+      read([&](nlohmann::json body) {
+        session->finished(body.at("index"), std::move(body.at("result")));
+      });
     }
   }
   if (local.joinable()) local.join();
