@@ -35,6 +35,7 @@ bool joined = false;  // MPI_Init_thread was called by ProcessGroup
 // ProcessGroup::finish must not agree a second time.
 bool agreed_failure = false;
 
+// Completes `request`, sleeping between looks (OpenMPI's blocking calls spin on a core).
 void wait_politely(MPI_Request& request) {
   for (;;) {
     int done = 0;

@@ -322,6 +322,7 @@ class Session {
 // Message tags. To the primary: kAsk (empty), kResult {"index","result"}, kFailed
 // {"index","error"}. From it: kTask (the task index as text) and kStop (empty).
 enum Tag : int { kAsk = 1, kResult, kFailed, kTask, kStop };
+
 // An exception as JSON, so another process can throw its like (same kind, same message).
 nlohmann::json describe(const std::exception_ptr& error) {
   try {
