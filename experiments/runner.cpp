@@ -1,5 +1,6 @@
 #include "experiments/runner.h"
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -514,6 +515,13 @@ std::string run_key(std::string_view group, int run) {
 }
 
 int default_jobs() {
+  // The cores this process may run on: fewer than the machine's when mpirun (or taskset, or a
+  // batch system) binds it.
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (::sched_getaffinity(0, sizeof allowed, &allowed) == 0) {
+    return std::max(1, CPU_COUNT(&allowed));
+  }
   return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
 }
 

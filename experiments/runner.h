@@ -35,7 +35,7 @@ std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key);
 // "<group>_run<NNN>": the key of run `run` of `group`.
 std::string run_key(std::string_view group, int run);
 
-// All cores (1 if unknown).
+// The cores this process may run on (all cores unless it is bound to fewer; at least 1).
 int default_jobs();
 
 struct RunnerOptions {
