@@ -1,7 +1,11 @@
 // multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
 // Exit codes: 0 success, 2 bad input, 1 runtime failure (under mpirun: the job's, printed once).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
+#include <string>
+#include <string_view>
 
 #include "apps/commands.h"
 #include "common/errors.h"
@@ -22,6 +26,27 @@ int finish_stdout(int code) {
   return code == 0 ? 1 : code;
 }
 
+// The commands whose work run_tasks shares among the processes of an MPI job. Every other one
+// would only run again in each process (and `reproduce` runs experiments side by side, which
+// the processes could not follow in step), so under mpirun with -np > 1 they are refused.
+constexpr std::string_view kSharedCommands[] = {"experiment table", "experiment beta", "landscape"};
+
+// BadInput unless the command `app` parsed may run in several processes.
+void check_processes(const CLI::App& app) {
+  if (experiments::process_count() == 1) return;
+  std::string command;
+  for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) {
+    sub = sub->get_subcommands().front();
+    command += (command.empty() ? "" : " ") + sub->get_name();
+  }
+  if (std::find(std::begin(kSharedCommands), std::end(kSharedCommands), command) ==
+      std::end(kSharedCommands)) {
+    throw BadInput("'" + command +
+                   "' runs in one process; under mpirun with -np > 1 only experiment table, "
+                   "experiment beta and landscape share their runs");
+  }
+}
+
 // Runs the command; a failure comes back as its exit code and error line (printed by
 // ProcessGroup::finish, once for the whole job).
 experiments::Ending run(int argc, char** argv) {
@@ -39,6 +64,7 @@ experiments::Ending run(int argc, char** argv) {
   apps::register_reproduce(app);
   apps::register_figure(app);
   apps::register_landscape(app);
+  app.parse_complete_callback([&app] { check_processes(app); });  // before the command runs
   const auto failed = [](int code, const char* what) {
     return experiments::Ending{code, std::string("multicpg: ") + what};
   };

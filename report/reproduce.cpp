@@ -14,7 +14,6 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
-#include "experiments/processes.h"
 #include "experiments/results_page.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
@@ -204,13 +203,6 @@ class Reproduction {
 
 void reproduce(const ReproduceOptions& options) {
   for (const std::string& id : options.only) stage_by_id(id);  // BadInput for unknown ids
-  // Its stages run side by side, each its own experiment, which the processes of an MPI job
-  // could not follow in step.
-  if (experiments::process_count() > 1) {
-    throw BadInput(
-        "reproduce and figure run in one process; under mpirun run the experiments themselves "
-        "(experiment table|beta, landscape)");
-  }
   Reproduction(options).run();
 }
 

@@ -192,11 +192,16 @@ TEST_F(Mpi, AFailingJobEndsWithOneLine) {
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("process 1 cannot start"), std::string::npos) << r.err;
 
-  // Commands that cannot share their work among processes say so.
+  // Commands that cannot share their work among processes say so, before any work.
   r = run_shell(mpirun(2) + "reproduce --quick --out " + dir_ + "/reproduce");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("under mpirun"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("'reproduce' runs in one process"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ + "/reproduce"));
+  r = run_shell(mpirun(2) + "walk --steps 10");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("'walk' runs in one process"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
 #endif
 }
 
