@@ -2,8 +2,9 @@
 // (issue 10). Every process runs the same command on the same arguments; the experiment runner
 // (run_tasks) shares the runs among them, and only the primary process (rank 0) writes files and
 // prints results. A command that runs under mpirun therefore calls run_tasks in every process,
-// the same number of times in the same order (never from two threads at once), and writes or
-// prints only where is_primary_process(); commands that cannot refuse process_count() > 1.
+// the same number of times in the same order (never from two threads at once), writes or prints
+// only where is_primary_process(), and is listed in kSharedCommands (apps/main.cpp); the CLI
+// refuses every other command under mpirun with -np > 1.
 #pragma once
 
 #include <optional>
