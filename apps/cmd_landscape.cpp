@@ -14,6 +14,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/landscape.h"
+#include "experiments/processes.h"
 #include "experiments/scenarios.h"
 #include "report/landscape_figure.h"
 #include "robot/leg_sets.h"
@@ -60,10 +61,11 @@ void run(const LandscapeOptions& o) {
     throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
   }
   const std::vector<learning::Periods> learned = read_learned(o.learned, spec);
-  ensure_writable_dir(o.out);
+  if (experiments::is_primary_process()) ensure_writable_dir(o.out);
 
   const experiments::Landscape landscape = experiments::run_landscape(
       spec, o.out, o.jobs.value_or(experiments::default_jobs()), /*progress=*/true, learned);
+  if (!experiments::is_primary_process()) return;  // the primary draws, writes and prints
   const report::FigureFiles figure = report::draw_landscape(landscape, learned, o.out);
 
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);

@@ -6,6 +6,7 @@
 #include "common/errors.h"
 #include "common/provenance.h"
 #include "experiments/learning_run.h"
+#include "experiments/processes.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "learning/json.h"
@@ -72,6 +73,7 @@ ExperimentTable run_tasks_to_table(const ExperimentSpec& spec, ExperimentKind ex
 
   ExperimentTable table{experiment, std::string(robot::to_string(spec.kind)),
                         summarize(model.controller.morphology, tasks, outcome.results)};
+  if (!is_primary_process()) return table;  // the primary writes OUT
   const bool beta = experiment == ExperimentKind::beta;
   write_file_atomic(spec.out / "table.csv",
                     to_csv(beta ? beta_data(table.rows) : scenario_data(table.rows)));
