@@ -34,10 +34,7 @@ std::string describe_orbit(int period) {
 }
 
 void run_cpg(const CpgOptions& o) {
-  require_cpg_period(o.period, "--period");
   const int client_period = o.client_period.value_or(o.period);
-  require_cpg_period(client_period, "--client-period");
-  require_positive(o.steps, "--steps");
   if (o.sync != "on" && o.sync != "off") {
     throw BadInput("--sync must be 'on' or 'off', got '" + o.sync + "'");
   }

@@ -11,6 +11,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_experiments.h"
+#include "experiments/processes.h"
 #include "experiments/results_page.h"
 #include "experiments/scenarios.h"
 
@@ -39,11 +40,12 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
       compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
   spec.check_windows = o.check_windows;
   spec.sim = sim_options(o.sim);
-  ensure_writable_dir(spec.out);
+  if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
 }
 
 void print_table(const experiments::ExperimentTable& t, const std::string& out) {
+  if (!experiments::is_primary_process()) return;
   std::cout << (t.experiment == experiments::ExperimentKind::beta
                     ? to_markdown(experiments::beta_table(t.rows))
                     : to_markdown(experiments::scenario_table(t.rows)))

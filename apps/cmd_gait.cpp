@@ -28,7 +28,6 @@ struct GaitOptions {
 void run_gait(const GaitOptions& o) {
   const robot::RobotKind kind = robot::parse_robot(o.robot);
   require_gait_period(o.period, "--period");
-  require_positive(o.steps, "--steps");
   if (o.warmup < 0) throw BadInput("--warmup must not be negative");
 
   const neural::ControllerModel model = neural::make_controller_model(kind);

@@ -14,6 +14,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/landscape.h"
+#include "experiments/processes.h"
 #include "experiments/scenarios.h"
 #include "experiments/sweep.h"
 #include "report/landscape_figure.h"
@@ -61,7 +62,7 @@ void run(const LandscapeOptions& o) {
     throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
   }
   const std::vector<learning::Periods> learned = read_learned(o.learned, spec);
-  ensure_writable_dir(o.out);
+  if (experiments::is_primary_process()) ensure_writable_dir(o.out);
   // The same document an experiment file of kind "landscape" holds, resolved the same way.
   const experiments::Sweep sweep =
       experiments::resolve_sweep(experiments::landscape_document(spec));
@@ -76,6 +77,7 @@ void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std:
   const robot::Morphology& morph = robot::morphology(spec.kind);
   const experiments::Landscape landscape =
       experiments::run_landscape(spec, out, jobs, /*progress=*/true, learned);
+  if (!experiments::is_primary_process()) return;  // the primary draws, writes and prints
   const report::FigureFiles figure = report::draw_landscape(landscape, learned, out);
 
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);

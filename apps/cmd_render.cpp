@@ -33,7 +33,6 @@ void run_render(const RenderOptions& o) {
   const WalkChoice choice = parse_walk_flags(o.walk);
   const robot::RobotKind kind = choice.kind;
   const robot::Morphology& morph = robot::morphology(kind);
-  require_positive(o.steps, "--steps");
   std::optional<learning::CompensationOptions> learn;
   if (o.learn) learn = compensation_options(o.learning, morph, choice.faults);
 

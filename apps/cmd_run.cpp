@@ -11,6 +11,7 @@
 #include "common/errors.h"
 #include "common/provenance.h"
 #include "experiments/experiment_file.h"
+#include "experiments/processes.h"
 #include "experiments/scenarios.h"
 #include "report/film.h"
 
@@ -55,7 +56,9 @@ void run(const RunOptions& o) {
     const std::size_t count = experiments::landscape_combinations(*sweep.landscape).size();
     if (shard.count > 1) throw BadInput("--shard: a landscape runs whole (no shards)");
     if (o.check) {
-      std::cout << o.file << ": a landscape of " << count << " combinations\n";
+      if (experiments::is_primary_process()) {
+        std::cout << o.file << ": a landscape of " << count << " combinations\n";
+      }
       return;
     }
     run_landscape_and_report(*sweep.landscape, o.out, jobs);
@@ -73,7 +76,7 @@ void run(const RunOptions& o) {
         << scenarios << " scenarios x " << sweep.resolved.at("runs") << " runs)";
   if (shard.count > 1) count << ", " << in_shard << " in shard " << o.shard;
   if (o.check) {
-    std::cout << count.str() << "\n";
+    if (experiments::is_primary_process()) std::cout << count.str() << "\n";
     return;
   }
   experiments::SweepRunOptions options;
@@ -81,6 +84,7 @@ void run(const RunOptions& o) {
   options.jobs = jobs;
   options.shard = shard;
   const experiments::SweepOutcome outcome = experiments::run_sweep(sweep, options);
+  if (!experiments::is_primary_process()) return;  // the primary prints (processes.h)
   std::cout << count.str() << "\n";
   if (outcome.table) {
     print_table(*outcome.table);

@@ -26,7 +26,6 @@ void run_view(const ViewOptions& o, bool steps_given) {
   spec.start = {choice.periods, choice.warmup};
   spec.faults = choice.faults;
   if (steps_given) {
-    require_positive(o.steps, "--steps");
     for (const sim::Fault& f : spec.faults) {
       if (f.step >= o.steps) {
         throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +

@@ -114,8 +114,6 @@ void run_walk(const WalkOptions& o) {
   sim::WalkSpec& spec = run.spec;
   spec.start = {choice.periods, choice.warmup};
   spec.faults = choice.faults;
-  require_positive(o.steps, "--steps");
-  require_positive(o.window, "--window");
   if (o.settle < 0) throw BadInput("--settle must not be negative");
   spec.settle = o.settle;
   spec.steps = o.steps;

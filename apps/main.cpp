@@ -1,16 +1,22 @@
 // multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
-// Exit codes: 0 success, 2 bad input, 1 runtime failure.
+// Exit codes: 0 success, 2 bad input, 1 runtime failure (under mpirun: the job's, printed once).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
 #include <string>
+#include <string_view>
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "common/errors.h"
 #include "common/provenance.h"
+#include "experiments/processes.h"
 #include "sim/sim.h"
 
 namespace {
+
+using namespace multicpg;
 
 // Flushes standard output: a result that did not reach it (a full disk, a closed pipe) is a
 // failure, not a success. Returns the exit code to use.
@@ -22,8 +28,31 @@ int finish_stdout(int code) {
   return code == 0 ? 1 : code;
 }
 
-int run(int argc, char** argv) {
-  using namespace multicpg;
+// The commands whose work run_tasks shares among the processes of an MPI job. Every other one
+// would only run again in each process (and `reproduce` runs experiments side by side, which
+// the processes could not follow in step), so under mpirun with -np > 1 they are refused.
+constexpr std::string_view kSharedCommands[] = {"experiment table", "experiment beta", "landscape",
+                                                "run"};
+
+// BadInput unless the command `app` parsed may run in several processes.
+void check_processes(const CLI::App& app) {
+  if (experiments::process_count() == 1) return;
+  std::string command;
+  for (const CLI::App* sub = &app; !sub->get_subcommands().empty();) {
+    sub = sub->get_subcommands().front();
+    command += (command.empty() ? "" : " ") + sub->get_name();
+  }
+  if (std::find(std::begin(kSharedCommands), std::end(kSharedCommands), command) ==
+      std::end(kSharedCommands)) {
+    throw BadInput("'" + command +
+                   "' runs in one process; under mpirun with -np > 1 only experiment table, "
+                   "experiment beta, landscape and run share their runs");
+  }
+}
+
+// Runs the command; a failure comes back as its exit code and error line (printed by
+// ProcessGroup::finish, once for the whole job).
+experiments::Ending run(int argc, char** argv) {
   CLI::App app{"multicpg: multiple chaotic CPGs with learning for legged locomotion"};
   app.require_subcommand(1);
   apps::register_gait(app);
@@ -40,6 +69,10 @@ int run(int argc, char** argv) {
   apps::register_landscape(app);
   apps::register_run(app);
   apps::refuse_empty_values(app);
+  app.parse_complete_callback([&app] { check_processes(app); });  // before the command runs
+  const auto failed = [](int code, const char* what) {
+    return experiments::Ending{code, std::string("multicpg: ") + what};
+  };
   try {
     if (argc > 1 && argv[1][0] != '-') {
       try {
@@ -50,21 +83,20 @@ int run(int argc, char** argv) {
     }
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help
+    if (!experiments::is_primary_process()) return {};
+    return {app.exit(e), ""};  // --help
   } catch (const CLI::ParseError& e) {
-    std::cerr << "multicpg: " << e.what() << "\n";
-    return 2;
+    return failed(2, e.what());
   } catch (const OptionError& e) {
-    std::cerr << "multicpg: " << e.key() << " " << e.what() << "\n";
-    return 2;
+    return failed(2, (e.key() + " " + e.what()).c_str());
   } catch (const BadInput& e) {
-    std::cerr << "multicpg: " << e.what() << "\n";
-    return 2;
+    return failed(2, e.what());
+  } catch (const experiments::FailedElsewhere& e) {
+    return {e.code(), ""};  // the failing process reports it
   } catch (const std::exception& e) {
-    std::cerr << "multicpg: " << e.what() << "\n";
-    return 1;
+    return failed(1, e.what());
   }
-  return 0;
+  return {};
 }
 
 }  // namespace
@@ -72,5 +104,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   multicpg::sim::install_mujoco_handlers();
   multicpg::set_command_line(argc, argv);
-  return finish_stdout(run(argc, argv));
+  // Under mpirun, one of the job's processes (experiments/processes.h).
+  multicpg::experiments::ProcessGroup processes(argc, argv);
+  return finish_stdout(processes.finish(run(argc, argv)));
 }

@@ -7,20 +7,6 @@
 #include "sim/walk.h"
 
 namespace multicpg::apps {
-void require_positive(long value, const std::string& flag) {
-  if (value <= 0) throw BadInput(flag + " must be positive, got " + std::to_string(value));
-}
-
-void require_positive(double value, const std::string& flag) {
-  if (!(value > 0.0)) throw BadInput(flag + " must be positive, got " + std::to_string(value));
-}
-
-void require_cpg_period(int period, const std::string& flag) {
-  if (period < 1 || period > 9) {
-    throw BadInput(flag + ": period " + std::to_string(period) + " is outside 1-9");
-  }
-}
-
 void require_gait_period(int period, const std::string& flag) {
   if (!robot::is_gait_period(period)) {
     throw BadInput(flag + ": period " + std::to_string(period) +

@@ -9,12 +9,6 @@
 
 namespace multicpg::apps {
 
-// Throws unless value > 0.
-void require_positive(long value, const std::string& flag);
-void require_positive(double value, const std::string& flag);
-
-// Throws unless `period` is in 1-9 (what the CPG can be set to).
-void require_cpg_period(int period, const std::string& flag);
 // Throws unless `period` is a gait period, naming the allowed ones.
 void require_gait_period(int period, const std::string& flag);
 

@@ -7,6 +7,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "experiments/processes.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "learning/compensation.h"
@@ -240,6 +241,7 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
   for (const nlohmann::json& result : outcome.results) {
     landscape.combinations.push_back(combination_from_json(result, morph));
   }
+  if (!is_primary_process()) return landscape;  // the primary writes OUT
   write_file_atomic(out / "landscape.csv", landscape_csv(landscape));
   write_file_atomic(out / "summary.json",
                     landscape_summary(landscape, learned).dump(kJsonIndent) + "\n");

@@ -1,14 +1,18 @@
 #include "experiments/runner.h"
 
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <deque>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <mutex>
 #include <optional>
@@ -21,6 +25,7 @@
 #include "common/checksum.h"
 #include "common/dir_lock.h"
 #include "common/errors.h"
+#include "experiments/processes.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -80,8 +85,6 @@ nlohmann::json experiment_record(const std::vector<Task>& tasks, const nlohmann:
   return {{"arguments", arguments}, {"runs", keys}};
 }
 
-constexpr const char* kProvenanceField = "provenance";
-
 // Adds to `out` the dotted path of every leaf where `a` and `b` differ
 // ("arguments.sim.servo_gain").
 void differing_keys(const nlohmann::json& a, const nlohmann::json& b, const std::string& path,
@@ -115,11 +118,10 @@ std::string what_differs(const nlohmann::json& stored, const nlohmann::json& now
 
 // Makes OUT/runs and claims OUT for these arguments, or checks an earlier claim matches.
 void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
-                   const nlohmann::json& arguments, const nlohmann::json& provenance) {
+                   const nlohmann::json& arguments) {
   const fs::path record_path = out / "experiment.json";
   const nlohmann::json record = experiment_record(tasks, arguments);
   if (std::optional<nlohmann::json> stored = read_sealed(record_path)) {
-    stored->erase(kProvenanceField);
     if (*stored != record) {
       throw BadInput("'" + out.string() + "' holds an experiment made with other " +
                      what_differs(*stored, record) + "; use another output directory");
@@ -132,9 +134,25 @@ void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
                      "' holds runs but no experiment.json; use another output directory");
     }
   }
-  nlohmann::json saved = record;
-  saved[kProvenanceField] = provenance;
-  write_file_atomic(record_path, sealed(saved).dump(kJsonIndent) + "\n");
+  write_file_atomic(record_path, sealed(record).dump(kJsonIndent) + "\n");
+}
+
+// Appends this session's provenance to OUT/provenance.json, one entry per start or resume. Kept
+// apart from experiment.json, which holds only what decides the results, so equal experiments
+// give equal files wherever and however they ran.
+void record_session(const fs::path& out, const nlohmann::json& provenance) {
+  const fs::path path = out / "provenance.json";
+  nlohmann::json sessions = nlohmann::json::array();
+  if (std::ifstream in(path, std::ios::binary); in) {
+    std::ostringstream text;
+    text << in.rdbuf();
+    sessions = nlohmann::json::parse(text.str(), nullptr, false);
+    if (!sessions.is_array()) {
+      throw BadInput("'" + path.string() + "' is damaged (not a JSON array); delete it");
+    }
+  }
+  sessions.push_back(provenance);
+  write_file_atomic(path, sessions.dump(kJsonIndent) + "\n");
 }
 
 fs::path run_path(const fs::path& out, const Task& task) {
@@ -219,6 +237,294 @@ class Progress {
   Clock::time_point start_;
 };
 
+// The out dir's side of run_tasks, in the only or the primary process: OUT claimed and locked,
+// saved runs loaded, and each new result saved the moment it arrives, whether computed by this
+// process's threads (run_local) or, under MPI, by another process.
+class Session {
+ public:
+  Session(const std::vector<Task>& tasks, const RunnerOptions& options)
+      : tasks_(tasks),
+        out_(options.out_dir),
+        // Held until every run is saved: a second process on OUT is refused instead of mixing
+        // its runs in.
+        lock_(writable(options.out_dir)) {
+    // Under the lock no other multicpg writes here, so temporary files are strays of killed runs.
+    remove_stray_temps(out_);
+    claim_out_dir(out_, tasks, options.arguments);
+    record_session(out_, options.provenance);
+    outcome_.results.resize(tasks.size());
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      if (std::optional<nlohmann::json> saved = load_run(out_, tasks[i])) {
+        outcome_.results[i] = std::move(*saved);
+        ++outcome_.loaded;
+      } else {
+        todo_.push_back(i);
+      }
+    }
+    progress_.emplace(options.progress, tasks.size(), static_cast<std::size_t>(outcome_.loaded));
+  }
+
+  // The index of the next task to compute; none once every task is handed out or one failed.
+  std::optional<std::size_t> next() {
+    if (stop_) return std::nullopt;
+    const std::size_t n = next_++;
+    if (n >= todo_.size()) return std::nullopt;
+    return todo_[n];
+  }
+
+  // Saves and keeps the result of task `i`.
+  void finished(std::size_t i, nlohmann::json result) {
+    try {
+      save_run(out_, tasks_[i], result);
+    } catch (...) {
+      failed(std::current_exception());
+      return;
+    }
+    const std::lock_guard<std::mutex> lock(mutex_);
+    outcome_.results[i] = std::move(result);
+    ++outcome_.ran;
+    progress_->run_finished();
+  }
+
+  // No new task starts; end() rethrows the first failure.
+  void failed(std::exception_ptr error) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!failure_) failure_ = std::move(error);
+    stop_ = true;
+  }
+
+  // Computes tasks on `jobs` threads until none is left or one failed.
+  void run_local(const TaskFunction& fn, int jobs) {
+    auto worker = [&] {
+      while (const std::optional<std::size_t> i = next()) {
+        try {
+          finished(*i, fn(tasks_[*i]));
+        } catch (...) {
+          failed(std::current_exception());
+        }
+      }
+    };
+    const std::size_t threads = std::min(todo_.size(), static_cast<std::size_t>(jobs));
+    std::vector<std::thread> pool;
+    for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+  }
+
+  // Every result, or the first failure rethrown.
+  RunnerOutcome end() {
+    progress_->close();
+    if (failure_) std::rethrow_exception(failure_);
+    return std::move(outcome_);
+  }
+
+ private:
+  static const fs::path& writable(const fs::path& dir) {
+    ensure_writable_dir(dir / "runs");
+    return dir;
+  }
+
+  const std::vector<Task>& tasks_;
+  fs::path out_;
+  DirLock lock_;
+  RunnerOutcome outcome_;
+  std::vector<std::size_t> todo_;
+  std::optional<Progress> progress_;
+  std::atomic<std::size_t> next_{0};
+  std::atomic<bool> stop_{false};
+  std::mutex mutex_;  // guards outcome_, progress_ and failure_
+  std::exception_ptr failure_;
+};
+
+#ifdef MULTICPG_MPI
+// run_tasks across the processes of an MPI job. The primary (rank 0) keeps OUT and hands out the
+// runs one at a time as processes ask for them; each other process asks for as many runs as it
+// has threads, sends each result back as JSON text and asks again, until told to stop. Each
+// message to the primary gets exactly one reply (a task or stop), so when run_tasks returns no
+// message is left in flight. At the end the primary sends every process the results (or the
+// failure), so all of them go on with the same outcome and fail alike.
+
+// Message tags. To the primary: kAsk (empty), kResult {"index","result"}, kFailed
+// {"index","error"}. From it: kTask (the task index as text) and kStop (empty).
+enum Tag : int { kAsk = 1, kResult, kFailed, kTask, kStop };
+
+// An exception as JSON, so another process can throw its like (same kind, same message).
+nlohmann::json describe(const std::exception_ptr& error) {
+  try {
+    std::rethrow_exception(error);
+  } catch (const BadInput& e) {
+    return {{"kind", "bad_input"}, {"message", e.what()}};
+  } catch (const RuntimeFailure& e) {
+    return {{"kind", "runtime_failure"}, {"message", e.what()}};
+  } catch (const std::exception& e) {
+    return {{"kind", "error"}, {"message", e.what()}};
+  } catch (...) {
+    return {{"kind", "error"}, {"message", "unknown error"}};
+  }
+}
+
+std::exception_ptr exception_from(const nlohmann::json& described) {
+  const std::string kind = described.at("kind");
+  const std::string message = described.at("message");
+  if (kind == "bad_input") return std::make_exception_ptr(BadInput(message));
+  if (kind == "runtime_failure") return std::make_exception_ptr(RuntimeFailure(message));
+  return std::make_exception_ptr(std::runtime_error(message));
+}
+
+RunnerOutcome coordinate(const std::vector<Task>& tasks, const TaskFunction& fn,
+                         const RunnerOptions& options) {
+  agree_to_start();
+  std::optional<Session> session;
+  std::exception_ptr setup_failure;
+  try {
+    session.emplace(tasks, options);
+  } catch (...) {
+    setup_failure = std::current_exception();
+  }
+  // This process computes too; its main thread answers the others.
+  std::thread local;
+  if (session) local = std::thread([&] { session->run_local(fn, options.jobs); });
+
+  const int processes = process_count();
+  std::vector<int> in_flight(static_cast<std::size_t>(processes), 0);
+  std::vector<bool> stopped(static_cast<std::size_t>(processes), false);
+  stopped[kPrimaryRank] = true;
+  const auto all_done = [&] {
+    return std::all_of(stopped.begin(), stopped.end(), [](bool s) { return s; }) &&
+           std::all_of(in_flight.begin(), in_flight.end(), [](int n) { return n == 0; });
+  };
+  while (!all_done()) {
+    std::optional<Message> m = take_message(std::nullopt);
+    if (!m) {
+      pause_between_polls();
+      continue;
+    }
+    const auto from = static_cast<std::size_t>(m->from);
+    // Our own messages; a damaged one fails the run like any error.
+    const auto read = [&](const std::function<void(nlohmann::json)>& use) {
+      --in_flight[from];
+      try {
+        use(nlohmann::json::parse(m->text));
+      } catch (const nlohmann::json::exception&) {
+        session->failed(std::current_exception());
+      }
+    };
+    if (m->tag == kFailed) {
+      read([&](nlohmann::json body) { session->failed(exception_from(body.at("error"))); });
+    }
+    // The answer goes out before the result is saved: the process computes its next run
+    // meanwhile instead of waiting for the disk.
+    const std::optional<std::size_t> task = session ? session->next() : std::nullopt;
+    if (task) {
+      send_message(m->from, kTask, std::to_string(*task));
+      ++in_flight[from];
+    } else {
+      send_message(m->from, kStop, "");
+      stopped[from] = true;
+    }
+    if (m->tag == kResult) {
+      read([&](nlohmann::json body) {
+        session->finished(body.at("index"), std::move(body.at("result")));
+      });
+    }
+  }
+  if (local.joinable()) local.join();
+
+  std::exception_ptr failure = setup_failure;
+  RunnerOutcome outcome;
+  if (!failure) {
+    try {
+      outcome = session->end();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+  }
+  if (failure) {
+    broadcast_from_primary(nlohmann::json{{"failure", describe(failure)}}.dump());
+    std::rethrow_exception(failure);
+  }
+  broadcast_from_primary(nlohmann::json{
+      {"results", outcome.results},
+      {"loaded", outcome.loaded},
+      {"ran", outcome.ran}}.dump());
+  return outcome;
+}
+
+RunnerOutcome serve_primary(const std::vector<Task>& tasks, const TaskFunction& fn,
+                            const RunnerOptions& options) {
+  agree_to_start();
+  std::mutex mutex;  // guards assigned, answers and quit
+  std::condition_variable changed;
+  std::deque<std::size_t> assigned;
+  std::deque<std::pair<Tag, std::string>> answers;  // what to send the primary
+  bool quit = false;
+  auto worker = [&] {
+    std::unique_lock lock(mutex);
+    for (;;) {
+      changed.wait(lock, [&] { return quit || !assigned.empty(); });
+      if (assigned.empty()) return;
+      const std::size_t i = assigned.front();
+      assigned.pop_front();
+      lock.unlock();
+      std::pair<Tag, std::string> answer;
+      try {
+        answer = {kResult, nlohmann::json{{"index", i}, {"result", fn(tasks[i])}}.dump()};
+      } catch (...) {
+        answer = {
+            kFailed,
+            nlohmann::json{{"index", i}, {"error", describe(std::current_exception())}}.dump()};
+      }
+      lock.lock();
+      answers.push_back(std::move(answer));
+      changed.notify_all();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 0; t < options.jobs; ++t) pool.emplace_back(worker);
+
+  int busy = 0;  // tasks assigned and not yet answered
+  bool told_to_stop = false;
+  const auto tell = [&](Tag tag, const std::string& text) {
+    send_message(kPrimaryRank, tag, text);
+    const Message reply = wait_for_message(kPrimaryRank);
+    if (reply.tag == kStop) {
+      told_to_stop = true;
+      return;
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    assigned.push_back(std::stoull(reply.text));
+    ++busy;
+    changed.notify_all();
+  };
+  for (;;) {
+    while (!told_to_stop && busy < options.jobs) tell(kAsk, "");
+    if (busy == 0) break;
+    std::pair<Tag, std::string> answer;
+    {
+      std::unique_lock lock(mutex);
+      changed.wait(lock, [&] { return !answers.empty(); });
+      answer = std::move(answers.front());
+      answers.pop_front();
+    }
+    --busy;
+    tell(answer.first, answer.second);
+  }
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    quit = true;
+  }
+  changed.notify_all();
+  for (std::thread& t : pool) t.join();
+
+  const nlohmann::json end = nlohmann::json::parse(broadcast_from_primary(""));
+  if (end.contains("failure")) std::rethrow_exception(exception_from(end.at("failure")));
+  RunnerOutcome outcome;
+  outcome.results = end.at("results").get<std::vector<nlohmann::json>>();
+  outcome.loaded = end.at("loaded");
+  outcome.ran = end.at("ran");
+  return outcome;
+}
+#endif
+
 }  // namespace
 
 std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key) {
@@ -240,6 +546,13 @@ std::string run_key(std::string_view group, int run) {
 }
 
 int default_jobs() {
+  // The cores this process may run on: fewer than the machine's when mpirun (or taskset, or a
+  // batch system) binds it.
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (::sched_getaffinity(0, sizeof allowed, &allowed) == 0) {
+    return std::max(1, CPU_COUNT(&allowed));
+  }
   return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
 }
 
@@ -270,58 +583,18 @@ nlohmann::json parse_sealed(const std::string& text, const fs::path& path) {
 
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options) {
+  // Checked alike in every process, before any of them waits on another.
   validate(options);
   check_keys(tasks);
-  ensure_writable_dir(options.out_dir / "runs");
-  // Held until every run is saved: a second process on OUT is refused instead of mixing its runs
-  // in. Under the lock no other multicpg writes here, so temporary files are strays of killed runs.
-  const DirLock lock(options.out_dir);
-  remove_stray_temps(options.out_dir);
-  claim_out_dir(options.out_dir, tasks, options.arguments, options.provenance);
-
-  RunnerOutcome outcome;
-  outcome.results.resize(tasks.size());
-  std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < tasks.size(); ++i) {
-    if (std::optional<nlohmann::json> saved = load_run(options.out_dir, tasks[i])) {
-      outcome.results[i] = std::move(*saved);
-      ++outcome.loaded;
-    } else {
-      todo.push_back(i);
-    }
+#ifdef MULTICPG_MPI
+  if (process_count() > 1) {
+    return is_primary_process() ? coordinate(tasks, fn, options)
+                                : serve_primary(tasks, fn, options);
   }
-
-  Progress progress(options.progress, tasks.size(), static_cast<std::size_t>(outcome.loaded));
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
-  std::mutex mutex;  // guards outcome, progress and failure
-  std::exception_ptr failure;
-  auto worker = [&] {
-    while (!stop) {
-      const std::size_t n = next++;
-      if (n >= todo.size()) return;
-      const Task& task = tasks[todo[n]];
-      try {
-        nlohmann::json result = fn(task);
-        save_run(options.out_dir, task, result);
-        const std::lock_guard<std::mutex> lock(mutex);
-        outcome.results[todo[n]] = std::move(result);
-        ++outcome.ran;
-        progress.run_finished();
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-        stop = true;
-      }
-    }
-  };
-  const std::size_t threads = std::min(todo.size(), static_cast<std::size_t>(options.jobs));
-  std::vector<std::thread> pool;
-  for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
-  progress.close();
-  if (failure) std::rethrow_exception(failure);
-  return outcome;
+#endif
+  Session session(tasks, options);
+  session.run_local(fn, options.jobs);
+  return session.end();
 }
 
 }  // namespace multicpg::experiments

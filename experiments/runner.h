@@ -1,6 +1,8 @@
 // Many independent runs on J threads, each saved as soon as it finishes, so an interrupted
 // experiment started again with the same arguments continues where it stopped (SPEC §8).
-// Results never depend on J: each run's seed comes from its key, never from thread or order.
+// Under mpirun the runs are shared among the processes too (experiments/processes.h).
+// Results never depend on J or the processes: each run's seed comes from its key, never from
+// thread, process or order.
 #pragma once
 
 #include <cstdint>
@@ -38,7 +40,7 @@ bool key_names_a_file(std::string_view key);
 // "<group>_run<NNN>": the key of run `run` of `group`.
 std::string run_key(std::string_view group, int run);
 
-// All cores (1 if unknown).
+// The cores this process may run on (all cores unless it is bound to fewer; at least 1).
 int default_jobs();
 // Parallel runs a user may ask for: far more than any machine's cores is a typo.
 inline constexpr Limits<int> kJobsLimits{1, 4096};
@@ -49,8 +51,8 @@ struct RunnerOptions {
   // Everything that decides the results (not the thread count), as a JSON object. Stored in
   // OUT/experiment.json; resuming with different arguments is refused.
   nlohmann::json arguments = nlohmann::json::object();
-  // Where the results come from (common/provenance.h): stored in OUT/experiment.json when the
-  // experiment starts, never compared (a resume may come from another shell or machine).
+  // Where the results come from (common/provenance.h): appended to OUT/provenance.json at every
+  // start and resume, never compared (a resume may come from another shell or machine).
   nlohmann::json provenance = nlohmann::json::object();
   bool progress = true;  // runs done, elapsed and time left on stderr
 };
@@ -65,12 +67,16 @@ struct RunnerOutcome {
 };
 
 // Runs every task not yet saved in OUT/runs and returns all results. Throws BadInput if OUT
-// was made with other arguments (naming each differing key, "arguments.learning.seed") or tasks, if
-// a key is repeated or cannot name a file, if another process is running in OUT
+// was made with other arguments (naming each differing key, "arguments.learning.seed") or tasks,
+// if a key is repeated or cannot name a file, if another process is running in OUT
 // (OUT/.multicpg.lock), or if a saved file is damaged (naming it). Removes temporary files of
-// killed runs (*.tmp<pid>) from OUT first. If a task throws, no new task starts, the runs in flight
-// finish and are saved, and the first exception is rethrown: starting again repeats only the runs
-// not saved.
+// killed runs (*.tmp<pid>) from OUT first. If a task throws, no new task starts, the runs in
+// flight finish and are saved, and the first exception is rethrown: starting again repeats only
+// the runs not saved.
+// Under mpirun with several processes, every process calls run_tasks with the same tasks (they
+// run the same command): the primary (rank 0) does all of the above and hands the runs out one
+// at a time to whichever process (or thread of its own) is free, the others compute them on
+// `jobs` threads each; every process returns the same outcome or throws the same error.
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options);
 

@@ -12,6 +12,7 @@
 #include "common/limits.h"
 #include "common/provenance.h"
 #include "experiments/learning_run.h"
+#include "experiments/processes.h"
 #include "experiments/scenarios.h"
 #include "learning/json.h"
 #include "robot/leg_sets.h"
@@ -768,7 +769,7 @@ Sweep resolve_sweep(const json& doc) {
 
 SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   const json arguments = arguments_of(sweep, options.shard);
-  ensure_writable_dir(options.out);
+  if (is_primary_process()) ensure_writable_dir(options.out);
   std::vector<Task> tasks;
   for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
     if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
@@ -790,7 +791,11 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   result.tasks = tasks.size();
   result.loaded = outcome.loaded;
   result.ran = outcome.ran;
-  if (options.shard.count == 1) result.table = write_results(sweep, options.out, outcome.results);
+  if (options.shard.count > 1) return result;
+  // Every process of an MPI job gets here; the primary writes OUT (processes.h).
+  result.table = is_primary_process()
+                     ? write_results(sweep, options.out, outcome.results)
+                     : ExperimentTable{sweep.table, std::string(robot::to_string(sweep.robot)), {}};
   return result;
 }
 

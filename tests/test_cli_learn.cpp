@@ -219,10 +219,25 @@ TEST(CliExperiment, JobsDoNotChangeTheTableAndAKilledRunResumes) {
   const auto after = saved_runs(killed);
   for (const auto& [name, text] : before) EXPECT_EQ(after.at(name), text) << name;
 
-  // Resuming with other arguments is refused.
+  // Each session's provenance is recorded (the killed start and the resume), apart from the
+  // options, so equal experiments keep equal experiment.json files.
+  const auto sessions = nlohmann::json::parse(read_file(killed / "provenance.json"));
+  ASSERT_EQ(sessions.size(), 2u);
+  for (const auto& s : sessions) {
+    EXPECT_NE(s.at("command_line").get<std::string>().find("--out"), std::string::npos);
+    EXPECT_FALSE(s.at("git_commit").get<std::string>().empty());
+    EXPECT_EQ(s.at("mujoco_version"), "2.2.2");
+    EXPECT_FALSE(s.at("cpu").get<std::string>().empty());
+  }
+  EXPECT_EQ(read_file(killed / "experiment.json"),
+            read_file(fs::path(dir) / "one/experiment.json"));
+
+  // Resuming with other arguments is refused, naming what differs.
   const auto other =
-      run_cli("experiment table --robot quadruped --runs 1 --seed 8 --out " + killed.string());
+      run_cli("experiment table --robot quadruped --runs 1 --seed 7 --servo-gain 20 --out " +
+              killed.string());
   EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("arguments.sim.servo_gain"), std::string::npos) << other.err;
   fs::remove_all(dir);
 }
 
