@@ -116,6 +116,28 @@ TEST_F(Mpi, ThreadsInsideProcessesGiveTheFilesOfOneThread) {
   expect_same_as_one_thread(2, "--jobs 2");
 }
 
+// `run FILE.toml` goes through the same runner: an experiment file under two processes gives the
+// files of one thread, its tidy CSVs included.
+TEST_F(Mpi, AnExperimentFileUnderTwoProcessesGivesTheFilesOfOneThread) {
+#ifdef MULTICPG_MPI
+  const std::string file = std::string(MULTICPG_SOURCE_DIR) + "/examples/quick.toml";
+  ASSERT_EQ(run_cli("run " + file + " --jobs 1 --out " + dir_ + "/one").exit_code, 0);
+  const CliResult r = run_shell(mpirun(2) + "run " + file + " --jobs 1 --out " + dir_ + "/two");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto one = result_files(dir_ + "/one");
+  auto two = result_files(dir_ + "/two");
+  for (const char* name : {"runs.csv", "trials.csv"}) {
+    one[name] = read_file(dir_ + "/one/" + name);
+    two[name] = read_file(dir_ + "/two/" + name);
+  }
+  EXPECT_EQ(one.size(), 14u);  // 8 runs, experiment.json, 3 tables, 2 CSVs
+  for (const auto& [name, text] : one) {
+    EXPECT_FALSE(text.empty()) << name;
+    EXPECT_EQ(two[name], text) << name << " differs with 2 processes";
+  }
+#endif
+}
+
 #ifdef MULTICPG_MPI
 // Whether some process still holds OUT's lock (a process of the killed job not yet ended).
 bool locked(const fs::path& out) {
