@@ -25,6 +25,7 @@
 #include "common/checksum.h"
 #include "common/dir_lock.h"
 #include "common/errors.h"
+#include "common/json_diff.h"
 #include "experiments/processes.h"
 
 namespace multicpg::experiments {
@@ -85,33 +86,10 @@ nlohmann::json experiment_record(const std::vector<Task>& tasks, const nlohmann:
   return {{"arguments", arguments}, {"runs", keys}};
 }
 
-// Adds to `out` the dotted path of every leaf where `a` and `b` differ
-// ("arguments.sim.servo_gain").
-void differing_keys(const nlohmann::json& a, const nlohmann::json& b, const std::string& path,
-                    std::vector<std::string>& out) {
-  if (a.is_object() && b.is_object()) {
-    std::set<std::string> names;
-    for (const nlohmann::json* side : {&a, &b}) {
-      for (const auto& item : side->items()) names.insert(item.key());
-    }
-    for (const std::string& n : names) {
-      const std::string child = path.empty() ? n : path + "." + n;
-      if (!a.contains(n) || !b.contains(n)) {
-        out.push_back(child);
-      } else {
-        differing_keys(a.at(n), b.at(n), child, out);
-      }
-    }
-  } else if (a != b) {
-    out.push_back(path);
-  }
-}
-
 // "arguments.seed, arguments.sim.servo_gain": every key whose value differs.
 std::string what_differs(const nlohmann::json& stored, const nlohmann::json& now) {
-  std::vector<std::string> keys;
-  differing_keys(stored, now, "", keys);
   std::string out;
+  const std::vector<std::string> keys = json_differences(stored, now);
   for (const std::string& k : keys) out += (out.empty() ? "" : ", ") + k;
   return out;
 }

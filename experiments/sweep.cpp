@@ -9,6 +9,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/json_diff.h"
 #include "common/limits.h"
 #include "common/provenance.h"
 #include "experiments/learning_run.h"
@@ -191,10 +192,11 @@ T options_from(const json& point, const std::string& section) {
   for (const auto& item : full.items()) {
     if (!point.contains(item.key())) readback.erase(item.key());  // set by each run
   }
-  if (const std::optional<std::string> at = first_difference(point, readback, section)) {
-    const json::json_pointer ptr = pointer_in_section(*at);
-    throw OptionError(*at, "is not a valid value" +
-                               (point.contains(ptr) ? ": " + point.at(ptr).dump() : std::string()));
+  if (const std::vector<std::string> at = json_differences(point, readback, section); !at.empty()) {
+    const json::json_pointer ptr = pointer_in_section(at.front());
+    throw OptionError(at.front(),
+                      "is not a valid value" +
+                          (point.contains(ptr) ? ": " + point.at(ptr).dump() : std::string()));
   }
   return options;
 }
@@ -597,22 +599,6 @@ std::string to_string(const Shard& shard) {
   return std::to_string(shard.index) + "/" + std::to_string(shard.count);
 }
 
-std::optional<std::string> first_difference(const json& a, const json& b, const std::string& path) {
-  if (a.is_object() && b.is_object()) {
-    std::set<std::string> keys;
-    for (const json* j : {&a, &b}) {
-      for (const auto& item : j->items()) keys.insert(item.key());
-    }
-    for (const std::string& k : keys) {
-      if (!a.contains(k) || !b.contains(k)) return child(path, k);
-      if (auto d = first_difference(a.at(k), b.at(k), child(path, k))) return d;
-    }
-    return std::nullopt;
-  }
-  if (a == b) return std::nullopt;
-  return path;
-}
-
 nlohmann::json landscape_document(const LandscapeSpec& spec) {
   return {{"kind", "landscape"},
           {"robot", robot::to_string(spec.kind)},
@@ -841,9 +827,10 @@ ExperimentTable merge_sweeps(const fs::path& out, const std::vector<fs::path>& d
     if (!base) {
       base = *args;
       count = shard.count;
-    } else if (const std::optional<std::string> key = first_difference(*base, *args)) {
+    } else if (const std::vector<std::string> keys = json_differences(*base, *args);
+               !keys.empty()) {
       throw BadInput("'" + dir.string() + "' is not a shard of the experiment in '" +
-                     dirs.front().string() + "' (" + *key + " differs)");
+                     dirs.front().string() + "' (" + keys.front() + " differs)");
     }
     if (shard.count != count || !shards.insert(shard.index).second) {
       throw BadInput("'" + dir.string() + "' holds shard " + to_string(shard) +

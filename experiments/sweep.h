@@ -79,11 +79,6 @@ nlohmann::json landscape_document(const LandscapeSpec& spec);
 // The learning options as a document's "learning": every key but those each run sets.
 nlohmann::json learning_document(const learning::CompensationOptions& options);
 
-// The first dotted path at which two JSON values differ ("learning.annealing.beta"), rooted at
-// `path`; empty when equal.
-std::optional<std::string> first_difference(const nlohmann::json& a, const nlohmann::json& b,
-                                            const std::string& path = "");
-
 struct SweepRunOptions {
   std::filesystem::path out;
   int jobs = default_jobs();
