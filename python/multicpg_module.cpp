@@ -20,7 +20,10 @@
 #include "apps/tunnel_command.h"
 #include "apps/walk_flags.h"
 #include "common/errors.h"
+#include "common/limits.h"
+#include "experiments/experiment_file.h"
 #include "experiments/learning_run.h"
+#include "experiments/sweep.h"
 #include "experiments/tunnel.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
@@ -545,6 +548,26 @@ class Annealer {
 };
 
 }  // namespace
+// Runs an experiment as `multicpg run` does (issue 10): an experiment file, or its document as
+// JSON text, into `out` on `jobs` threads (0: every core); the Python side reads out/runs.csv.
+void run_experiment(const std::string& source, bool is_document, int jobs, const std::string& out) {
+  const experiments::Sweep sweep = is_document
+                                       ? experiments::resolve_sweep(nlohmann::json::parse(source))
+                                       : experiments::load_experiment_file(source);
+  if (sweep.landscape) {
+    throw BadInput("experiment(): a landscape has no tidy table; run it with `multicpg run`");
+  }
+  experiments::SweepRunOptions options;
+  options.out = out;
+  if (jobs != 0) {
+    require_in("jobs", jobs, experiments::kJobsLimits);
+    options.jobs = jobs;
+  }
+  options.progress = false;
+  const py::gil_scoped_release release;
+  experiments::run_sweep(sweep, options);
+}
+
 }  // namespace multicpg::python
 
 namespace mp = multicpg::python;
@@ -557,6 +580,8 @@ PYBIND11_MODULE(_multicpg, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const multicpg::OptionError& e) {
+      PyErr_SetString(PyExc_ValueError, (e.key() + " " + e.what()).c_str());
     } catch (const BadInput& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const RuntimeFailure& e) {
@@ -776,6 +801,10 @@ PYBIND11_MODULE(_multicpg, m) {
       "accepted, acceptance_probability) and, with record=True, path (time, x, y, yaw_deg).\n"
       "observer(trial) is called after every trial with episode, trial, step, periods,\n"
       "deviation_deg and accepted. Releases the GIL while it walks.");
+
+  m.def("_run_experiment", &mp::run_experiment, py::arg("source"), py::arg("is_document"),
+        py::arg("jobs"), py::arg("out"),
+        "Runs an experiment file or document (JSON text) into `out` (multicpg.experiment).");
 
   m.def(
       "tunnel",

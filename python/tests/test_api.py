@@ -210,3 +210,46 @@ def test_render_and_film(hexapod, tmp_path):
     assert (tmp_path / "walk.mp4").stat().st_size > 0
     with pytest.raises(ValueError):
         multicpg.film(sim, str(tmp_path / "walk.gif"), 2)
+
+
+# A small sweep: two leg sets x a grid of two trial caps, one short paper-mode run each.
+SMALL_SWEEP = {"robot": "quadruped", "scenarios": ["R1", "L2"], "runs": 1, "seed": 4,
+               "learning": {"mode": "paper", "steering": "off",
+                            "annealing": {"max_trials": [2, 3]}}}
+SMALL_SWEEP_TOML = """robot = "quadruped"
+scenarios = ["R1", "L2"]
+runs = 1
+seed = 4
+[learning]
+mode = "paper"
+steering = "off"
+[learning.annealing]
+max_trials = [2, 3]
+"""
+
+
+def test_experiment_equals_multicpg_run(tmp_path):
+    file = tmp_path / "small.toml"
+    file.write_text(SMALL_SWEEP_TOML)
+    run_cli("run", str(file), "--jobs", "1", "--out", str(tmp_path / "cli"))
+    from_dict = multicpg.experiment(SMALL_SWEEP, jobs=2)
+    from_file = multicpg.experiment(file, jobs=1, out=tmp_path / "py")
+    assert (tmp_path / "py" / "runs.csv").read_bytes() == (tmp_path / "cli" / "runs.csv").read_bytes()
+    rows = from_dict if isinstance(from_dict, list) else from_dict.to_dict("records")
+    again = from_file if isinstance(from_file, list) else from_file.to_dict("records")
+    assert rows == again
+    assert len(rows) == 4  # 2 leg sets x 2 trial caps
+    assert {r["scenario"] for r in rows} == {"R1", "L2"}
+    assert all(isinstance(r["trials"], int) and r["trials"] <= 3 for r in rows)
+
+
+def test_experiment_bad_values_raise_value_error_naming_the_key(tmp_path):
+    bad_beta = dict(SMALL_SWEEP, learning={"annealing": {"beta": -1}})
+    with pytest.raises(ValueError, match="learning.annealing.beta must be in 0..100, got -1"):
+        multicpg.experiment(bad_beta)
+    with pytest.raises(ValueError, match="robots"):
+        multicpg.experiment(dict(SMALL_SWEEP, robots="hexapod"))
+    with pytest.raises(ValueError, match="scenarios"):
+        multicpg.experiment({"robot": "hexapod"})
+    with pytest.raises(ValueError, match="missing.toml"):
+        multicpg.experiment(tmp_path / "missing.toml")
