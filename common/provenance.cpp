@@ -35,7 +35,10 @@ std::string cpu_model() {
 
 void set_command_line(int argc, const char* const* argv) {
   std::string line;
-  for (int i = 0; i < argc; ++i) line += (i > 0 ? " " : "") + std::string(argv[i]);
+  for (int i = 0; i < argc; ++i) {
+    if (i > 0) line += ' ';
+    line += argv[i];
+  }
   const std::lock_guard<std::mutex> lock(command_line_mutex());
   command_line() = line;
 }
