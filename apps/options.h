@@ -1,7 +1,6 @@
 // Parsing and checks shared by the subcommands; each throws BadInput with one clear line.
 #pragma once
 
-#include <set>
 #include <string>
 #include <vector>
 
