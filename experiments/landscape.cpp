@@ -12,6 +12,8 @@
 #include "experiments/scenarios.h"
 #include "learning/compensation.h"
 #include "neural/postprocessing.h"
+#include "robot/leg_sets.h"
+#include "sim/json.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
@@ -41,20 +43,17 @@ nlohmann::json periods_json(const robot::Morphology& morph,
 }
 
 nlohmann::json arguments(const LandscapeSpec& spec) {
-  const robot::Morphology& morph = robot::morphology(spec.kind);
-  nlohmann::json disabled = nlohmann::json::array();
-  for (std::size_t leg : spec.disabled) disabled.push_back(morph.legs[leg].name);
+  // The simulation options whole (sim/json.h), so a changed controller parameter is refused on
+  // resume like any other option.
   return {{"experiment", "landscape"},
           {"robot", robot::to_string(spec.kind)},
-          {"disabled", disabled},
+          {"disabled", robot::leg_set_json(robot::morphology(spec.kind), spec.disabled)},
           {"period_set", spec.period_set},
           {"windows", spec.windows},
           {"window_steps", spec.window_steps},
           {"threshold_deg", spec.threshold_deg},
           {"controller_warmup", sim::kControllerWarmup},
-          {"control_dt", spec.sim.control_dt},
-          {"physics_dt", spec.sim.physics_dt},
-          {"servo_gain", spec.sim.servo_gain}};
+          {"sim", spec.sim}};
 }
 
 double share(std::size_t part, std::size_t whole) {
@@ -161,9 +160,6 @@ std::string combination_key(const robot::Morphology& morph,
 }
 
 nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph) {
-  nlohmann::json periods = nlohmann::json::object();
-  for (std::size_t leg = 0; leg < morph.size(); ++leg)
-    periods[morph.legs[leg].name] = m.periods[leg];
   nlohmann::json windows = nlohmann::json::array();
   for (const sim::WindowMeasure& w : m.windows) {
     windows.push_back({{"yaw_deg", w.yaw_deg},
@@ -171,14 +167,17 @@ nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& mor
                        {"forward_m", w.forward_m},
                        {"lateral_m", w.lateral_m}});
   }
-  return {{"periods", periods}, {"settle_steps", m.settle_steps},
-          {"windows", windows}, {"worst_deg", m.worst_deg},
-          {"holds", m.holds},   {"first_window_passes", m.first_window_passes}};
+  return {{"periods", robot::period_map_json(morph, m.periods)},
+          {"settle_steps", m.settle_steps},
+          {"windows", windows},
+          {"worst_deg", m.worst_deg},
+          {"holds", m.holds},
+          {"first_window_passes", m.first_window_passes}};
 }
 
 CombinationMeasure combination_from_json(const nlohmann::json& j, const robot::Morphology& morph) {
   CombinationMeasure m;
-  for (const robot::Leg& leg : morph.legs) m.periods.push_back(j.at("periods").at(leg.name));
+  m.periods = robot::period_map_from_json(morph, j.at("periods"));
   m.settle_steps = j.at("settle_steps");
   for (const nlohmann::json& w : j.at("windows")) {
     m.windows.push_back({w.at("yaw_deg"), w.at("path_deg"), w.at("forward_m"), w.at("lateral_m")});

@@ -23,21 +23,12 @@ nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind
           {"record", {{"check_windows", spec.check_windows}}}};
 }
 
-// A preset's document resolved; a bad value is named by its key.
-Sweep resolve_preset(const nlohmann::json& document) {
-  try {
-    return resolve_sweep(document);
-  } catch (const OptionError& e) {
-    throw BadInput(e.key() + " " + e.what());
-  }
-}
-
 ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& document) {
   SweepRunOptions options;
   options.out = spec.out;
   if (spec.jobs > 0) options.jobs = spec.jobs;
   options.progress = spec.progress;
-  return *run_sweep(resolve_preset(document), options).table;
+  return *run_sweep(resolve_sweep(document), options).table;
 }
 
 }  // namespace
@@ -86,9 +77,9 @@ nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind e
   if (experiment == ExperimentKind::grid) {
     throw std::invalid_argument("a grid is an experiment file's, not a preset's");
   }
-  return resolve_preset(experiment == ExperimentKind::beta
-                            ? beta_study_document(spec, kBetaStudyValues)
-                            : scenario_table_document(spec))
+  return resolve_sweep(experiment == ExperimentKind::beta
+                           ? beta_study_document(spec, kBetaStudyValues)
+                           : scenario_table_document(spec))
       .resolved;
 }
 
