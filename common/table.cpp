@@ -132,4 +132,8 @@ std::string shortest(double value) {
   return std::isfinite(value) ? fmt::format("{}", value) : "NaN";
 }
 
+std::string counted(long count, std::string_view noun) {
+  return fmt::format("{} {}{}", count, noun, count == 1 ? "" : "s");
+}
+
 }  // namespace multicpg

@@ -43,5 +43,7 @@ std::string fixed(double value, int decimals);
 std::string mean_pm_sd(double mean, double sd, int decimals);
 // Shortest text that reads back as the same double ("0.1", "1e-05"); "NaN" when not finite.
 std::string shortest(double value);
+// "1 run", "3 runs": a count and its noun, plural with "s" unless the count is 1.
+std::string counted(long count, std::string_view noun);
 
 }  // namespace multicpg

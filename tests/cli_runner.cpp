@@ -69,4 +69,17 @@ void expect_bad_input(const std::string& args, const std::string& must_mention) 
   EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
 }
 
+bool is_png(const std::filesystem::path& path) {
+  const std::string bytes = read_file(path);
+  return bytes.size() > 100 && bytes.compare(1, 3, "PNG") == 0;
+}
+
+int video_frames(const std::filesystem::path& mp4) {
+  const CliResult r = run_shell(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+      "-of csv=p=0 '" +
+      mp4.string() + "'");
+  return r.exit_code == 0 ? std::stoi(r.out) : -1;
+}
+
 }  // namespace multicpg::testing

@@ -1,6 +1,7 @@
 // Runs the real multicpg binary for end-to-end tests.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace multicpg::testing {
@@ -27,6 +28,10 @@ int count_lines(const std::string& text);
 // A whole file (binary-safe); empty when it cannot be read.
 std::string read_file(const std::string& path);
 std::string first_line(const std::string& text);
+// True when the file starts with PNG's signature and is not trivially short.
+bool is_png(const std::filesystem::path& path);
+// Frames of a video, counted by decoding it (ffprobe); -1 when ffprobe fails.
+int video_frames(const std::filesystem::path& mp4);
 
 // Bad input: `multicpg <args>` exits 2 with exactly one line on stderr that mentions
 // `must_mention`, and prints nothing on stdout (GoogleTest expectations).

@@ -203,11 +203,7 @@ TEST_F(RenderTest, VideoHasEveryFrame) {
   EXPECT_FALSE(fs::exists(mp4)) << "the video must appear only when finished";
   video.finish();
   ASSERT_TRUE(fs::exists(mp4));
-  const std::string frames = run_stdout(
-      "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
-      "-of csv=p=0 '" +
-      mp4.string() + "'");
-  EXPECT_EQ(std::stoi(frames), kVideoFrames);
+  EXPECT_EQ(multicpg::testing::video_frames(mp4), kVideoFrames);
   const std::string codec = run_stdout(
       "ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,width,height "
       "-of csv=p=0 '" +

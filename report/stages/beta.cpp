@@ -24,8 +24,8 @@ Section beta_stage(const StageContext& ctx) {
               " runs per β: β = 0 (random search) needs the most trials; the search shortens as "
               "β grows; a large β (greedy) can get stuck above " +
               fixed(experiments::paper::kThresholdDeg, 0) + "°.",
-          std::to_string(t.rows.empty() ? 0 : t.rows.front().runs) +
-              " runs per β; the most trials on average at β = " +
+          counted(t.rows.empty() ? 0 : t.rows.front().runs, "run") +
+              " per β; the most trials on average at β = " +
               (most ? most->group + " (" + fixed(most->trials.mean, 1) + ")" : "-") + ".",
           {ctx.image(f)},
           {},

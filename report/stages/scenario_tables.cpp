@@ -39,7 +39,7 @@ Section scenario_table(const StageContext& ctx, robot::RobotKind kind) {
                   : "R1, R2, L1, L2 disabled, " + paper_runs +
                         " runs each: the controller finds feasible combinations (no numbers in "
                         "the text).",
-          std::to_string(runs) + " runs: " + std::to_string(converged) + " converged below " +
+          counted(runs, "run") + ": " + std::to_string(converged) + " converged below " +
               threshold + ", " + std::to_string(within) + " of them within " + trials +
               " (mean ± SD over runs in the table).",
           {ctx.image(f)},

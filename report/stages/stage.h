@@ -47,6 +47,9 @@ struct Stage {
   Section (*run)(const StageContext&);
   // Stages whose saved results this one reads (it starts after them).
   std::vector<std::string_view> needs = {};
+  // Started before the stages without it (in this table's order, once its needs are done): the
+  // long stages and the stages they need, so that short stages fill the end (issue 12).
+  bool early = false;
 };
 
 // Every stage, in the report's order.

@@ -1,0 +1,74 @@
+// `multicpg reproduce --quick` end to end (issues 5 and 12): every figure and video, the report
+// opened in headless Chromium, and a second start that redoes nothing. Its own executable so
+// ctest can give it both cores (PROCESSORS 2, tests/CMakeLists.txt): it runs experiments on
+// every core, and beside another test it would take twice as long.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+
+#include "tests/cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace multicpg::testing;
+
+// Runs headless Chromium on a page; returns its DOM and puts the browser's log in `log`.
+std::string open_in_chromium(const fs::path& page, std::string& log) {
+  const std::string profile = make_temp_dir("chromium-");
+  const auto r = run_shell(
+      "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" +
+      profile +
+      " --enable-logging=stderr --v=0 "
+      "--virtual-time-budget=20000 --dump-dom file://" +
+      fs::absolute(page).string());
+  log = r.err;
+  fs::remove_all(profile);
+  return r.out;
+}
+
+TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
+  const std::string dir = make_temp_dir("reproduce-");
+  const auto r = run_cli("reproduce --quick --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path root(dir);
+  ASSERT_TRUE(fs::exists(root / "index.html"));
+
+  // Every figure of the paper, as PNG and SVG with its CSV; not blank (gnuplot draws > 5 kB).
+  for (const char* stem :
+       {"fig02-gaits", "fig06-cpg-sync", "fig08-learning-trace", "fig09-motor", "fig10-contacts",
+        "fig11-hexapod", "fig13-quadruped", "fig14-beta", "trunk-path-r1", "tunnel-path-R1"}) {
+    const fs::path png = root / "figures" / (std::string(stem) + ".png");
+    EXPECT_TRUE(is_png(png)) << png;
+    EXPECT_GT(fs::file_size(png), 5000u) << png;
+    EXPECT_NE(read_file(root / "figures" / (std::string(stem) + ".svg")).find("</svg>"),
+              std::string::npos)
+        << stem;
+    EXPECT_TRUE(fs::exists(root / "figures" / (std::string(stem) + ".csv"))) << stem;
+  }
+  // The tripod video plays the quick run's 160 steps in real time: one frame per step.
+  EXPECT_EQ(video_frames(root / "videos/walk-tripod.mp4"), 160);
+  EXPECT_TRUE(fs::exists(root / "results.md"));
+
+  std::string log;
+  const std::string dom = open_in_chromium(root / "index.html", log);
+  EXPECT_NE(dom.find("data-media=\"ok\""), std::string::npos)
+      << dom.substr(0, dom.find("<h1>")) << "\n"
+      << log;
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.find(":CONSOLE") != std::string::npos) ADD_FAILURE() << "console: " << line;
+  }
+
+  // Started again with the same options: nothing is redone.
+  const auto again = run_cli("reproduce --quick --out " + dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("already done"), std::string::npos);
+  EXPECT_EQ(run_cli("reproduce --out " + dir).exit_code, 2) << "other options, same folder";
+  fs::remove_all(dir);
+}
+
+}  // namespace
