@@ -55,7 +55,10 @@ LearningRun run_learning(const sim::SimModel& model, const learning::Compensatio
     const sim::Pose2 start = stepper.pose();
     stepper.steps(n);
     if (n == options.window_steps) {
-      run.after_windows.push_back(sim::measure_window(start, stepper.pose()));
+      run.after_windows.push_back(sim::measure_window(
+          start, stepper.pose(),
+          run.result.steering ? std::optional<double>(run.result.steering->course.yaw_deg)
+                              : std::nullopt));
     }
     walked += n;
   }

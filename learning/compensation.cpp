@@ -49,7 +49,9 @@ class Walk {
     const sim::Pose2 start = walker_.pose();
     cut_sum_ = 0.0;
     steps(options_.window_steps);
-    const sim::WindowMeasure m = sim::measure_window(start, walker_.pose());
+    const sim::WindowMeasure m = sim::measure_window(
+        start, walker_.pose(),
+        steering_ ? std::optional<double>(steering_->course.yaw_deg) : std::nullopt);
     if (!std::isfinite(m.yaw_deg) || !std::isfinite(m.path_deg)) {
       throw RuntimeFailure("the walker's pose is not a finite number");
     }
@@ -358,10 +360,13 @@ class RobustRun {
         continue;
       }
       if (faults > 0) {
+        // The window a fault came in measures the transient, not the controller that walks on:
+        // neither a trigger for learning nor one of the windows after the last fault.
         monitored = 0;
         result_.final_windows.clear();
+        continue;
       }
-      if (error(m) > params_.threshold_deg && faults == 0 && options_.learn_periods &&
+      if (error(m) > params_.threshold_deg && options_.learn_periods &&
           static_cast<int>(result_.episodes.size()) < options_.max_episodes) {
         episode(error(m));
         monitored = 0;
@@ -371,7 +376,7 @@ class RobustRun {
       result_.final_windows.push_back(m);
       // Held, or nothing left to learn with (steering alone, every episode used): either way
       // the window counts toward the monitored windows that end the run.
-      if (faults == 0) ++monitored;
+      ++monitored;
     }
     finish();
     return std::move(result_);

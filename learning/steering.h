@@ -18,9 +18,14 @@
 namespace multicpg::learning {
 
 struct SteeringParams {
-  double heading_gain = 0.1;    // swing cut per degree of heading error (10 deg: full cut)
-  double lateral_gain = 20.0;   // wanted heading change per metre off the course line, deg/m
-  double integral_gain = 0.02;  // and per metre-step of accumulated offset, deg/(m step)
+  double heading_gain = 0.1;  // swing cut per degree of heading error (10 deg: full cut)
+  // The outer loop's time constant at 3 cm/s is 180 / (pi v lateral_gain) = 32 s, several times
+  // the delay lines' 126 steps (4.7 s); 20 deg/m (95 s) let the robot drift 7-11 deg off its line
+  // for several windows. The integral time lateral_gain / integral_gain = 1000 steps: 600 (0.1)
+  // swung the heading +-10 deg over a few windows. Chosen by held windows after learning
+  // (docs/learning.md, "Does the final controller hold?").
+  double lateral_gain = 60.0;   // wanted heading change per metre off the course line, deg/m
+  double integral_gain = 0.06;  // and per metre-step of accumulated offset, deg/(m step)
   double max_heading_offset_deg = 30.0;  // the wanted heading stays this close to the course
   // Robust mode judges a window as failed when the reflex had to cut more than this share of a
   // side's swing on average: the periods must do most of the compensating, or the robot crawls

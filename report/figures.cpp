@@ -40,7 +40,7 @@ constexpr std::array<FigureInfo, 10> kFigures{{
      "Fig. 14: trials to converge for each annealing factor beta"},
     {"trunk-path", "trunk-path-r1", "trunk_path.gp", 1000, 700,
      "Trunk path seen from above, R1 disabled, before and after learning"},
-    {"landscape", "landscape_map", "landscape.gp", 1200, 700,
+    {"landscape", "landscape-map", "landscape.gp", 1200, 700,
      "Landscape: worst deviation of every combination of working-leg periods (issue 8)"},
 }};
 

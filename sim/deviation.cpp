@@ -12,11 +12,12 @@ double WindowMeasure::worst_deg() const {
   return std::max(std::abs(yaw_deg), std::abs(path_deg));
 }
 
-WindowMeasure measure_window(const Pose2& start, const Pose2& end) {
+WindowMeasure measure_window(const Pose2& start, const Pose2& end,
+                             std::optional<double> course_yaw_deg) {
   constexpr double kDegPerRad = 180.0 / std::numbers::pi;
   WindowMeasure m;
   m.yaw_deg = wrap_degrees(end.yaw_deg - start.yaw_deg);
-  const double heading = start.yaw_deg / kDegPerRad;
+  const double heading = course_yaw_deg.value_or(start.yaw_deg) / kDegPerRad;
   const double dx = end.x - start.x;
   const double dy = end.y - start.y;
   m.forward_m = dx * std::cos(heading) + dy * std::sin(heading);

@@ -1,7 +1,10 @@
 // What one measuring window says about the robot's course (SPEC §6, issue 8): the yaw change of
 // the paper's criterion, and the path angle of its Table 1 (the trunk's displacement against the
-// heading at the window's start), which sees a sideways crab that the yaw change cannot.
+// course: the heading at the window's start, or the line a steering reflex keeps), which sees a
+// sideways crab that the yaw change cannot.
 #pragma once
+
+#include <optional>
 
 namespace multicpg::sim {
 
@@ -15,7 +18,7 @@ struct Pose2 {
 struct WindowMeasure {
   double yaw_deg = 0.0;    // wrap(yaw(end) - yaw(start)), + = left turn (SPEC §6)
   double path_deg = 0.0;   // atan2(lateral, forward) of the displacement, + = left (Table 1)
-  double forward_m = 0.0;  // displacement along the heading at the window's start
+  double forward_m = 0.0;  // displacement along the course (see measure_window)
   double lateral_m = 0.0;  // and to its left
   // Mean swing cut of a steering reflex over the window, 0..1 (0 when none steers;
   // learning/steering.h).
@@ -29,6 +32,12 @@ struct WindowMeasure {
 // backwards): it is reported as +-90 deg, so a robot that does not advance never "holds".
 inline constexpr double kMinForwardForPathM = 1e-3;
 
-WindowMeasure measure_window(const Pose2& start, const Pose2& end);
+// `course_yaw_deg`: the direction of the course the robot keeps (a steering reflex's line,
+// learning/steering.h), against which forward, lateral and the path angle are measured, as Table 1
+// measures them against the tunnel's axis; without one, the heading at the window's start. A
+// robot that holds its line with its body turned (a compensated crab) walks straight on the
+// course, which the heading at the window's start would report as a constant path angle.
+WindowMeasure measure_window(const Pose2& start, const Pose2& end,
+                             std::optional<double> course_yaw_deg = std::nullopt);
 
 }  // namespace multicpg::sim

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 using namespace multicpg::testing;
 
 TEST(CliLearn, PrintsTheTraceAndTheFinalCombination) {
-  const auto r = run_cli("learn --robot hexapod --disable R1 --seed 2");
+  const auto r = run_cli("learn --robot hexapod --disable R1,R3,L2 --seed 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("trial  R1  R2  R3  L1  L2  L3"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("4x"), std::string::npos) << "disabled legs are marked";
@@ -26,7 +26,7 @@ TEST(CliLearn, PrintsTheTraceAndTheFinalCombination) {
 }
 
 TEST(CliLearn, JsonHasTheDocumentedFields) {
-  const auto r = run_cli("learn --disable R1 --seed 2 --json");
+  const auto r = run_cli("learn --disable R1,R3,L2 --seed 2 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j.at("converged").is_boolean());
@@ -41,7 +41,7 @@ TEST(CliLearn, JsonHasTheDocumentedFields) {
     EXPECT_TRUE(t.at("accepted").is_boolean());
   }
   // Same seed, same run.
-  EXPECT_EQ(run_cli("learn --disable R1 --seed 2 --json").out, r.out);
+  EXPECT_EQ(run_cli("learn --disable R1,R3,L2 --seed 2 --json").out, r.out);
 }
 
 TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
@@ -124,10 +124,10 @@ TEST(CliLearn, PaperModeReproducesTheRecordedTraces) {
   EXPECT_EQ(checked, 4);
 }
 
-// Robust mode on the real robot: R1 fails while it walks; learning holds and the JSON says so,
-// one episode per trigger, the monitored windows all under the threshold.
+// Robust mode on the real robot: R1 and R2 fail while it walks; learning holds and the JSON says
+// so, one episode per trigger, the monitored windows all under the threshold.
 TEST(CliLearn, RobustRunHoldsAndReportsItsEpisodes) {
-  const auto r = run_cli("learn --disable R1 --seed 1 --json");
+  const auto r = run_cli("learn --disable R1,R2 --seed 1 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("mode"), "robust");
@@ -141,9 +141,25 @@ TEST(CliLearn, RobustRunHoldsAndReportsItsEpisodes) {
   }
 }
 
+// R1 alone: the steering reflex holds the course from the window after the fault (with all
+// periods 4 and less than max_effort of a side's swing), so no window asks for learning.
+TEST(CliLearn, RobustReflexAloneHoldsR1) {
+  const auto r = run_cli("learn --disable R1 --seed 1 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("status"), "no deviation");
+  EXPECT_TRUE(j.at("episodes").empty());
+  ASSERT_EQ(j.at("final_windows").size(), 6u);
+  for (const auto& w : j.at("final_windows")) {
+    EXPECT_LT(std::abs(w.at("yaw_deg").get<double>()), 8.0);
+    EXPECT_LT(std::abs(w.at("path_deg").get<double>()), 8.0);
+    EXPECT_LT(w.at("steering_effort").get<double>(), 0.75);
+  }
+}
+
 // A second fault learns again; a recovery of every leg resynchronises at the master's period.
 TEST(CliLearn, FaultsThatComeAndGo) {
-  const auto two = run_cli("learn --fault R1@0 --fault R3@20000 --seed 1 --json");
+  const auto two = run_cli("learn --fault R1,R3@0 --fault L2@20000 --seed 1 --json");
   ASSERT_EQ(two.exit_code, 0) << two.err;
   const auto a = nlohmann::json::parse(two.out);
   // At least one episode for each fault (monitoring may add one when a held gait drifts later).

@@ -28,7 +28,8 @@ TEST(CliRender, PictureOfTheLastStepAndOfALearningRun) {
   const std::string dir = make_temp_dir("render-");
   ASSERT_EQ(run_cli("render --robot quadruped --steps 30 --out " + dir + "/q.png").exit_code, 0);
   EXPECT_TRUE(is_png(fs::path(dir) / "q.png"));
-  const auto learn = run_cli("render --learn --disable R1 --speed 50 --out " + dir + "/learn.mp4");
+  const auto learn =
+      run_cli("render --learn --mode paper --disable R1 --speed 50 --out " + dir + "/learn.mp4");
   ASSERT_EQ(learn.exit_code, 0) << learn.err;
   EXPECT_NE(learn.out.find("converged"), std::string::npos) << learn.out;
   EXPECT_GT(video_frames(fs::path(dir) / "learn.mp4"), 10);

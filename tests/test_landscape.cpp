@@ -198,7 +198,7 @@ TEST_F(LandscapeCli, QuadrupedL2MatchesABruteForceWalk) {
   EXPECT_EQ(summary.at("count"), 27);
   EXPECT_EQ(summary.at("holding"), holding);
   EXPECT_EQ(summary.at("top").size(), experiments::kLandscapeTop);
-  EXPECT_TRUE(fs::file_size(dir_ + "/landscape_map.png") > 0);
+  EXPECT_TRUE(fs::file_size(dir_ + "/landscape-map.png") > 0);
 }
 
 TEST_F(LandscapeCli, ResumesAndRefusesAnotherLandscape) {
@@ -252,7 +252,7 @@ TEST_F(LandscapeCli, MarksLearnedCombinations) {
   std::set<int> ranks;
   for (const nlohmann::json& e : learned) ranks.insert(e.at("rank").get<int>());
   EXPECT_TRUE(*ranks.begin() >= 1 && *ranks.rbegin() <= 8);
-  const CsvTable figure = read_csv(dir_ + "/out/landscape_map.csv");
+  const CsvTable figure = read_csv(dir_ + "/out/landscape-map.csv");
   const std::size_t column = figure.column("learned");
   EXPECT_EQ(std::count_if(figure.rows.begin(), figure.rows.end(),
                           [&](const auto& row) { return row[column] == "1"; }),

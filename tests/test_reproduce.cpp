@@ -38,9 +38,9 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
   ASSERT_TRUE(fs::exists(root / "index.html"));
 
   // Every figure of the paper, as PNG and SVG with its CSV; not blank (gnuplot draws > 5 kB).
-  for (const char* stem :
-       {"fig02-gaits", "fig06-cpg-sync", "fig08-learning-trace", "fig09-motor", "fig10-contacts",
-        "fig11-hexapod", "fig13-quadruped", "fig14-beta", "trunk-path-r1", "tunnel-path-R1"}) {
+  for (const char* stem : {"fig02-gaits", "fig06-cpg-sync", "fig08-learning-trace", "fig09-motor",
+                           "fig10-contacts", "fig11-hexapod", "fig13-quadruped", "fig14-beta",
+                           "trunk-path-r1", "tunnel-path-R1", "landscape-map"}) {
     const fs::path png = root / "figures" / (std::string(stem) + ".png");
     EXPECT_TRUE(is_png(png)) << png;
     EXPECT_GT(fs::file_size(png), 5000u) << png;

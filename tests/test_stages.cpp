@@ -28,13 +28,6 @@ TEST(Stages, EveryFigureIsDrawnByExactlyOneStage) {
     }
   }
   for (const FigureInfo& f : known_figures()) {
-    // The landscape map is drawn by `multicpg landscape` (hours of walking for the hexapod),
-    // not by a reproduce stage.
-    if (f.name == std::string_view("landscape")) {
-      EXPECT_EQ(drawn[f.name], 0);
-      EXPECT_THROW(stage_of_figure(f.name), BadInput);
-      continue;
-    }
     EXPECT_EQ(drawn[f.name], 1) << f.name;
     EXPECT_EQ(stage_of_figure(f.name).empty(), false);
   }

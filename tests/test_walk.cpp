@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "common/errors.h"
+#include "sim/deviation.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -310,6 +311,21 @@ TEST(Walk, WindowDeviationsWrapAndSign) {
   EXPECT_EQ(sim::window_deviations(yaw, 1, 2), (std::vector<double>{0.0}));
   EXPECT_DOUBLE_EQ(wrap_degrees(540.0), 180.0);
   EXPECT_DOUBLE_EQ(wrap_degrees(-180.0), 180.0);
+}
+
+// A robot walking along +x with its body turned 10 deg left (a compensated crab): against its
+// heading the path is 10 deg to the right; against its course line (+x) it is straight.
+TEST(Walk, PathAngleAgainstTheHeadingOrTheCourse) {
+  const sim::Pose2 start{0.0, 0.0, 10.0};
+  const sim::Pose2 end{0.5, 0.0, 10.0};
+  const sim::WindowMeasure heading = sim::measure_window(start, end);
+  EXPECT_NEAR(heading.path_deg, -10.0, 1e-9);
+  EXPECT_NEAR(heading.yaw_deg, 0.0, 1e-12);
+  const sim::WindowMeasure course = sim::measure_window(start, end, 0.0);
+  EXPECT_NEAR(course.path_deg, 0.0, 1e-12);
+  EXPECT_NEAR(course.forward_m, 0.5, 1e-12);
+  // Drifting off the line shows against the course whatever the heading.
+  EXPECT_NEAR(sim::measure_window(start, {0.5, -0.5, 10.0}, 0.0).path_deg, -45.0, 1e-9);
 }
 
 TEST(Physics, NanStateStopsTheRunNamingTheStep) {

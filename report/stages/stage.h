@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,9 @@ struct Sizes {
   int film_speed;         // controller steps per video frame of the learning film
   int tunnel_film_speed;  // and of the tunnel films (slower: the walls are the point)
   long walk_film_steps;   // steps of the walking videos, filmed in real time
+  int landscape_windows;  // windows each combination of the landscape is measured over
+  // Periods each working leg takes in the landscape; empty = the annealing's whole period set.
+  std::span<const int> landscape_periods;
 };
 
 // What a stage gets: the options, the sizes and the report folder.
@@ -65,6 +69,7 @@ Section hexapod_table_stage(const StageContext& ctx);
 Section quadruped_table_stage(const StageContext& ctx);
 Section beta_stage(const StageContext& ctx);
 Section tunnel_stage(const StageContext& ctx);
+Section landscape_stage(const StageContext& ctx);
 
 // Leg names in morphology order (the figures' legend).
 std::vector<std::string> leg_names(const robot::Morphology& morph);
