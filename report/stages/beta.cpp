@@ -7,9 +7,11 @@
 namespace multicpg::report {
 
 Section beta_stage(const StageContext& ctx) {
-  const experiments::ExperimentTable t = experiments::run_beta_study(
-      ctx.experiment(robot::RobotKind::hexapod, "beta", ctx.sizes.beta_runs),
-      experiments::kBetaStudyValues);
+  experiments::ExperimentSpec spec =
+      ctx.experiment(robot::RobotKind::hexapod, "beta", ctx.sizes.beta_runs);
+  spec.base.annealing.max_trials = ctx.sizes.beta_max_trials;
+  const experiments::ExperimentTable t =
+      experiments::run_beta_study(spec, experiments::kBetaStudyValues);
   std::vector<BetaSummary> bars;
   const experiments::GroupSummary* most = nullptr;
   for (const experiments::GroupSummary& g : t.rows) {
@@ -24,8 +26,9 @@ Section beta_stage(const StageContext& ctx) {
               " runs per β: β = 0 (random search) needs the most trials; the search shortens as "
               "β grows; a large β (greedy) can get stuck above " +
               fixed(experiments::paper::kThresholdDeg, 0) + "°.",
-          counted(t.rows.empty() ? 0 : t.rows.front().runs, "run") +
-              " per β; the most trials on average at β = " +
+          counted(t.rows.empty() ? 0 : t.rows.front().runs, "run") + " per β, at most " +
+              std::to_string(ctx.sizes.beta_max_trials) +
+              " trials each; the most trials on average at β = " +
               (most ? most->group + " (" + fixed(most->trials.mean, 1) + ")" : "-") + ".",
           {ctx.image(f)},
           {},

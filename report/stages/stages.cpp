@@ -13,7 +13,7 @@ const std::vector<Stage>& reproduce_stages() {
       {"walking", {}, walking_stage},
       {"learning-r1", {"learning-trace", "motor", "contacts", "trunk-path"}, learning_r1_stage},
       {"hexapod-table", {"learning-hexapod"}, hexapod_table_stage, {}, /*early=*/true},
-      {"quadruped-table", {"learning-quadruped"}, quadruped_table_stage},
+      {"quadruped-table", {"learning-quadruped"}, quadruped_table_stage, {}, /*early=*/true},
       {"beta", {"beta"}, beta_stage, {}, /*early=*/true},
       // "Our learning" in the tunnel is the hexapod table's most frequent learned combination.
       {"tunnel", {}, tunnel_stage, {"hexapod-table"}, /*early=*/true},
