@@ -70,15 +70,6 @@ nlohmann::json sealed(nlohmann::json record) {
   return record;
 }
 
-// The sealed record saved in `path`, if the file exists.
-std::optional<nlohmann::json> read_sealed(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_sealed(text.str(), path);
-}
-
 // What OUT/experiment.json holds and a resume must match: the arguments and the run keys.
 nlohmann::json experiment_record(const std::vector<Task>& tasks, const nlohmann::json& arguments) {
   nlohmann::json keys = nlohmann::json::array();
@@ -573,6 +564,14 @@ RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
   Session session(tasks, options);
   session.run_local(fn, options.jobs);
   return session.end();
+}
+
+std::optional<nlohmann::json> read_sealed(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_sealed(text.str(), path);
 }
 
 }  // namespace multicpg::experiments

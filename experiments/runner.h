@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -85,5 +86,7 @@ RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
 // throws BadInput naming `path` when `text` is not a JSON object, has no checksum or the checksum
 // does not match (an edited or damaged file).
 nlohmann::json parse_sealed(const std::string& text, const std::filesystem::path& path);
+// The sealed record saved in `path` (parse_sealed), or nothing when the file cannot be opened.
+std::optional<nlohmann::json> read_sealed(const std::filesystem::path& path);
 
 }  // namespace multicpg::experiments

@@ -393,11 +393,9 @@ void check_sim(const sim::SimOptions& options) {
 // OUT/experiment.json's arguments, if OUT holds an experiment.
 std::optional<json> stored_arguments(const fs::path& out) {
   const fs::path path = out / "experiment.json";
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  const json record = parse_sealed(text.str(), path);
+  const std::optional<json> sealed = read_sealed(path);
+  if (!sealed) return std::nullopt;
+  const json& record = *sealed;
   if (!record.contains("arguments")) {
     throw BadInput("'" + path.string() + "' records no experiment arguments");
   }
@@ -858,10 +856,9 @@ ExperimentTable merge_sweeps(const fs::path& out, const std::vector<fs::path>& d
       sweep.tasks,
       [&](const Task& t) {
         const fs::path path = where.at(t.key) / "runs" / (t.key + ".json");
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        const json saved = parse_sealed(text.str(), path);
+        const std::optional<json> sealed = read_sealed(path);
+        if (!sealed) throw BadInput("cannot read '" + path.string() + "'");
+        const json& saved = *sealed;
         const json expected{{"key", t.key},
                             {"group", t.group},
                             {"run", t.run},

@@ -7,8 +7,8 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <fstream>
 
+#include "common/errors.h"
 #include "common/table.h"
 #include "experiments/runner.h"
 #include "experiments/sweep.h"
@@ -30,9 +30,9 @@ std::vector<learning::Periods> learned_periods(const std::filesystem::path& dir,
   for (const experiments::Task& task : experiments::read_sweep(dir).sweep.tasks) {
     if (task.group != scenario) continue;
     const std::filesystem::path file = dir / "runs" / (task.key + ".json");
-    std::ifstream in(file);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const nlohmann::json result = experiments::parse_sealed(text, file).at("result");
+    const std::optional<nlohmann::json> run = experiments::read_sealed(file);
+    if (!run) throw RuntimeFailure("'" + file.string() + "' is missing");
+    const nlohmann::json& result = run->at("result");
     if (result.at("converged").get<bool>()) {
       learned.push_back(robot::period_map_from_json(morph, result.at("periods")));
     }
@@ -71,10 +71,10 @@ Section landscape_stage(const StageContext& ctx) {
   for (const learning::Periods& p : converged) {
     if (in_landscape(spec, p)) learned.push_back(p);
   }
+  const std::string folder = "experiments/landscape-quadruped-" + std::string(kScenario);
   const experiments::Landscape landscape = experiments::run_landscape(
-      spec, ctx.dir("experiments/landscape-quadruped-" + std::string(kScenario)),
-      ctx.options.jobs > 0 ? ctx.options.jobs : experiments::default_jobs(), ctx.options.progress,
-      learned);
+      spec, ctx.dir(folder), ctx.options.jobs > 0 ? ctx.options.jobs : experiments::default_jobs(),
+      ctx.options.progress, learned);
   const FigureFiles figure = draw_landscape(landscape, learned, ctx.dir("figures"));
 
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);
@@ -118,10 +118,7 @@ Section landscape_stage(const StageContext& ctx) {
               std::to_string(learned_holding) + " of them hold every window.",
           {ctx.image(figure)},
           {},
-          {ctx.rel(ctx.options.out / "experiments" /
-                   ("landscape-quadruped-" + std::string(kScenario)) / "landscape.csv"),
-           ctx.rel(ctx.options.out / "experiments" /
-                   ("landscape-quadruped-" + std::string(kScenario)) / "summary.json")},
+          {folder + "/landscape.csv", folder + "/summary.json"},
           {top}};
 }
 
