@@ -1,7 +1,6 @@
 // multicpg run | rerun | merge: experiments as files (issue 10). `run` resolves a TOML
 // experiment file (experiments/experiment_file.h) and runs it, or one shard of it; `rerun`
 // runs one recorded run again (or films it); `merge` joins the shards of a job array.
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -146,17 +145,14 @@ void rerun(const RerunOptions& o) {
     std::cout << "wrote " << (fs::path(o.out) / "runs" / (o.id + ".json")).string() << "\n";
   }
   const fs::path saved_path = fs::path(o.dir) / "runs" / (o.id + ".json");
-  std::ifstream in(saved_path, std::ios::binary);
-  std::ostringstream saved;
-  saved << in.rdbuf();
-  const std::string saved_text = saved.str();
+  const std::optional<nlohmann::json> saved = experiments::read_sealed(saved_path);
   std::cout << o.id << ": " << result.at("status").get<std::string>() << " after "
             << result.at("trials") << " trials";
-  if (saved_text.empty()) {
+  if (!saved) {
     std::cout << " (" << saved_path.string() << " not saved yet)\n";
     return;
   }
-  if (experiments::parse_sealed(saved_text, saved_path).at("result") != result) {
+  if (saved->at("result") != result) {
     throw RuntimeFailure("rerun of " + o.id + " differs from " + saved_path.string());
   }
   std::cout << ", identical to " << saved_path.string() << "\n";

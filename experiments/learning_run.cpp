@@ -56,9 +56,7 @@ LearningRun run_learning(const sim::SimModel& model, const learning::Compensatio
     stepper.steps(n);
     if (n == options.window_steps) {
       run.after_windows.push_back(sim::measure_window(
-          start, stepper.pose(),
-          run.result.steering ? std::optional<double>(run.result.steering->course.yaw_deg)
-                              : std::nullopt));
+          start, stepper.pose(), learning::course_yaw_deg(run.result.steering)));
     }
     walked += n;
   }

@@ -49,9 +49,8 @@ class Walk {
     const sim::Pose2 start = walker_.pose();
     cut_sum_ = 0.0;
     steps(options_.window_steps);
-    const sim::WindowMeasure m = sim::measure_window(
-        start, walker_.pose(),
-        steering_ ? std::optional<double>(steering_->course.yaw_deg) : std::nullopt);
+    const sim::WindowMeasure m =
+        sim::measure_window(start, walker_.pose(), course_yaw_deg(steering_));
     if (!std::isfinite(m.yaw_deg) || !std::isfinite(m.path_deg)) {
       throw RuntimeFailure("the walker's pose is not a finite number");
     }

@@ -35,6 +35,11 @@ SteeringState start_steering(const sim::Pose2& course) {
   return SteeringState{course, 0.0, 0.0};
 }
 
+std::optional<double> course_yaw_deg(const std::optional<SteeringState>& steering) {
+  if (!steering) return std::nullopt;
+  return steering->course.yaw_deg;
+}
+
 neural::DriveInputs steer(const SteeringParams& p, SteeringState& s, const sim::Pose2& now,
                           neural::DriveInputs drive) {
   constexpr double kRadPerDeg = std::numbers::pi / 180.0;

@@ -11,6 +11,8 @@
 // a steering change reaches the legs only through the delay lines (up to 126 steps).
 #pragma once
 
+#include <optional>
+
 #include "common/limits.h"
 #include "neural/drive.h"
 #include "sim/deviation.h"
@@ -51,6 +53,9 @@ struct SteeringState {
 };
 
 SteeringState start_steering(const sim::Pose2& course);
+// The direction windows measure the path angle against (sim::measure_window): the course line's
+// when a reflex keeps one, else none (the heading at each window's start).
+std::optional<double> course_yaw_deg(const std::optional<SteeringState>& steering);
 
 // One reflex step: reads the pose, returns the drive inputs with turn_left / turn_right set.
 neural::DriveInputs steer(const SteeringParams& params, SteeringState& state, const sim::Pose2& now,

@@ -64,7 +64,6 @@ Section landscape_stage(const StageContext& ctx) {
   if (!ctx.sizes.landscape_periods.empty()) {
     spec.period_set.assign(ctx.sizes.landscape_periods.begin(), ctx.sizes.landscape_periods.end());
   }
-  experiments::validate(spec);
   const std::vector<learning::Periods> converged =
       learned_periods(ctx.options.out / "experiments" / "quadruped", kScenario, morph);
   std::vector<learning::Periods> learned;
