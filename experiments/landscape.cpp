@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <set>
+#include <utility>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
@@ -14,6 +15,7 @@
 #include "neural/postprocessing.h"
 #include "robot/leg_sets.h"
 #include "sim/json.h"
+#include "sim/stepper.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
@@ -89,39 +91,31 @@ void validate(const LandscapeSpec& spec) {
   }
 }
 
-void walk_steps(const sim::SimModel& model, sim::SimState& state, long steps) {
-  for (long t = 0; t < steps; ++t) sim::sim_step(model, state);
-}
-
-sim::Pose2 trunk_pose(const sim::SimModel& model, const sim::SimState& state) {
-  const sim::Position p = sim::trunk_position(model, state);
-  return {p.x, p.y, sim::trunk_yaw_deg(model, state)};
-}
-
 CombinationMeasure measure_combination(const sim::SimModel& model,
                                        const std::vector<std::size_t>& disabled,
                                        const learning::Periods& periods, int windows,
                                        long window_steps, double threshold_deg) {
   if (windows < 1) throw BadInput("windows must be at least 1, got " + std::to_string(windows));
   // A robot already walking on its remaining legs: locked controller, full delay lines.
-  sim::SimState state = sim::start_walk_state(model, {});
-  for (std::size_t leg : disabled) neural::set_disabled(state.controller, leg, true);
-  sim::warm_up_controller(model, state, sim::kControllerWarmup);
+  sim::FaultTimeline faults;
+  if (!disabled.empty()) faults.push_back({0, disabled, false});
+  sim::Stepper stepper(model, {}, std::move(faults));
+  neural::ControllerState& controller = stepper.state().controller;
 
   // Learning tries every candidate with the clients free (SPEC §5); equal periods stay locked
   // because set_periods resets every CPG together.
   CombinationMeasure m;
   m.periods = periods;
-  neural::set_periods(model.controller, state.controller, periods);
-  neural::set_synchronised(state.controller, false);
+  neural::set_periods(model.controller, controller, periods);
+  neural::set_synchronised(controller, false);
   m.settle_steps = learning::locked_settle_steps(model.controller, periods);
-  walk_steps(model, state, m.settle_steps);
+  stepper.steps(m.settle_steps);
 
   m.holds = true;
   for (int w = 0; w < windows; ++w) {
-    const sim::Pose2 start = trunk_pose(model, state);
-    walk_steps(model, state, window_steps);
-    const sim::WindowMeasure window = sim::measure_window(start, trunk_pose(model, state));
+    const sim::Pose2 start = stepper.pose();
+    stepper.steps(window_steps);
+    const sim::WindowMeasure window = sim::measure_window(start, stepper.pose());
     m.worst_deg = std::max(m.worst_deg, window.worst_deg());
     m.holds = m.holds && window.worst_deg() < threshold_deg;
     m.windows.push_back(window);

@@ -57,8 +57,8 @@ void walk_steps(const sim::SimModel& model, sim::SimState& state, long steps);
 // The trunk's pose now (position and front trunk yaw).
 sim::Pose2 trunk_pose(const sim::SimModel& model, const sim::SimState& state);
 
-// Measures one combination: start_walk_state with every leg at 4 and `disabled` failed from the
-// start, the controller warmed up alone for sim::kControllerWarmup steps; then `periods` set with
+// Measures one combination: a sim::Stepper started with every leg at 4 and `disabled` failed
+// from the start, the controller warmed up (sim::kControllerWarmup steps); then `periods` set with
 // every client free (as learning tries a candidate), learning::locked_settle_steps unmeasured,
 // and `windows` windows of `window_steps` steps, each measured by sim::measure_window.
 CombinationMeasure measure_combination(const sim::SimModel& model,

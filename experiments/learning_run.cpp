@@ -25,10 +25,6 @@ class TrialEnds final : public sim::Observer {
 
 }  // namespace
 
-void SimWalker::set_disabled(const std::vector<std::size_t>& legs, bool disabled) {
-  for (std::size_t leg : legs) neural::set_disabled(stepper_.state().controller, leg, disabled);
-}
-
 sim::StartSpec learning_start(const learning::CompensationOptions& options) {
   sim::StartSpec start;
   if (options.mode == learning::Mode::paper) start.warmup = 0;
@@ -39,7 +35,8 @@ LearningRun run_learning(const sim::SimModel& model, const learning::Compensatio
                          bool record, long after_steps, sim::Observer* observer) {
   LearningRun run;
   TrialEnds ends(observer);
-  sim::Stepper stepper(model, learning_start(options), {}, &ends, record ? &run.record : nullptr);
+  sim::Stepper stepper(model, learning_start(options), learning::fault_timeline(options), &ends,
+                       record ? &run.record : nullptr);
   SimWalker walker(stepper);
   run.result = learning::compensate(walker, options);
   run.learning_end_step = stepper.step_count();

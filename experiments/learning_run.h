@@ -23,7 +23,7 @@ class SimWalker final : public learning::Walker {
   const neural::ControllerModel& controller_model() const override {
     return stepper_.model().controller;
   }
-  void set_disabled(const std::vector<std::size_t>& legs, bool disabled) override;
+  const sim::FaultSchedule& faults() const override { return stepper_.faults(); }
   void emit(const sim::Event& event) override { stepper_.emit(event); }
 
  private:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -14,30 +15,26 @@
 namespace multicpg::learning {
 namespace {
 
-// Walks the robot on, applying the fault timeline before the steps it names (SPEC §4: faults
-// at any step) and, when asked, the steering reflex on every step.
+// Walks the robot on (the walker applies the faults) and, when asked, steers it with the reflex
+// on every step; keeps count of the faults that came.
 class Walk {
  public:
-  Walk(Walker& walker, const CompensationOptions& options)
-      : walker_(walker),
-        options_(options),
-        timeline_(fault_timeline(options)),
-        start_(walker.step_count()),
-        failed_(walker.controller_model().size(), false) {
+  Walk(Walker& walker, const CompensationOptions& options) : walker_(walker), options_(options) {
     if (options.mode == Mode::robust && options.steering == Steering::reflex) {
       steering_ = start_steering(walker.pose());
     }
+    take_faults();  // those due at the start came with the walker's start
   }
 
   void steps(long n) {
     for (long i = 0; i < n; ++i) {
-      apply_due_faults();
       if (steering_) {
         neural::ControllerState& c = walker_.controller();
         c.drive = steer(options_.steering_params, *steering_, walker_.pose(), c.drive);
         cut_sum_ += std::abs(steering_->last_cut);
       }
       walker_.step();
+      take_faults();
     }
   }
 
@@ -60,50 +57,38 @@ class Walk {
     return out;
   }
 
-  long walked() const { return walker_.step_count() - start_; }
-  // Paper mode's "after the failure": the fault has been applied (with no legs named: the
-  // healthy robot's run, whose fail step still starts the count of windows).
+  long walked() const { return walker_.step_count(); }
+  // Paper mode's "after the failure": a leg has failed (with no legs named: the healthy robot's
+  // run, whose fail step still starts the count of windows).
   bool failed() const {
-    return any_failed_ever_ || (timeline_.empty() && walked() > options_.fail_step);
+    return any_failed_ever_ ||
+           (walker_.faults().timeline().empty() && walked() > options_.fail_step);
   }
-  bool any_failed_now() const {
-    return std::any_of(failed_.begin(), failed_.end(), [](bool b) { return b; });
-  }
-  std::vector<std::size_t> failed_now() const {
-    std::vector<std::size_t> legs;
-    for (std::size_t i = 0; i < failed_.size(); ++i)
-      if (failed_[i]) legs.push_back(i);
-    return legs;
-  }
-  bool faults_pending() const { return next_ < timeline_.size(); }
+  std::vector<std::size_t> failed_now() const { return walker_.faults().failed_legs(); }
+  bool faults_pending() const { return walker_.faults().pending(); }
   // Faults and recoveries since the last call.
   int take_fault_count() { return std::exchange(fault_count_, 0); }
+  // A recovery that left every leg working, since the last call.
   bool take_full_recovery() { return std::exchange(full_recovery_, false); }
   double effort() const { return effort_; }
   const std::optional<SteeringState>& steering() const { return steering_; }
 
  private:
-  void apply_due_faults() {
-    while (next_ < timeline_.size() && timeline_[next_].step <= walked()) {
-      const sim::Fault& f = timeline_[next_++];
-      walker_.set_disabled(f.legs, !f.recover);
-      for (std::size_t leg : f.legs) failed_[leg] = !f.recover;
-      any_failed_ever_ = any_failed_ever_ || !f.recover;
+  void take_faults() {
+    const std::vector<sim::Fault>& came = walker_.faults().applied();
+    if (seen_ == came.size()) return;
+    bool recovered = false;
+    for (; seen_ < came.size(); ++seen_) {
+      any_failed_ever_ = any_failed_ever_ || !came[seen_].recover;
+      recovered = recovered || came[seen_].recover;
       ++fault_count_;
-      sim::Event e;
-      e.kind = f.recover ? sim::EventKind::recovery : sim::EventKind::fault;
-      e.legs = f.legs;
-      walker_.emit(e);
-      if (f.recover && !any_failed_now()) full_recovery_ = true;
     }
+    if (recovered && failed_now().empty()) full_recovery_ = true;
   }
 
   Walker& walker_;
   const CompensationOptions& options_;
-  sim::FaultTimeline timeline_;
-  std::size_t next_ = 0;
-  long start_;
-  std::vector<bool> failed_;
+  std::size_t seen_ = 0;
   bool any_failed_ever_ = false;
   int fault_count_ = 0;
   bool full_recovery_ = false;
@@ -518,6 +503,10 @@ class RobustRun {
 
 LearningResult compensate(Walker& walker, const CompensationOptions& options) {
   validate(options, walker.controller_model().morphology);
+  if (walker.step_count() != 0 || walker.faults().timeline() != fault_timeline(options)) {
+    throw std::invalid_argument(
+        "compensate: the walker must be at its start, with the options' faults to come");
+  }
   if (options.mode == Mode::paper) return compensate_paper(walker, options);
   return RobustRun(walker, options).run();
 }

@@ -34,9 +34,10 @@ class Walker {
   virtual long step_count() const = 0;
   virtual neural::ControllerState& controller() = 0;
   virtual const neural::ControllerModel& controller_model() const = 0;
-  // Legs fail (or work again) from the next step on: a failed leg holds the disabled posture
-  // (SPEC §4).
-  virtual void set_disabled(const std::vector<std::size_t>& legs, bool disabled) = 0;
+  // The run's faults (SPEC §4): the walker applies them before the steps they name, counted
+  // from its start (sim::Stepper), and the learner reads from it what came. Made from the
+  // compensation options' timeline (fault_timeline).
+  virtual const sim::FaultSchedule& faults() const = 0;
   // Shows what the learner is doing to whoever watches (a film, the viewer, Python).
   virtual void emit(const sim::Event& /*event*/) {}
 };
@@ -165,8 +166,9 @@ struct LearningResult {
   std::optional<SteeringState> steering;
 };
 
-// Runs the whole online loop on `walker`, which should be walking forward with every leg
-// working and every client synchronised (as make_controller_state leaves it). Paper mode is
+// Runs the whole online loop on `walker`, which should be walking forward with every client
+// synchronised (as make_controller_state leaves it), at its step 0, with the faults of
+// fault_timeline(options) to come (else std::invalid_argument: a caller's mistake). Paper mode is
 // SPEC §6 exactly; robust mode (issue 8):
 // - a window is judged on both its yaw change and its path angle (sim::measure_window);
 // - a combination is accepted only when it holds for hold_windows consecutive windows (a trial

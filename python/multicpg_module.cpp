@@ -305,8 +305,8 @@ class Simulation {
   std::vector<std::string> failed() const {
     const std::lock_guard<std::mutex> lock(mutex_);
     std::vector<std::string> out;
-    for (std::size_t i = 0; i < stepper_->failed().size(); ++i) {
-      if (stepper_->failed()[i]) out.push_back(robot_->morph().legs[i].name);
+    for (std::size_t leg : stepper_->faults().failed_legs()) {
+      out.push_back(robot_->morph().legs[leg].name);
     }
     return out;
   }

@@ -204,8 +204,11 @@ class Viewer {
       neural::set_synchronised(state_.controller, synchronised_);
     } else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && press) {
       const auto leg = static_cast<std::size_t>(key - GLFW_KEY_1);
-      if (leg < model_.legs.size()) {
-        neural::set_disabled(state_.controller, leg, !state_.controller.legs[leg].disabled);
+      // Through the stepper, so the fault is kept and told like a scheduled one. Failing the
+      // last working leg is refused (BadInput); the key then does nothing.
+      try {
+        if (leg < model_.legs.size()) stepper_.set_failed({leg}, !stepper_.faults().failed(leg));
+      } catch (const BadInput&) {
       }
     }
   }

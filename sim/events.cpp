@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "common/errors.h"
 
@@ -60,6 +61,55 @@ void validate(const robot::Morphology& morph, const FaultTimeline& faults) {
                      std::to_string(f.step) + ": it cannot walk");
     }
   }
+}
+
+FaultSchedule::FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline)
+    : timeline_(std::move(timeline)), failed_(morph.size(), false) {
+  validate(morph, timeline_);
+}
+
+std::size_t FaultSchedule::apply_due(long step, neural::ControllerState& controller) {
+  std::size_t came = 0;
+  for (; next_ < timeline_.size() && timeline_[next_].step <= step; ++next_, ++came) {
+    apply(timeline_[next_], controller);
+  }
+  return came;
+}
+
+void FaultSchedule::apply_now(const robot::Morphology& morph, const Fault& fault,
+                              neural::ControllerState& controller) {
+  // Validated as a timeline of two events: the legs failed now, then this fault.
+  FaultTimeline check;
+  const std::vector<std::size_t> now = failed_legs();
+  if (!now.empty()) check.push_back({fault.step, now, false});
+  check.push_back(fault);
+  validate(morph, check);
+  if (failed_.empty()) failed_.assign(morph.size(), false);
+  apply(fault, controller);
+}
+
+void FaultSchedule::apply(const Fault& fault, neural::ControllerState& controller) {
+  for (std::size_t leg : fault.legs) {
+    neural::set_disabled(controller, leg, !fault.recover);
+    failed_[leg] = !fault.recover;
+  }
+  applied_.push_back(fault);
+}
+
+std::vector<std::size_t> FaultSchedule::failed_legs() const {
+  std::vector<std::size_t> legs;
+  for (std::size_t leg = 0; leg < failed_.size(); ++leg) {
+    if (failed_[leg]) legs.push_back(leg);
+  }
+  return legs;
+}
+
+Event fault_event(const Fault& fault) {
+  Event e;
+  e.kind = fault.recover ? EventKind::recovery : EventKind::fault;
+  e.step = fault.step;
+  e.legs = fault.legs;
+  return e;
 }
 
 }  // namespace multicpg::sim

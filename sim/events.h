@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "neural/controller.h"
 #include "robot/morphology.h"
 
 namespace multicpg::sim {
@@ -19,6 +20,7 @@ struct Fault {
   long step = 0;
   std::vector<std::size_t> legs;
   bool recover = false;
+  bool operator==(const Fault&) const = default;
 };
 // Sorted by step; several events may share a step.
 using FaultTimeline = std::vector<Fault>;
@@ -49,5 +51,44 @@ const char* to_string(EventKind kind);
 // range or twice in one event, fails a leg that has already failed, recovers one that has not,
 // disables every leg, or has a negative step.
 void validate(const robot::Morphology& morph, const FaultTimeline& faults);
+
+// A run's faults as they come (SPEC §4, issue 8): its timeline, how much of it has come, and the
+// legs failed now. The one home of fault bookkeeping: sim::Stepper applies a run's faults through
+// it (and the learner's fake walker likewise), and the learner reads from it what came.
+class FaultSchedule {
+ public:
+  FaultSchedule() = default;
+  // Throws BadInput (validate's message) for a bad timeline.
+  FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline);
+
+  // Applies to `controller`, in order, the faults due before step `step` (whose step is at most
+  // `step`); returns how many came.
+  std::size_t apply_due(long step, neural::ControllerState& controller);
+  // Legs fail (or work again) now, out of the timeline (the viewer's keys, Python). Throws
+  // BadInput (validate's message) for a leg that has already failed, one that has not, or
+  // failing every leg. The timeline still comes as planned.
+  void apply_now(const robot::Morphology& morph, const Fault& fault,
+                 neural::ControllerState& controller);
+
+  const FaultTimeline& timeline() const { return timeline_; }
+  // Every fault that has come, from the timeline or not, in order.
+  const std::vector<Fault>& applied() const { return applied_; }
+  // Legs failed now (empty before the first fault: none).
+  bool failed(std::size_t leg) const { return leg < failed_.size() && failed_[leg]; }
+  std::vector<std::size_t> failed_legs() const;
+  // Faults of the timeline still to come.
+  bool pending() const { return next_ < timeline_.size(); }
+
+ private:
+  void apply(const Fault& fault, neural::ControllerState& controller);
+
+  FaultTimeline timeline_;
+  std::size_t next_ = 0;
+  std::vector<Fault> applied_;
+  std::vector<bool> failed_;
+};
+
+// The fault or recovery event a fault makes.
+Event fault_event(const Fault& fault);
 
 }  // namespace multicpg::sim

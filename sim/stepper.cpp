@@ -1,7 +1,7 @@
 #include "sim/stepper.h"
 
-#include <algorithm>
 #include <string>
+#include <utility>
 
 #include "common/errors.h"
 #include "sim/walk.h"
@@ -12,12 +12,10 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
                  Observer* observer, WalkRecord* record, bool record_joints)
     : model_(model),
       state_(start_walk_state(model, start.periods)),
-      faults_(std::move(faults)),
-      failed_(model.legs.size(), false),
+      faults_(model.controller.morphology, std::move(faults)),
       observer_(observer),
       record_(record),
       record_joints_(record_joints) {
-  validate(model.controller.morphology, faults_);
   if (start.warmup < 0) {
     throw BadInput("--warmup must not be negative, got " + std::to_string(start.warmup));
   }
@@ -30,21 +28,14 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
 }
 
 void Stepper::apply_due_faults() {
-  last_faults_.clear();
-  while (next_fault_ < faults_.size() && faults_[next_fault_].step <= walked_) {
-    const Fault& f = faults_[next_fault_++];
-    for (std::size_t leg : f.legs) {
-      neural::set_disabled(state_.controller, leg, !f.recover);
-      failed_[leg] = !f.recover;
-    }
-    last_faults_.push_back(f);
-    if (observer_ != nullptr) {
-      Event e;
-      e.kind = f.recover ? EventKind::recovery : EventKind::fault;
-      e.step = walked_;
-      e.legs = f.legs;
-      observer_->on_event(model_, state_, e);
-    }
+  const std::size_t first = faults_.applied().size();
+  if (faults_.apply_due(walked_, state_.controller) > 0) tell_faults(first);
+}
+
+void Stepper::tell_faults(std::size_t first) {
+  if (observer_ == nullptr) return;
+  for (std::size_t i = first; i < faults_.applied().size(); ++i) {
+    observer_->on_event(model_, state_, fault_event(faults_.applied()[i]));
   }
 }
 
@@ -62,39 +53,19 @@ void Stepper::steps(long n) {
 }
 
 void Stepper::set_failed(const std::vector<std::size_t>& legs, bool failed) {
-  FaultTimeline check;
-  std::vector<std::size_t> now;
-  for (std::size_t leg = 0; leg < failed_.size(); ++leg) {
-    if (failed_[leg]) now.push_back(leg);
-  }
-  if (!now.empty()) check.push_back({walked_, now, false});
-  const Fault fault{walked_, legs, !failed};
-  check.push_back(fault);
-  validate(model_.controller.morphology, check);
-  for (std::size_t leg : legs) {
-    neural::set_disabled(state_.controller, leg, failed);
-    failed_[leg] = failed;
-  }
-  if (observer_ != nullptr) {
-    Event e;
-    e.kind = failed ? EventKind::fault : EventKind::recovery;
-    e.step = walked_;
-    e.legs = legs;
-    observer_->on_event(model_, state_, e);
-  }
+  const std::size_t first = faults_.applied().size();
+  faults_.apply_now(model_.controller.morphology, Fault{walked_, legs, !failed}, state_.controller);
+  tell_faults(first);
 }
 
 StepperCheckpoint Stepper::checkpoint() const {
-  return {copy_sim_state(model_, state_), faults_, next_fault_, failed_, walked_};
+  return {copy_sim_state(model_, state_), faults_, walked_};
 }
 
 void Stepper::restore(const StepperCheckpoint& checkpoint) {
   state_ = copy_sim_state(model_, checkpoint.state);
   faults_ = checkpoint.faults;
-  next_fault_ = checkpoint.next_fault;
-  failed_ = checkpoint.failed;
   walked_ = checkpoint.walked;
-  last_faults_.clear();
 }
 
 void Stepper::emit(Event event) {

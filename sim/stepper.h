@@ -41,9 +41,7 @@ class Observer {
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
 struct StepperCheckpoint {
   SimState state;
-  FaultTimeline faults;
-  std::size_t next_fault = 0;
-  std::vector<bool> failed;
+  FaultSchedule faults;
   long walked = 0;
 };
 
@@ -81,23 +79,17 @@ class Stepper {
     return walked_;
   }  // controller steps since the start (warm-up excluded)
   Pose2 pose() const;
-  // Legs failed now.
-  const std::vector<bool>& failed() const { return failed_; }
-  // Faults applied by the last step() (empty on most steps).
-  const std::vector<Fault>& last_faults() const { return last_faults_; }
-  // The faults still to come.
-  bool faults_pending() const { return next_fault_ < faults_.size(); }
-  long last_fault_step() const { return faults_.empty() ? 0 : faults_.back().step; }
+  // The run's faults: the timeline, what has come, the legs failed now.
+  const FaultSchedule& faults() const { return faults_; }
 
  private:
   void apply_due_faults();
+  // Shows the observer the faults that came from `first` on.
+  void tell_faults(std::size_t first);
 
   const SimModel& model_;
   SimState state_;
-  FaultTimeline faults_;
-  std::size_t next_fault_ = 0;
-  std::vector<bool> failed_;
-  std::vector<Fault> last_faults_;
+  FaultSchedule faults_;
   std::function<void(Stepper&)> before_step_;
   Observer* observer_;
   WalkRecord* record_;

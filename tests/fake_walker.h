@@ -3,11 +3,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "common/angles.h"
 #include "learning/compensation.h"
 #include "neural/controller.h"
+#include "sim/events.h"
 
 namespace multicpg::learning {
 
@@ -18,15 +20,25 @@ class FakeWalker : public Walker {
  public:
   static constexpr double kGainDegPerStep = 0.38;
 
-  explicit FakeWalker(robot::RobotKind kind, double bias_deg_per_step = 0.0)
+  // `faults` come as sim::Stepper applies them: before the steps they name.
+  explicit FakeWalker(robot::RobotKind kind, sim::FaultTimeline faults = {},
+                      double bias_deg_per_step = 0.0)
       : model_(neural::make_controller_model(kind)),
         state_(neural::make_controller_state(model_)),
-        bias_(bias_deg_per_step) {}
+        faults_(model_.morphology, std::move(faults)),
+        bias_(bias_deg_per_step) {
+    take_due_faults();
+  }
+  // A walker for compensate(options): the options' faults.
+  FakeWalker(robot::RobotKind kind, const CompensationOptions& options,
+             double bias_deg_per_step = 0.0)
+      : FakeWalker(kind, fault_timeline(options), bias_deg_per_step) {}
 
   // It walks kSpeedMPerStep along its heading, so its path angle equals its mean heading.
   static constexpr double kSpeedMPerStep = 0.002;
 
   void step() override {
+    take_due_faults();
     yaw_ = wrap_degrees(yaw_ + rate());
     const double heading = yaw_ * std::numbers::pi / 180.0;
     x_ += kSpeedMPerStep * std::cos(heading);
@@ -37,14 +49,20 @@ class FakeWalker : public Walker {
   long step_count() const override { return state_.step; }
   neural::ControllerState& controller() override { return state_; }
   const neural::ControllerModel& controller_model() const override { return model_; }
-  void set_disabled(const std::vector<std::size_t>& legs, bool disabled) override {
-    for (std::size_t leg : legs) neural::set_disabled(state_, leg, disabled);
-  }
+  const sim::FaultSchedule& faults() const override { return faults_; }
   void emit(const sim::Event& event) override { events.push_back(event); }
 
-  std::vector<sim::Event> events;  // what the learner reported
+  std::vector<sim::Event> events;  // the faults that came and what the learner reported
 
  private:
+  void take_due_faults() {
+    const std::size_t first = faults_.applied().size();
+    faults_.apply_due(state_.step, state_);
+    for (std::size_t i = first; i < faults_.applied().size(); ++i) {
+      events.push_back(sim::fault_event(faults_.applied()[i]));
+    }
+  }
+
   double rate() const {
     double turn = bias_;
     for (std::size_t i = 0; i < state_.legs.size(); ++i) {
@@ -60,6 +78,7 @@ class FakeWalker : public Walker {
 
   neural::ControllerModel model_;
   neural::ControllerState state_;
+  sim::FaultSchedule faults_;
   double bias_;
   double yaw_ = 0.0;
   double x_ = 0.0;

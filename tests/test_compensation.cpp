@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "common/angles.h"
 #include "common/errors.h"
@@ -31,8 +32,8 @@ Periods periods_of(Walker& w) {
 }
 
 TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
-  FakeWalker walker(RobotKind::hexapod);
   const CompensationOptions o = options_for({0}, 1);
+  FakeWalker walker(RobotKind::hexapod, o);
   const LearningResult r = compensate(walker, o);
 
   ASSERT_TRUE(r.converged());
@@ -63,8 +64,8 @@ TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
 TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
   auto run = [&](std::uint64_t seed) {
-    FakeWalker walker(RobotKind::hexapod);
     const CompensationOptions o = options_for({0, 2}, seed);
+    FakeWalker walker(RobotKind::hexapod, o);
     return to_json(compensate(walker, o), morph, o.disabled);
   };
   const nlohmann::json a = run(7);
@@ -73,9 +74,9 @@ TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
 }
 
 TEST(Compensation, HealthyRobotNeedsNoCompensation) {
-  FakeWalker walker(RobotKind::hexapod);
   CompensationOptions o = options_for({}, 1);
   o.settle_steps = 10;
+  FakeWalker walker(RobotKind::hexapod, o);
   const LearningResult r = compensate(walker, o);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::no_deviation);
@@ -87,10 +88,10 @@ TEST(Compensation, HealthyRobotNeedsNoCompensation) {
 }
 
 TEST(Compensation, LateFailureIsDetectedAfterIt) {
-  FakeWalker walker(RobotKind::hexapod);
   CompensationOptions o = options_for({0}, 1);
   o.settle_steps = 0;
   o.fail_step = 1000;  // healthy windows [0,400) and [400,800) come first
+  FakeWalker walker(RobotKind::hexapod, o);
   const LearningResult r = compensate(walker, o);
   ASSERT_TRUE(r.detection_step.has_value());
   // [800,1200) holds 200 disabled steps: 19 deg > 8, detected at its end.
@@ -101,10 +102,10 @@ TEST(Compensation, LateFailureIsDetectedAfterIt) {
 
 TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   // A bias no period combination can cancel: 0.2 deg/step, 80 deg per window.
-  FakeWalker walker(RobotKind::hexapod, 0.2);
   CompensationOptions o = options_for({0}, 3);
   o.annealing.max_trials = 12;
   o.settle_steps = 0;
+  FakeWalker walker(RobotKind::hexapod, o, 0.2);
   const LearningResult r = compensate(walker, o);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
@@ -115,9 +116,9 @@ TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
 }
 
 TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
-  FakeWalker walker(RobotKind::quadruped, 0.2);
   CompensationOptions o = options_for({0, 1, 2}, 4);  // only L2 works: 5 combinations
   o.settle_steps = 0;
+  FakeWalker walker(RobotKind::quadruped, o, 0.2);
   const LearningResult r = compensate(walker, o);
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::space_exhausted);
@@ -126,8 +127,8 @@ TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
 
 TEST(Compensation, JsonHasTheReportedFields) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
-  FakeWalker walker(RobotKind::hexapod);
   const CompensationOptions o = options_for({0}, 1);
+  FakeWalker walker(RobotKind::hexapod, o);
   const nlohmann::json j = to_json(compensate(walker, o), morph, o.disabled);
   EXPECT_TRUE(j.at("converged").is_boolean());
   EXPECT_TRUE(j.at("trials").is_number_integer());
@@ -226,8 +227,9 @@ int count(const std::vector<sim::Event>& events, sim::EventKind kind) {
 }
 
 TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
-  FakeWalker walker(RobotKind::hexapod);
-  const LearningResult r = compensate(walker, robust_options({{0, {0}, false}}, 1));
+  const CompensationOptions o = robust_options({{0, {0}, false}}, 1);
+  FakeWalker walker(RobotKind::hexapod, o);
+  const LearningResult r = compensate(walker, o);
   ASSERT_TRUE(r.converged());
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_TRUE(r.episodes[0].held);
@@ -239,10 +241,19 @@ TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
   EXPECT_EQ(count(walker.events, sim::EventKind::episode_end), 1);
 }
 
+TEST(RobustCompensation, RefusesAWalkerWithOtherFaults) {
+  const CompensationOptions o = robust_options({{0, {0}, false}}, 1);
+  FakeWalker healthy(RobotKind::hexapod);
+  EXPECT_THROW(compensate(healthy, o), std::invalid_argument);
+  FakeWalker walked(RobotKind::hexapod, o);
+  walked.step();
+  EXPECT_THROW(compensate(walked, o), std::invalid_argument);
+}
+
 TEST(RobustCompensation, SecondFaultLearnsTwice) {
-  FakeWalker walker(RobotKind::hexapod);
-  const LearningResult r =
-      compensate(walker, robust_options({{0, {0}, false}, {30000, {4}, false}}, 2));
+  const CompensationOptions o = robust_options({{0, {0}, false}, {30000, {4}, false}}, 2);
+  FakeWalker walker(RobotKind::hexapod, o);
+  const LearningResult r = compensate(walker, o);
   ASSERT_EQ(r.episodes.size(), 2u);
   EXPECT_LT(r.episodes[0].detection_step, 30000);
   EXPECT_GT(r.episodes[1].detection_step, 30000);
@@ -255,9 +266,9 @@ TEST(RobustCompensation, SecondFaultLearnsTwice) {
 }
 
 TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
-  FakeWalker walker(RobotKind::hexapod);
-  const LearningResult r =
-      compensate(walker, robust_options({{0, {0}, false}, {30000, {0}, true}}, 3));
+  const CompensationOptions o = robust_options({{0, {0}, false}, {30000, {0}, true}}, 3);
+  FakeWalker walker(RobotKind::hexapod, o);
+  const LearningResult r = compensate(walker, o);
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_EQ(count(walker.events, sim::EventKind::recovery), 1);
   const neural::ControllerState& c = walker.controller();

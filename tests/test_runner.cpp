@@ -229,7 +229,6 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
       resolve_sweep({{"robot", "quadruped"}, {"scenarios", "paper"}, {"runs", 2}, {"seed", 5}})
           .tasks;
   auto learn = [&](const Task& t) {
-    learning::FakeWalker walker(RobotKind::quadruped);
     learning::CompensationOptions o;
     o.mode = learning::Mode::paper;
     for (const nlohmann::json& leg : t.params.at("disabled")) {
@@ -237,6 +236,7 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
     }
     o.seed = t.seed;
     o.settle_steps = 0;
+    learning::FakeWalker walker(RobotKind::quadruped, o);
     return learning::to_json(learning::compensate(walker, o), quad, o.disabled);
   };
   TempDir one("learn1");

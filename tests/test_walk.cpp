@@ -284,13 +284,13 @@ TEST(Stepper, RestoredCheckpointContinuesIdentically) {
   const sim::Pose2 first = walk_on();
   stepper.restore(saved);
   EXPECT_EQ(stepper.step_count(), 40);
-  EXPECT_FALSE(stepper.failed()[4]);
+  EXPECT_FALSE(stepper.faults().failed(4));
   const sim::Pose2 second = walk_on();
   EXPECT_EQ(first.x, second.x);
   EXPECT_EQ(first.y, second.y);
   EXPECT_EQ(first.yaw_deg, second.yaw_deg);
   EXPECT_EQ(stepper.step_count(), 110);
-  EXPECT_FALSE(stepper.failed()[1]);  // the scheduled recovery came after the restore too
+  EXPECT_FALSE(stepper.faults().failed(1));  // the scheduled recovery came after the restore too
 }
 
 TEST(Stepper, LegsFailAndRecoverNowOrSayWhyNot) {
@@ -301,7 +301,7 @@ TEST(Stepper, LegsFailAndRecoverNowOrSayWhyNot) {
   EXPECT_THROW(stepper.set_failed({1, 2, 3, 4, 5}, true), BadInput);  // every leg
   stepper.set_failed({0}, false);
   EXPECT_FALSE(stepper.state().controller.legs[0].disabled);
-  EXPECT_FALSE(stepper.failed()[0]);
+  EXPECT_FALSE(stepper.faults().failed(0));
 }
 
 TEST(Walk, WindowDeviationsWrapAndSign) {
