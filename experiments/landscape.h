@@ -51,12 +51,6 @@ struct CombinationMeasure {
   bool first_window_passes = false;  // the paper's criterion on the first window: |yaw| < threshold
 };
 
-// Walks `steps` controller steps (the one stepping loop of the landscape).
-void walk_steps(const sim::SimModel& model, sim::SimState& state, long steps);
-
-// The trunk's pose now (position and front trunk yaw).
-sim::Pose2 trunk_pose(const sim::SimModel& model, const sim::SimState& state);
-
 // Measures one combination: a sim::Stepper started with every leg at 4 and `disabled` failed
 // from the start, the controller warmed up (sim::kControllerWarmup steps); then `periods` set with
 // every client free (as learning tries a candidate), learning::locked_settle_steps unmeasured,
