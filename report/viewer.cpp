@@ -205,10 +205,12 @@ class Viewer {
     } else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9 && press) {
       const auto leg = static_cast<std::size_t>(key - GLFW_KEY_1);
       // Through the stepper, so the fault is kept and told like a scheduled one. Failing the
-      // last working leg is refused (BadInput); the key then does nothing.
+      // last working leg is refused (BadInput): the overlay shows why until the next leg key.
+      refused_.clear();
       try {
         if (leg < model_.legs.size()) stepper_.set_failed({leg}, !stepper_.faults().failed(leg));
-      } catch (const BadInput&) {
+      } catch (const BadInput& e) {
+        refused_ = e.what();
       }
     }
   }
@@ -239,14 +241,6 @@ class Viewer {
     mjv_moveCamera(model_.mj.get(), mjMOUSE_ZOOM, 0.0, -kScrollZoom * dy, &scene_, &camera_);
   }
 
-  std::vector<std::size_t> disabled_legs() const {
-    std::vector<std::size_t> legs;
-    for (std::size_t i = 0; i < state_.controller.legs.size(); ++i) {
-      if (state_.controller.legs[i].disabled) legs.push_back(i);
-    }
-    return legs;
-  }
-
   // The right column of the status overlay, one line per title.
   std::string status_values(const std::vector<std::size_t>& disabled) const {
     const robot::Morphology& morph = model_.controller.morphology;
@@ -261,13 +255,14 @@ class Viewer {
            << (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled)) << "\n"
            << (synchronised_ ? "synchronised" : "free") << "\n"
            << (paused_ ? "paused" : "running");
+    if (!refused_.empty()) values << "\n" << refused_;
     return values.str();
   }
 
   void draw() {
     const mjModel* m = model_.mj.get();
     const robot::Morphology& morph = model_.controller.morphology;
-    const std::vector<std::size_t> disabled = disabled_legs();
+    const std::vector<std::size_t> disabled = stepper_.faults().failed_legs();
     std::vector<std::string> red;
     for (std::size_t leg : disabled) red.push_back(morph.legs[leg].name + "_");
 
@@ -279,7 +274,9 @@ class Viewer {
 
     const std::string values = status_values(disabled);
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport,
-                "Step\nTime\nPeriods\nDisabled\nClients\nStatus", values.c_str(), &context_);
+                refused_.empty() ? "Step\nTime\nPeriods\nDisabled\nClients\nStatus"
+                                 : "Step\nTime\nPeriods\nDisabled\nClients\nStatus\nRefused",
+                values.c_str(), &context_);
     const std::string keys = "Space\nRight\n1-" + std::to_string(morph.size()) + "\nS\nEsc, Q";
     const std::string actions = "pause / resume\none step while paused\ndisable / enable leg " +
                                 morph.legs.front().name + ".." + morph.legs.back().name +
@@ -296,6 +293,7 @@ class Viewer {
   sim::Stepper stepper_;  // the one stepping loop: start, faults
   sim::SimState& state_;
   bool synchronised_;
+  std::string refused_;  // why the last leg key did nothing (BadInput's line), or empty
   mjvCamera camera_{};
   mjvOption option_{};
   mjvScene scene_{};
