@@ -27,6 +27,10 @@ bool is_disabled(const std::vector<std::size_t>& disabled, std::size_t leg) {
   return std::find(disabled.begin(), disabled.end(), leg) != disabled.end();
 }
 
+bool in_period_set(const LandscapeSpec& spec, int period) {
+  return std::find(spec.period_set.begin(), spec.period_set.end(), period) != spec.period_set.end();
+}
+
 std::vector<std::size_t> working_legs(const robot::Morphology& morph,
                                       const std::vector<std::size_t>& disabled) {
   std::vector<std::size_t> out;
@@ -308,6 +312,13 @@ nlohmann::json landscape_summary(const Landscape& landscape,
   return summary;
 }
 
+bool in_landscape(const LandscapeSpec& spec, const learning::Periods& periods) {
+  for (std::size_t leg = 0; leg < periods.size(); ++leg) {
+    if (!is_disabled(spec.disabled, leg) && !in_period_set(spec, periods[leg])) return false;
+  }
+  return true;
+}
+
 std::vector<learning::Periods> parse_learned(const nlohmann::json& j, const LandscapeSpec& spec) {
   const robot::Morphology& morph = robot::morphology(spec.kind);
   if (!j.is_array()) throw BadInput("learned combinations: expected a JSON array of {leg: period}");
@@ -321,8 +332,7 @@ std::vector<learning::Periods> parse_learned(const nlohmann::json& j, const Land
       const std::size_t leg = robot::leg_index(morph, name);
       named[leg] = true;
       if (is_disabled(spec.disabled, leg)) continue;
-      if (!value.is_number_integer() || std::find(spec.period_set.begin(), spec.period_set.end(),
-                                                  value.get<int>()) == spec.period_set.end()) {
+      if (!value.is_number_integer() || !in_period_set(spec, value.get<int>())) {
         throw BadInput(where + ": " + name + " = " + value.dump() + " is not in the period set");
       }
       periods[leg] = value.get<int>();

@@ -103,5 +103,8 @@ nlohmann::json landscape_summary(const Landscape& landscape,
 // named with any period and are set to 4). Throws BadInput (one line) for anything else or a
 // period outside the spec's period set.
 std::vector<learning::Periods> parse_learned(const nlohmann::json& j, const LandscapeSpec& spec);
+// Whether `periods` is one of the landscape's combinations: every working leg's period in the
+// period set (a disabled leg's period does not count).
+bool in_landscape(const LandscapeSpec& spec, const learning::Periods& periods);
 
 }  // namespace multicpg::experiments

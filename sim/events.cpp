@@ -84,7 +84,6 @@ void FaultSchedule::apply_now(const robot::Morphology& morph, const Fault& fault
   if (!now.empty()) check.push_back({fault.step, now, false});
   check.push_back(fault);
   validate(morph, check);
-  if (failed_.empty()) failed_.assign(morph.size(), false);
   apply(fault, controller);
 }
 

@@ -57,7 +57,6 @@ void validate(const robot::Morphology& morph, const FaultTimeline& faults);
 // it (and the learner's fake walker likewise), and the learner reads from it what came.
 class FaultSchedule {
  public:
-  FaultSchedule() = default;
   // Throws BadInput (validate's message) for a bad timeline.
   FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline);
 
@@ -73,7 +72,7 @@ class FaultSchedule {
   const FaultTimeline& timeline() const { return timeline_; }
   // Every fault that has come, from the timeline or not, in order.
   const std::vector<Fault>& applied() const { return applied_; }
-  // Legs failed now (empty before the first fault: none).
+  // Whether `leg` has failed now (false for a leg out of range).
   bool failed(std::size_t leg) const { return leg < failed_.size() && failed_[leg]; }
   std::vector<std::size_t> failed_legs() const;
   // Faults of the timeline still to come.

@@ -6,8 +6,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
-
 #include "common/errors.h"
 #include "common/table.h"
 #include "experiments/runner.h"
@@ -40,19 +38,6 @@ std::vector<learning::Periods> learned_periods(const std::filesystem::path& dir,
   return learned;
 }
 
-// Whether every working leg's period is in the landscape's period set.
-bool in_landscape(const experiments::LandscapeSpec& spec, const learning::Periods& periods) {
-  for (std::size_t leg = 0; leg < periods.size(); ++leg) {
-    const bool disabled =
-        std::find(spec.disabled.begin(), spec.disabled.end(), leg) != spec.disabled.end();
-    if (!disabled && std::find(spec.period_set.begin(), spec.period_set.end(), periods[leg]) ==
-                         spec.period_set.end()) {
-      return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 Section landscape_stage(const StageContext& ctx) {
@@ -68,7 +53,7 @@ Section landscape_stage(const StageContext& ctx) {
       learned_periods(ctx.options.out / "experiments" / "quadruped", kScenario, morph);
   std::vector<learning::Periods> learned;
   for (const learning::Periods& p : converged) {
-    if (in_landscape(spec, p)) learned.push_back(p);
+    if (experiments::in_landscape(spec, p)) learned.push_back(p);
   }
   const std::string folder = "experiments/landscape-quadruped-" + std::string(kScenario);
   const experiments::Landscape landscape = experiments::run_landscape(
