@@ -35,9 +35,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
   spec.seed = o.learning.options.seed;
   spec.jobs = o.jobs.value_or(0);
   spec.out = o.out;
-  // Every leg set is overwritten per task; the validation needs one working leg set.
-  spec.base =
-      compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
+  spec.base = learning_options(o.learning);  // checked with each run (resolve_sweep)
   spec.check_windows = o.check_windows;
   spec.sim = sim_options(o.sim);
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);

@@ -9,12 +9,12 @@
 #include "apps/commands.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
-#include "apps/results_json.h"
+#include "apps/run_flags.h"
 #include "apps/sim_flags.h"
-#include "apps/walk_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
+#include "experiments/run_json.h"
 #include "experiments/scenarios.h"
 #include "robot/leg_sets.h"
 #include "sim/record_csv.h"
@@ -23,10 +23,7 @@ namespace multicpg::apps {
 namespace {
 
 struct LearnOptions {
-  std::string robot = "hexapod";
-  WalkFlags faults;  // only the fault flags are declared
-  LearningFlags learning;
-  sim::SimOptions sim;
+  RunFlags run;  // robot, faults, learning and simulation flags
   bool json = false;
   std::string out;
 };
@@ -102,18 +99,17 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearningRe
 }
 
 void run_learn(const LearnOptions& o) {
-  const robot::RobotKind kind = robot::parse_robot(o.robot);
-  const robot::Morphology& morph = robot::morphology(kind);
-  const learning::CompensationOptions options =
-      compensation_options(o.learning, morph, parse_faults(morph, o.faults));
-  const std::vector<std::size_t> failing = learning::failing_legs(options);
+  experiments::RunSpec spec = run_spec(o.run, /*learn=*/true);
+  spec.record.steps = !o.out.empty();
+  const robot::Morphology& morph = experiments::morphology(spec);
+  const learning::CompensationOptions& options = *spec.learning;
+  const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
   if (!o.out.empty()) ensure_writable_dir(o.out);
-  const sim::SimModel model = sim::make_sim_model(kind, sim_options(o.sim));
+  const sim::SimModel model = experiments::make_run_model(spec);
 
-  const experiments::LearningRun run =
-      experiments::run_learning(model, options, /*record=*/!o.out.empty());
+  const experiments::LearningRun run = experiments::run_learning(model, spec);
   const learning::LearningResult& r = run.result;
-  const nlohmann::json json = learn_json(morph, options, r, o.faults.disable_at);
+  const nlohmann::json json = experiments::learn_json(spec, r);
 
   if (!o.out.empty()) {
     const std::filesystem::path dir(o.out);
@@ -133,7 +129,7 @@ void run_learn(const LearnOptions& o) {
               << options.hold_windows << " windows to hold)";
   }
   std::cout << ", faults";
-  for (const sim::Fault& f : learning::fault_timeline(options)) {
+  for (const sim::Fault& f : spec.faults) {
     std::cout << " " << robot::leg_set_name(morph, f.legs) << (f.recover ? " recover" : " fail")
               << "@" << f.step;
   }
@@ -159,10 +155,10 @@ void register_learn(CLI::App& app) {
   auto opts = std::make_shared<LearnOptions>();
   CLI::App* cmd = app.add_subcommand(
       "learn", "disable legs and learn periods that walk straight again (paper Fig. 8)");
-  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
-  add_fault_flags(*cmd, opts->faults);
-  add_learning_flags(*cmd, opts->learning);
-  add_sim_flags(*cmd, opts->sim);
+  add_robot_flag(*cmd, opts->run);
+  add_fault_flags(*cmd, opts->run);
+  add_learning_flags(*cmd, opts->run.learning);
+  add_sim_flags(*cmd, opts->run.sim);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");

@@ -6,8 +6,8 @@
 #include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/run_flags.h"
 #include "apps/sim_flags.h"
-#include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
 #include "report/film.h"
@@ -16,12 +16,10 @@ namespace multicpg::apps {
 namespace {
 
 struct RenderOptions {
-  WalkFlags walk;
+  RunFlags run;  // robot, start, faults, learning and simulation flags
   long steps = 400;
   bool learn = false;
   bool tunnel = false;
-  LearningFlags learning;
-  sim::SimOptions sim;
   std::string out;
   int width = report::kDefaultFrameWidth;
   int height = report::kDefaultFrameHeight;
@@ -30,15 +28,9 @@ struct RenderOptions {
 
 void run_render(const RenderOptions& o) {
   report::film_format(o.out);  // an unknown file type fails before any work
-  const WalkChoice choice = parse_walk_flags(o.walk);
-  const robot::RobotKind kind = choice.kind;
-  const robot::Morphology& morph = robot::morphology(kind);
-  std::optional<learning::CompensationOptions> learn;
-  if (o.learn) learn = compensation_options(o.learning, morph, choice.faults);
-
-  sim::SimOptions sim_opts = sim_options(o.sim);
-  sim_opts.scene.tunnel = o.tunnel;
-  const sim::SimModel model = sim::make_sim_model(kind, sim_opts);
+  experiments::RunSpec run = run_spec(o.run, o.learn);
+  run.sim.scene.tunnel = o.tunnel;
+  const sim::SimModel model = experiments::make_run_model(run);
   report::FilmSpec spec;
   spec.out = o.out;
   spec.width = o.width;
@@ -46,20 +38,19 @@ void run_render(const RenderOptions& o) {
   spec.speed = o.speed;
   report::Film film(model, spec);
 
-  if (learn) {
+  if (run.learning) {
     report::FilmObserver observer(film);
-    const experiments::LearningRun run =
-        experiments::run_learning(model, *learn, false, 0, &observer);
-    const std::string summary = std::string(learning::to_string(run.result.outcome)) + " after " +
-                                std::to_string(run.result.trials) + " trials";
-    if (film.format() == report::FilmFormat::picture) film.picture(run.final_state, summary);
+    const experiments::LearningRun learned = experiments::run_learning(model, run, 0, &observer);
+    const std::string summary = std::string(learning::to_string(learned.result.outcome)) +
+                                " after " + std::to_string(learned.result.trials) + " trials";
+    if (film.format() == report::FilmFormat::picture) film.picture(learned.final_state, summary);
     film.finish();
     std::cout << summary << "; wrote " << o.out << " (" << film.frames() << " frames)\n";
     return;
   }
   sim::WalkSpec walk;
-  walk.start = {choice.periods, choice.warmup};
-  walk.faults = choice.faults;
+  walk.start = run.start;
+  walk.faults = run.faults;
   walk.steps = o.steps;
   walk.record = false;
   report::FilmObserver observer(film, "walking");
@@ -80,14 +71,14 @@ void register_render(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render", "render a walk or a learning run to a video (.mp4) or picture (.png), headless");
   cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
-  add_walk_flags(*cmd, o->walk);
+  add_walk_flags(*cmd, o->run);
   cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")
       ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
-  add_learning_flags(*cmd, o->learning);
-  add_sim_flags(*cmd, o->sim);
+  add_learning_flags(*cmd, o->run.learning);
+  add_sim_flags(*cmd, o->run.sim);
   cmd->add_option("--width", o->width, "frame width in pixels")
       ->check(in(report::kFrameSideLimits))
       ->capture_default_str();

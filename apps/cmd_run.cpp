@@ -117,18 +117,19 @@ void rerun(const RerunOptions& o) {
     throw BadInput("'" + o.dir + "' has no run " + o.id +
                    " (RUN_ID: a file name in runs/ without .json)");
   }
+  const experiments::RunSpec& spec = experiments::spec_of(recorded.sweep, *task);
   nlohmann::json result;
   if (!o.film.empty()) {
-    const sim::SimModel model = experiments::make_task_model(*task);
-    report::FilmSpec spec;
-    spec.out = o.film;
-    report::Film film(model, spec);
+    const sim::SimModel model = experiments::make_run_model(spec);
+    report::FilmSpec film_spec;
+    film_spec.out = o.film;
+    report::Film film(model, film_spec);
     report::FilmObserver observer(film);
-    result = experiments::run_sweep_task(*task, &observer);
+    result = experiments::run_sweep_task(spec, &observer);
     film.finish();
     std::cout << "wrote " << o.film << " (" << film.frames() << " frames)\n";
   } else {
-    result = experiments::run_sweep_task(*task);
+    result = experiments::run_sweep_task(spec);
   }
   if (!o.out.empty()) {
     experiments::RunnerOptions runner;

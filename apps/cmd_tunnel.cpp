@@ -9,10 +9,10 @@
 #include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/run_flags.h"
 #include "apps/sim_flags.h"
-#include "apps/tunnel_command.h"
-#include "apps/walk_flags.h"
 #include "common/errors.h"
+#include "experiments/run_json.h"
 #include "experiments/scenarios.h"
 #include "experiments/tunnel.h"
 #include "report/film.h"
@@ -22,27 +22,46 @@ namespace multicpg::apps {
 namespace {
 
 struct TunnelOptions {
-  TunnelRequest request;
-  std::string periods = "4";
+  RunFlags run;  // robot, the legs that fail, learning and simulation flags
+  bool learn = false;
+  long max_steps = experiments::kTunnelMaxSteps;
+  std::string video;  // .mp4 to film the tunnel walk; empty = none
   bool json = false;
 };
 
-void run_tunnel(TunnelOptions o, bool periods_given) {
-  const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
-  if (periods_given) o.request.periods = o.periods;
-  const TunnelOutcome out = run_tunnel_command(o.request);
+void run_tunnel(const TunnelOptions& o, bool periods_given) {
+  if (o.learn && periods_given) {
+    throw BadInput("--periods and --learn exclude each other: --learn finds them");
+  }
+  if (!o.video.empty() && report::film_format(o.video) != report::FilmFormat::video) {
+    throw BadInput("--video must name an .mp4 file");
+  }
+  const experiments::RunSpec spec = run_spec(o.run, o.learn);
+  const robot::Morphology& morph = experiments::morphology(spec);
+  const sim::SimModel corridor = experiments::tunnel_model(spec);
+  std::optional<report::Film> film;
+  std::optional<report::FilmObserver> observer;
+  if (!o.video.empty()) {
+    report::FilmSpec film_spec;
+    film_spec.out = o.video;
+    film.emplace(corridor, film_spec);
+    observer.emplace(*film, "tunnel 3.0 m x 1.2 m");
+  }
+  const experiments::TunnelOutcome out =
+      experiments::run_tunnel(spec, corridor, o.max_steps, observer ? &*observer : nullptr);
+  if (film) film->finish();
   const experiments::TunnelRun& run = out.run;
-  const std::string result =
-      run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
   if (o.json) {
-    std::cout << tunnel_json(morph, out).dump(2) << "\n";
+    std::cout << experiments::tunnel_json(spec, out).dump(2) << "\n";
     return;
   }
-  std::cout << std::fixed << std::setprecision(2) << "tunnel " << out.tunnel_length_m << " m x "
-            << out.tunnel_width_m << " m, disabled "
+  const std::string result =
+      run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
+  std::cout << std::fixed << std::setprecision(2) << "tunnel " << corridor.scene.tunnel_length
+            << " m x " << corridor.scene.tunnel_width << " m, disabled "
             << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled)) << "\n";
   if (out.learned) {
-    std::cout << "learned in the open field (" << learning::to_string(out.options->mode)
+    std::cout << "learned in the open field (" << learning::to_string(spec.learning->mode)
               << " mode): " << learning::to_string(out.learned->outcome) << " after "
               << out.learned->trials << " trials, "
               << robot::period_map_text(morph, out.learned->periods, out.disabled)
@@ -51,7 +70,7 @@ void run_tunnel(TunnelOptions o, bool periods_given) {
   std::cout << result << " after " << run.steps << " steps: forward " << run.forward_m
             << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
             << "° (+ = left)\n";
-  if (!o.request.video.empty()) std::cout << "wrote " << o.request.video << "\n";
+  if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
 }
 
 }  // namespace
@@ -59,20 +78,22 @@ void run_tunnel(TunnelOptions o, bool periods_given) {
 void register_tunnel(CLI::App& app) {
   auto o = std::make_shared<TunnelOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "tunnel", "walk the hexapod through the 3.0 m x 1.2 m tunnel of paper §5 (Table 1)");
-  cmd->add_option("--disable", o->request.disable, "legs that fail, e.g. R1,R3");
-  CLI::Option* periods = cmd->add_option("--periods", o->periods, "4 (every leg) or R1=5,R2=4,...")
-                             ->capture_default_str();
-  cmd->add_flag("--learn", o->request.learn,
+      "tunnel", "walk a robot through the 3.0 m x 1.2 m tunnel of paper §5 (Table 1)");
+  add_robot_flag(*cmd, o->run);
+  cmd->add_option("--disable", o->run.disable, "legs that fail, e.g. R1,R3");
+  CLI::Option* periods =
+      cmd->add_option("--periods", o->run.periods, "4 (every leg) or R1=5,R2=4,...")
+          ->capture_default_str();
+  cmd->add_flag("--learn", o->learn,
                 "learn in the open field first (from a walking robot), then walk the learned "
                 "controller through the tunnel");
-  add_learning_flags(*cmd, o->request.learning);
-  cmd->add_option("--max-steps", o->request.max_steps, "steps before giving up")
+  add_learning_flags(*cmd, o->run.learning);
+  cmd->add_option("--max-steps", o->max_steps, "steps before giving up")
       ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();
-  cmd->add_option("--video", o->request.video, "also film the run to FILE.mp4");
+  cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
   cmd->add_flag("--json", o->json, "print one JSON object");
-  add_sim_flags(*cmd, o->request.sim);
+  add_sim_flags(*cmd, o->run.sim);
   cmd->callback([o, periods] { run_tunnel(*o, periods->count() > 0); });
 }
 

@@ -1,10 +1,10 @@
-// multicpg view: the simulated robot walking in a window (issue 5).
+// multicpg view: the simulated robot walking in a window.
 #include <iostream>
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "apps/options.h"
-#include "apps/walk_flags.h"
+#include "apps/run_flags.h"
 #include "common/errors.h"
 #include "report/viewer.h"
 #include "sim/sim.h"
@@ -14,17 +14,17 @@ namespace multicpg::apps {
 namespace {
 
 struct ViewOptions {
-  WalkFlags walk;
+  RunFlags run;    // robot, start and faults
   long steps = 0;  // only read when --steps is given
 };
 
 // Every flag is checked before the display is touched, so bad input is reported the same with
 // or without one.
 void run_view(const ViewOptions& o, bool steps_given) {
-  const WalkChoice choice = parse_walk_flags(o.walk);
+  const experiments::RunSpec run = run_spec(o.run, /*learn=*/false);
   report::ViewerSpec spec;
-  spec.start = {choice.periods, choice.warmup};
-  spec.faults = choice.faults;
+  spec.start = run.start;
+  spec.faults = run.faults;
   if (steps_given) {
     for (const sim::Fault& f : spec.faults) {
       if (f.step >= o.steps) {
@@ -35,7 +35,7 @@ void run_view(const ViewOptions& o, bool steps_given) {
     spec.steps = o.steps;
   }
 
-  const sim::SimModel model = sim::make_sim_model(choice.kind);
+  const sim::SimModel model = experiments::make_run_model(run);
   const long steps = report::run_viewer(model, spec);
   std::cout << "viewed " << steps << " steps (" << static_cast<double>(steps) * model.control_dt
             << " s simulated)\n";
@@ -47,7 +47,7 @@ void register_view(CLI::App& app) {
   auto opts = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand(
       "view", "watch the robot walk in a window (Space pause, Right step, 1-8 legs, S sync)");
-  add_walk_flags(*cmd, opts->walk);
+  add_walk_flags(*cmd, opts->run);
   CLI::Option* steps = cmd->add_option("--steps", opts->steps, "quit after this many steps")
                            ->check(in(sim::kRunStepsLimits));
   cmd->callback([opts, steps] { run_view(*opts, steps->count() > 0); });

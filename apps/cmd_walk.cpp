@@ -10,10 +10,11 @@
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "apps/options.h"
+#include "apps/run_flags.h"
 #include "apps/sim_flags.h"
-#include "apps/walk_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
 #include "sim/record_csv.h"
@@ -26,11 +27,10 @@ namespace {
 constexpr long kDefaultSteps = 3 * sim::kDefaultWindow;
 
 struct WalkOptions {
-  WalkFlags walk;
+  RunFlags run;  // robot, start, faults and simulation flags
   long settle = 0;
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
-  sim::SimOptions sim;
   std::string csv;
   bool json = false;
 };
@@ -107,26 +107,28 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
 }
 
 void run_walk(const WalkOptions& o) {
-  const WalkChoice choice = parse_walk_flags(o.walk);
-  const robot::RobotKind kind = choice.kind;
-  const robot::Morphology& morph = robot::morphology(kind);
+  const experiments::RunSpec run_spec = apps::run_spec(o.run, /*learn=*/false);
+  const robot::Morphology& morph = experiments::morphology(run_spec);
   Run run{&morph, {}, 0.0, 0.0};
   sim::WalkSpec& spec = run.spec;
-  spec.start = {choice.periods, choice.warmup};
-  spec.faults = choice.faults;
-  if (o.settle < 0) throw BadInput("--settle must not be negative");
+  spec.start = run_spec.start;
+  spec.faults = run_spec.faults;
   spec.settle = o.settle;
   spec.steps = o.steps;
   spec.window = o.window;
   spec.record = !o.csv.empty();
-  const sim::SimOptions sim_opts = sim_options(o.sim);
   std::optional<AtomicFile> csv;
   if (!o.csv.empty()) csv.emplace(o.csv);
 
-  const sim::SimModel model = sim::make_sim_model(kind, sim_opts);
+  const sim::SimModel model = experiments::make_run_model(run_spec);
   run.control_dt = model.control_dt;
   run.physics_dt = model.physics_dt;
-  const sim::WalkResult result = sim::walk(model, spec);
+  sim::WalkResult result;
+  try {
+    result = sim::walk(model, spec);
+  } catch (const OptionError& e) {
+    throw BadInput(flag_of(e.key(), o.run) + ": " + e.what());
+  }
   if (csv) {
     sim::write_record_csv(csv->stream(), *run.morph, result.record);
     csv->commit();
@@ -144,7 +146,7 @@ void register_walk(CLI::App& app) {
   auto opts = std::make_shared<WalkOptions>();
   CLI::App* cmd = app.add_subcommand(
       "walk", "walk a simulated robot; print distance, speed and yaw deviation per window");
-  add_walk_flags(*cmd, opts->walk);
+  add_walk_flags(*cmd, opts->run);
   cmd->add_option("--settle", opts->settle,
                   "steps walked before measuring (delay lines fill after 126 steps for the "
                   "hexapod; p = 4 CPGs lock after about 740)")
@@ -156,7 +158,7 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--window", opts->window, "steps per yaw-deviation window (SPEC §6)")
       ->check(in(learning::kWindowStepsLimits))
       ->capture_default_str();
-  add_sim_flags(*cmd, opts->sim);
+  add_sim_flags(*cmd, opts->run.sim);
   cmd->add_option("--csv", opts->csv,
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");

@@ -65,10 +65,7 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
       ->capture_default_str();
 }
 
-learning::CompensationOptions compensation_options(const LearningFlags& f,
-                                                   const robot::Morphology& morph,
-                                                   const sim::FaultTimeline& faults) {
-  if (faults.empty()) throw BadInput("--disable or --fault: name at least one leg that fails");
+learning::CompensationOptions learning_options(const LearningFlags& f) {
   learning::CompensationOptions o = f.options;
   if (o.mode == learning::Mode::paper) {
     if (f.robust_only) {
@@ -78,16 +75,6 @@ learning::CompensationOptions compensation_options(const LearningFlags& f,
     }
     o.steering = learning::Steering::off;  // recorded as it runs: paper mode never steers
   }
-  // The paper's one fault keeps its shorthand form (paper mode takes only that).
-  o.disabled.clear();
-  o.faults.clear();
-  if (faults.size() == 1 && !faults.front().recover) {
-    o.disabled = faults.front().legs;
-    o.fail_step = faults.front().step;
-  } else {
-    o.faults = faults;
-  }
-  learning::validate(o, morph);
   return o;
 }
 

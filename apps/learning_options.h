@@ -19,11 +19,8 @@ struct LearningFlags {
 // parse time (without --beta when `with_beta` is false: the beta study sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);
 
-// The options for one run: the bound flags with the fault timeline `faults` (apps/walk_flags.h
-// parse_faults; it must fail some leg). Throws BadInput (one line) for robust-mode flags in
-// paper mode or a bad leg set (learning::validate).
-learning::CompensationOptions compensation_options(const LearningFlags& flags,
-                                                   const robot::Morphology& morph,
-                                                   const sim::FaultTimeline& faults);
+// The options the flags give (checked with the run, experiments::validate). Throws BadInput (one
+// line) for robust-mode flags in paper mode.
+learning::CompensationOptions learning_options(const LearningFlags& flags);
 
 }  // namespace multicpg::apps

@@ -1,10 +1,7 @@
 #include "apps/options.h"
 
-#include <charconv>
-
 #include "common/errors.h"
 #include "robot/leg_sets.h"
-#include "sim/walk.h"
 
 namespace multicpg::apps {
 void require_gait_period(int period, const std::string& flag) {
@@ -12,16 +9,6 @@ void require_gait_period(int period, const std::string& flag) {
     throw BadInput(flag + ": period " + std::to_string(period) +
                    " gives no gait (allowed: " + robot::gait_periods_text() + ")");
   }
-}
-
-long parse_step(const std::string& text, const std::string& flag) {
-  long value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || value < 0 || value > sim::kMaxSteps) {
-    throw BadInput(flag + ": '" + text + "' is not a step in 0.." + std::to_string(sim::kMaxSteps));
-  }
-  return value;
 }
 
 std::vector<std::size_t> parse_leg_flag(const robot::Morphology& morph, const std::string& text,

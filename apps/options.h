@@ -11,9 +11,6 @@ namespace multicpg::apps {
 // Throws unless `period` is a gait period, naming the allowed ones.
 void require_gait_period(int period, const std::string& flag);
 
-// A step number: a whole number in 0..sim::kMaxSteps, nothing else (no sign, no junk).
-long parse_step(const std::string& text, const std::string& flag);
-
 // robot::parse_leg_set / parse_period_map with the flag named in the error ("--periods: ...").
 std::vector<std::size_t> parse_leg_flag(const robot::Morphology& morph, const std::string& text,
                                         const std::string& flag);

@@ -18,7 +18,7 @@ nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind
   return {{"robot", robot::to_string(kind)},
           {"runs", spec.runs},
           {"seed", spec.seed},
-          {"learning", learning_document(spec.base)},
+          {"learning", learning_document(spec.base, 0)},
           {"sim", spec.sim},
           {"record", {{"check_windows", spec.check_windows}}}};
 }

@@ -7,15 +7,15 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/run_spec.h"
 #include "experiments/tables.h"
 #include "learning/compensation.h"
 #include "sim/sim.h"
 
 namespace multicpg::experiments {
 
-// Runs per scenario or beta, and windows checked after each run (documented ranges).
+// Runs per scenario or beta (documented range).
 inline constexpr Limits<int> kRunsLimits{1, 100'000};
-inline constexpr Limits<long> kCheckWindowsLimits{0, 1000};
 
 struct ExperimentSpec {
   robot::RobotKind kind = robot::RobotKind::hexapod;

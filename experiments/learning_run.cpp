@@ -1,6 +1,7 @@
 #include "experiments/learning_run.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace multicpg::experiments {
 namespace {
@@ -25,18 +26,14 @@ class TrialEnds final : public sim::Observer {
 
 }  // namespace
 
-sim::StartSpec learning_start(const learning::CompensationOptions& options) {
-  sim::StartSpec start;
-  if (options.mode == learning::Mode::paper) start.warmup = 0;
-  return start;
-}
-
-LearningRun run_learning(const sim::SimModel& model, const learning::CompensationOptions& options,
-                         bool record, long after_steps, sim::Observer* observer) {
+LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long after_steps,
+                         sim::Observer* observer) {
+  if (!spec.learning) throw std::invalid_argument("run_learning: the run has no learning options");
+  const learning::CompensationOptions& options = *spec.learning;
   LearningRun run;
   TrialEnds ends(observer);
-  sim::Stepper stepper(model, learning_start(options), learning::fault_timeline(options), &ends,
-                       record ? &run.record : nullptr);
+  sim::Stepper stepper(model, spec.start, spec.faults, &ends,
+                       spec.record.steps ? &run.record : nullptr);
   SimWalker walker(stepper);
   run.result = learning::compensate(walker, options);
   run.learning_end_step = stepper.step_count();

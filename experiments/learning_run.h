@@ -1,9 +1,10 @@
-// Online learning on the simulated robot (issue 4, issue 8): learning::compensate driving a
-// MuJoCo robot through the one stepping loop (sim::Stepper).
+// Online learning on the simulated robot (SPEC §5-§6): learning::compensate driving a MuJoCo
+// robot through the one stepping loop (sim::Stepper).
 #pragma once
 
 #include <vector>
 
+#include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
@@ -30,10 +31,6 @@ class SimWalker final : public learning::Walker {
   sim::Stepper& stepper_;
 };
 
-// How a learning run starts: paper mode as the reference did (every CPG reset at the start,
-// a cold controller, SPEC §6), robust mode from a running, locked controller (issue 8).
-sim::StartSpec learning_start(const learning::CompensationOptions& options);
-
 struct LearningRun {
   learning::LearningResult result;
   sim::WalkRecord record;             // every step, when recorded (row 0 = the start)
@@ -45,10 +42,12 @@ struct LearningRun {
   sim::SimState final_state;  // the robot at the end
 };
 
-// Runs compensation from a healthy, synchronised robot; afterwards walks `after_steps` more
-// with the final periods (for "after learning" figures and the tunnel). `observer` (may be null)
-// sees every step, fault, detection, trial and episode.
-LearningRun run_learning(const sim::SimModel& model, const learning::CompensationOptions& options,
-                         bool record, long after_steps = 0, sim::Observer* observer = nullptr);
+// Runs the learning run `spec` (which must have learning options; the caller validated it) on
+// `model`, made from spec.robot and spec.sim: compensation from its start with its faults, every
+// step recorded when spec.record.steps; afterwards walks `after_steps` more with the final
+// periods (for "after learning" figures and the tunnel). `observer` (may be null) sees every
+// step, fault, detection, trial and episode.
+LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long after_steps = 0,
+                         sim::Observer* observer = nullptr);
 
 }  // namespace multicpg::experiments

@@ -19,6 +19,7 @@
 #include "robot/leg_sets.h"
 #include "sim/json.h"
 #include "sim/sim.h"
+#include "sim/walk.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -31,6 +32,9 @@ constexpr std::size_t kMaxScenarioLegs = 3;  // SPEC §8: 1-3 disabled legs ("al
 
 // Keys each run sets itself: its disabled legs or fault timeline and its seed.
 const std::set<std::string> kPerRunLearningKeys{"disabled", "faults", "seed"};
+// The document's step at which a scenario's leg set fails (learning.fail_step): a key of the
+// "learning" table, read by the sweep, not by the learner.
+constexpr const char* kFailStepKey = "fail_step";
 
 std::string join(const std::vector<std::string>& parts, const std::string& sep) {
   std::string out;
@@ -410,37 +414,31 @@ json arguments_of(const Sweep& sweep, const Shard& shard) {
   return args;
 }
 
-sim::SimModel make_task_model(robot::RobotKind kind, const Task& task) {
-  return sim::make_sim_model(kind, decode<sim::SimOptions>(task.params.at("sim")));
-}
-
-// Each distinct simulation of the tasks, made once and shared read-only by the threads.
+// Each distinct simulation of the runs, made once and shared read-only by the threads.
 class Models {
  public:
-  Models(robot::RobotKind kind, const std::vector<Task>& tasks) {
-    for (const Task& t : tasks) {
-      const std::string key = t.params.at("sim").dump();
-      if (!models_.count(key)) {
-        models_.emplace(key, make_task_model(kind, t));
-      }
+  explicit Models(const std::vector<const RunSpec*>& specs) {
+    for (const RunSpec* spec : specs) {
+      const std::string key = key_of(*spec);
+      if (!models_.count(key)) models_.emplace(key, make_run_model(*spec));
     }
   }
-  const sim::SimModel& of(const Task& task) const {
-    return models_.at(task.params.at("sim").dump());
-  }
+  const sim::SimModel& of(const RunSpec& spec) const { return models_.at(key_of(spec)); }
 
  private:
+  // The robot and every simulation option, as recorded: equal records, equal models.
+  static std::string key_of(const RunSpec& spec) {
+    return std::string(robot::to_string(spec.robot)) + json(spec.sim).dump();
+  }
   std::map<std::string, sim::SimModel> models_;
 };
 
-json task_result(const sim::SimModel& model, const Task& task, sim::Observer* observer) {
+json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer* observer) {
   const robot::Morphology& morph = model.controller.morphology;
-  const auto options = decode<learning::CompensationOptions>(task.params.at("learning"));
-  const json& record = task.params.at("record");
-  const long check_windows = record.at("check_windows").get<long>();
-  const LearningRun run = run_learning(model, options, /*record=*/false,
-                                       check_windows * options.window_steps, observer);
-  json out = learning::to_json(run.result, morph, learning::failing_legs(options));
+  const learning::CompensationOptions& options = *spec.learning;
+  const long check_windows = spec.record.check_windows;
+  const LearningRun run = run_learning(model, spec, check_windows * options.window_steps, observer);
+  json out = learning::to_json(run.result, morph, sim::failing_legs(spec.faults));
   if (check_windows > 0) {
     json windows = json::array();
     bool holds = true;
@@ -451,7 +449,7 @@ json task_result(const sim::SimModel& model, const Task& task, sim::Observer* ob
     out["after_windows"] = windows;
     out["holds_after"] = holds;
   }
-  if (!record.at("trace").get<bool>()) out.erase("trace");
+  if (!spec.record.trace) out.erase("trace");
   return out;
 }
 
@@ -605,9 +603,10 @@ nlohmann::json landscape_document(const LandscapeSpec& spec) {
           {"sim", spec.sim}};
 }
 
-nlohmann::json learning_document(const learning::CompensationOptions& options) {
+nlohmann::json learning_document(const learning::CompensationOptions& options, long fail_step) {
   json j = options;
   for (const std::string& key : kPerRunLearningKeys) j.erase(key);
+  j[kFailStepKey] = fail_step;
   return j;
 }
 
@@ -652,9 +651,9 @@ Sweep resolve_sweep(const json& doc) {
   }
 
   // Learning and sim: defaults, the document's values, the grid.
-  json learning = learning_document(learning::CompensationOptions{});
-  merge_checked(doc.value("learning", json::object()), json(learning::CompensationOptions{}),
-                "learning", learning, sweep.grid, kPerRunLearningKeys);
+  json learning = learning_document(learning::CompensationOptions{}, 0);
+  merge_checked(doc.value("learning", json::object()), json(learning), "learning", learning,
+                sweep.grid, kPerRunLearningKeys);
   json sim_doc = sim::SimOptions{};
   merge_checked(doc.value("sim", json::object()), json(sim::SimOptions{}), "sim", sim_doc,
                 sweep.grid);
@@ -709,19 +708,26 @@ Sweep resolve_sweep(const json& doc) {
       group_parts.push_back(beta_table ? value_text(point[a])
                                        : names[a] + "=" + value_text(point[a]));
     }
+    const long fail_step = learning_point.at(kFailStepKey).get<long>();
+    require_in(std::string("learning.") + kFailStepKey, fail_step, sim::kStepLimits);
+    learning_point.erase(kFailStepKey);
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(sim_point, "sim");
     if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options);
     for (const ScenarioSpec& s : scenarios) {
-      learning::CompensationOptions options = base;
-      options.disabled = s.disabled;
-      options.faults = s.faults;
+      RunSpec spec;
+      spec.robot = sweep.robot;
+      spec.sim = sim_options;
+      spec.learning = base;
+      spec.start = learning_start(base.mode);
+      spec.faults = s.faults.empty() ? sim::fail_at(s.disabled, fail_step) : s.faults;
+      spec.record.check_windows = check_windows;
+      spec.record.trace = trace.get<bool>();
       try {
-        learning::validate(options, morph);
+        validate(spec);
       } catch (const OptionError& e) {
-        throw OptionError(child("learning", e.key()), e.what());
-      } catch (const BadInput& e) {
-        throw OptionError("learning", e.what() + std::string(" (scenario ") + s.name + ")");
+        if (e.key() != "faults") throw;
+        throw OptionError("scenarios", e.what() + std::string(" (scenario ") + s.name + ")");
       }
       std::vector<std::string> kp = key_parts;
       std::vector<std::string> gp = group_parts;
@@ -736,29 +742,46 @@ Sweep resolve_sweep(const json& doc) {
         task.group = join(gp, " ");
         task.run = run;
         task.seed = derive_seed(seed, task.key);
-        options.seed = task.seed;
+        spec.learning->seed = task.seed;
+        // The run file's record of its options (the form earlier versions wrote).
+        json options = *spec.learning;
+        options["disabled"] = s.disabled;
+        options[kFailStepKey] = fail_step;
+        options["faults"] = s.faults;
         task.params = {{"robot", robot::to_string(sweep.robot)},
                        {"scenario", s.name},
-                       {"disabled", robot::leg_set_json(morph, learning::failing_legs(options))},
+                       {"disabled", robot::leg_set_json(morph, sim::failing_legs(spec.faults))},
                        {"grid", grid_values},
                        {"learning", options},
                        {"sim", sim_options},
                        {"record", record}};
         sweep.tasks.push_back(std::move(task));
+        sweep.specs.push_back(spec);
       }
     }
   }
   return sweep;
 }
 
+const RunSpec& spec_of(const Sweep& sweep, const Task& task) {
+  for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
+    if (sweep.tasks[i].key == task.key) return sweep.specs.at(i);
+  }
+  throw std::invalid_argument("spec_of: no run " + task.key + " in the sweep");
+}
+
 SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   const json arguments = arguments_of(sweep, options.shard);
   if (is_primary_process()) ensure_writable_dir(options.out);
   std::vector<Task> tasks;
+  std::map<std::string, const RunSpec*> specs;
+  std::vector<const RunSpec*> shard_specs;
   for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
     if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
         options.shard.index) {
       tasks.push_back(sweep.tasks[i]);
+      shard_specs.push_back(&sweep.specs[i]);
+      specs.emplace(sweep.tasks[i].key, &sweep.specs[i]);
     }
   }
   RunnerOptions runner;
@@ -768,9 +791,14 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   runner.progress = options.progress;
   runner.provenance = provenance(mj_versionString());
   validate(runner);
-  const Models models(sweep.robot, tasks);
+  const Models models(shard_specs);
   const RunnerOutcome outcome = run_tasks(
-      tasks, [&](const Task& task) { return task_result(models.of(task), task, nullptr); }, runner);
+      tasks,
+      [&](const Task& task) {
+        const RunSpec& spec = *specs.at(task.key);
+        return task_result(models.of(spec), spec, nullptr);
+      },
+      runner);
   SweepOutcome result;
   result.tasks = tasks.size();
   result.loaded = outcome.loaded;
@@ -783,12 +811,8 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   return result;
 }
 
-sim::SimModel make_task_model(const Task& task) {
-  return make_task_model(robot::parse_robot(task.params.at("robot").get<std::string>()), task);
-}
-
-json run_sweep_task(const Task& task, sim::Observer* observer) {
-  return task_result(make_task_model(task), task, observer);
+json run_sweep_task(const RunSpec& spec, sim::Observer* observer) {
+  return task_result(make_run_model(spec), spec, observer);
 }
 
 RecordedSweep read_sweep(const fs::path& dir) {

@@ -31,6 +31,7 @@
 
 #include "experiments/landscape.h"
 #include "experiments/learning_experiments.h"
+#include "experiments/run_spec.h"
 #include "experiments/runner.h"
 #include "experiments/tables.h"
 #include "learning/compensation.h"
@@ -62,6 +63,7 @@ struct Sweep {
   robot::RobotKind robot = robot::RobotKind::hexapod;
   std::vector<GridAxis> grid;  // in key order; the first varies slowest
   std::vector<Task> tasks;     // every task, grid point by grid point, scenario, run
+  std::vector<RunSpec> specs;  // the run of each task, in the same order
   // table: no grid, one row per scenario (Figs. 11, 13); beta: beta alone swept on one
   // scenario (Fig. 14); grid: one row per grid point and scenario. Unused for a landscape.
   ExperimentKind table = ExperimentKind::table;
@@ -76,8 +78,13 @@ Sweep resolve_sweep(const nlohmann::json& document);
 // The document of a landscape (what examples/landscape-*.toml hold; `multicpg landscape`).
 nlohmann::json landscape_document(const LandscapeSpec& spec);
 
-// The learning options as a document's "learning": every key but those each run sets.
-nlohmann::json learning_document(const learning::CompensationOptions& options);
+// The learning options as a document's "learning": every key but those each run sets (seed),
+// and fail_step, the step at which a scenario's leg set fails.
+nlohmann::json learning_document(const learning::CompensationOptions& options, long fail_step);
+
+// The run of `task` (one of sweep.tasks). Throws std::invalid_argument for a task of another
+// sweep.
+const RunSpec& spec_of(const Sweep& sweep, const Task& task);
 
 struct SweepRunOptions {
   std::filesystem::path out;
@@ -98,11 +105,9 @@ struct SweepOutcome {
 // summary.json, runs.csv (one row per run) and trials.csv (one row per trial).
 SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options);
 
-// The simulation a task runs on (its robot and sim options).
-sim::SimModel make_task_model(const Task& task);
-
-// The result of one task, computed as run_sweep does; `observer` (may be null) sees every step.
-nlohmann::json run_sweep_task(const Task& task, sim::Observer* observer = nullptr);
+// The result of one run of a sweep, computed as run_sweep does; `observer` (may be null) sees
+// every step.
+nlohmann::json run_sweep_task(const RunSpec& spec, sim::Observer* observer = nullptr);
 
 // The experiment recorded in DIR/experiment.json, and its shard.
 struct RecordedSweep {

@@ -41,8 +41,7 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
   const Walls walls = find_walls(model.mj.get());
   const double length = model.scene.tunnel_length;
   TunnelRun run;
-  sim::Stepper stepper(model, {spec.periods, spec.controller_warmup},
-                       sim::fail_at(spec.disabled, 0), observer, &run.record,
+  sim::Stepper stepper(model, spec.start, spec.faults, observer, &run.record,
                        /*record_joints=*/false);
   const sim::Pose2 start = stepper.pose();
   if (spec.steering) {
@@ -71,25 +70,37 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
   return run;
 }
 
-LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim::SimModel& corridor,
-                                           const learning::CompensationOptions& options,
-                                           long max_steps, sim::Observer* observer,
-                                           sim::Observer* learning_observer) {
-  LearnedTunnelRun out;
-  out.learning = run_learning(open, options, /*record=*/false, 0, learning_observer).result;
-  TunnelSpec spec;
-  // The legs still failed when the timeline is over walk the tunnel failed.
-  std::vector<bool> failed(corridor.legs.size(), false);
-  for (const sim::Fault& f : learning::fault_timeline(options)) {
-    for (std::size_t leg : f.legs) failed[leg] = !f.recover;
+sim::SimModel tunnel_model(const RunSpec& spec) {
+  sim::SimOptions options = spec.sim;
+  options.scene.tunnel = true;
+  return sim::make_sim_model(spec.robot, options);
+}
+
+TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, long max_steps,
+                         sim::Observer* observer, sim::Observer* learning_observer) {
+  const robot::Morphology& morph = morphology(spec);
+  TunnelOutcome out;
+  TunnelSpec tunnel;
+  tunnel.max_steps = max_steps;
+  if (!spec.learning) {
+    tunnel.start = spec.start;
+    tunnel.faults = spec.faults;
+    out.disabled = sim::failed_after(morph, spec.faults);
+    out.periods = spec.start.periods.empty()
+                      ? std::vector<int>(morph.size(), learning::kStartPeriod)
+                      : spec.start.periods;
+  } else {
+    sim::SimOptions open_options = spec.sim;
+    open_options.scene.tunnel = false;
+    const sim::SimModel open = sim::make_sim_model(spec.robot, open_options);
+    out.learned = run_learning(open, spec, 0, learning_observer).result;
+    out.disabled = sim::failed_after(morph, spec.faults);
+    out.periods = out.learned->periods;
+    tunnel.start.periods = out.periods;
+    tunnel.faults = sim::fail_at(out.disabled, 0);
+    if (out.learned->steering) tunnel.steering = spec.learning->steering_params;
   }
-  for (std::size_t leg = 0; leg < failed.size(); ++leg) {
-    if (failed[leg]) spec.disabled.push_back(leg);
-  }
-  spec.periods = out.learning.periods;
-  spec.max_steps = max_steps;
-  if (out.learning.steering) spec.steering = options.steering_params;
-  out.tunnel = run_tunnel(corridor, spec, observer);
+  out.run = run_tunnel(corridor, tunnel, observer);
   return out;
 }
 

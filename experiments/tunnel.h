@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "learning/steering.h"
 #include "sim/sim.h"
@@ -20,11 +21,11 @@ namespace multicpg::experiments {
 inline constexpr long kTunnelMaxSteps = 12000;
 
 struct TunnelSpec {
-  std::vector<std::size_t> disabled;
-  std::vector<int> periods;  // one per leg
+  // How the robot starts at the entrance: its periods, its controller running (as the paper's
+  // robot was walking before it entered).
+  sim::StartSpec start;
+  sim::FaultTimeline faults;  // legs failed from the entrance on, or later
   long max_steps = kTunnelMaxSteps;
-  // The robot is placed at the entrance with its controller running, as the paper's robot was.
-  long controller_warmup = sim::kControllerWarmup;
   // The orientation reflex (learning/steering.h) holding the tunnel's axis; none = periods only.
   std::optional<learning::SteeringParams> steering;
 };
@@ -46,18 +47,24 @@ struct TunnelRun {
 TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
                      sim::Observer* observer = nullptr);
 
-// Paper §5 after learning (issue 8): learns in the open field (`open`, no tunnel) from the
-// options' start, then walks the learned controller (its periods and, if the learner used it,
-// its steering reflex) through the tunnel of `corridor` from a warmed start. `observer` sees the
-// tunnel walk, `learning_observer` (may be null) the learning run.
-struct LearnedTunnelRun {
-  learning::LearningResult learning;
-  TunnelRun tunnel;
+// The tunnel's model for a run: spec.sim with the corridor in its scene.
+sim::SimModel tunnel_model(const RunSpec& spec);
+
+// Paper §5 for a run description. Without learning options the robot walks spec.start with
+// spec.faults through the tunnel of `corridor` (tunnel_model(spec)). With them it first learns in
+// the open field (spec.sim without the corridor) from the run's start, then walks the learned
+// controller (its periods and, if the learner used it, its steering reflex) from a warmed start
+// through the tunnel, with the legs still failed when the timeline is over. `observer` (may be
+// null) sees the tunnel walk, `learning_observer` (may be null) the learning run. `spec` must be
+// valid (validate).
+struct TunnelOutcome {
+  std::vector<std::size_t> disabled;  // legs failed in the tunnel
+  std::vector<int> periods;           // walked: the start's, or learned
+  TunnelRun run;
+  std::optional<learning::LearningResult> learned;
 };
-LearnedTunnelRun run_tunnel_after_learning(const sim::SimModel& open, const sim::SimModel& corridor,
-                                           const learning::CompensationOptions& options,
-                                           long max_steps = kTunnelMaxSteps,
-                                           sim::Observer* observer = nullptr,
-                                           sim::Observer* learning_observer = nullptr);
+TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor,
+                         long max_steps = kTunnelMaxSteps, sim::Observer* observer = nullptr,
+                         sim::Observer* learning_observer = nullptr);
 
 }  // namespace multicpg::experiments

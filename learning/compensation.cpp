@@ -58,12 +58,9 @@ class Walk {
   }
 
   long walked() const { return walker_.step_count(); }
-  // Paper mode's "after the failure": a leg has failed (with no legs named: the healthy robot's
-  // run, whose fail step still starts the count of windows).
-  bool failed() const {
-    return any_failed_ever_ ||
-           (walker_.faults().timeline().empty() && walked() > options_.fail_step);
-  }
+  // Paper mode's "after the failure": a leg has failed (a healthy robot's run, with no fault,
+  // counts its windows from the start).
+  bool failed() const { return any_failed_ever_ || walker_.faults().timeline().empty(); }
   std::vector<std::size_t> failed_now() const { return walker_.faults().failed_legs(); }
   bool faults_pending() const { return walker_.faults().pending(); }
   // Faults and recoveries since the last call.
@@ -171,58 +168,23 @@ Steering parse_steering(std::string_view text) {
   throw BadInput("unknown steering '" + std::string(text) + "' (off or reflex)");
 }
 
-sim::FaultTimeline fault_timeline(const CompensationOptions& options) {
-  if (!options.faults.empty()) return options.faults;
-  if (options.disabled.empty()) return {};
-  return {sim::Fault{options.fail_step, options.disabled, false}};
-}
-
-std::vector<std::size_t> failing_legs(const CompensationOptions& options) {
-  std::vector<std::size_t> legs;
-  for (const sim::Fault& f : fault_timeline(options)) {
-    if (!f.recover) legs.insert(legs.end(), f.legs.begin(), f.legs.end());
-  }
-  std::sort(legs.begin(), legs.end());
-  legs.erase(std::unique(legs.begin(), legs.end()), legs.end());
-  return legs;
-}
-
-void validate(const CompensationOptions& options, const robot::Morphology& morph) {
+void validate(const CompensationOptions& options) {
   within("annealing", [&] { validate(options.annealing); });
   require_in("window_steps", options.window_steps, kWindowStepsLimits);
   if (options.settle_steps) require_in("settle_steps", *options.settle_steps, kSettleStepsLimits);
-  require_in("fail_step", options.fail_step, Limits<long>{0, sim::kMaxSteps});
   require_in("detection_windows", options.detection_windows, kDetectionWindowsLimits);
   require_in("hold_windows", options.hold_windows, kHoldWindowsLimits);
   require_in("monitor_windows", options.monitor_windows, kMonitorWindowsLimits);
   require_in("max_episodes", options.max_episodes, kMaxEpisodesLimits);
   within("steering_params", [&] { validate(options.steering_params); });
-  std::vector<bool> seen(morph.size(), false);
-  for (std::size_t leg : options.disabled) {
-    if (leg >= morph.size()) {
-      throw OptionError("disabled",
-                        "the " + morph.name + " has no leg number " + std::to_string(leg));
-    }
-    if (seen[leg]) throw OptionError("disabled", "names leg " + morph.legs[leg].name + " twice");
-    seen[leg] = true;
-  }
-  if (options.disabled.size() == morph.size()) {
-    throw OptionError("disabled",
-                      "disables every leg of the " + morph.name + ": there is nothing to learn");
-  }
-  if (!options.faults.empty() && !options.disabled.empty()) {
-    throw OptionError("faults", "give either a fault timeline or disabled legs, not both");
-  }
-  try {
-    sim::validate(morph, options.faults);
-  } catch (const OptionError&) {
-    throw;
-  } catch (const BadInput& e) {
-    throw OptionError("faults", e.what());
-  }
+}
+
+void validate_faults(const CompensationOptions& options, const sim::FaultTimeline& faults) {
   if (options.mode == Mode::paper &&
-      (options.faults.size() > 1 || (!options.faults.empty() && options.faults.front().recover))) {
-    throw OptionError("faults", "paper mode takes one fault and no recovery; use robust mode");
+      (faults.size() > 1 || (!faults.empty() && faults.front().recover))) {
+    throw OptionError("mode",
+                      "paper mode takes one fault and no recovery; use robust mode for this "
+                      "fault timeline");
   }
 }
 
@@ -275,8 +237,8 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
 
   // SPEC §5: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
-  AnnealingState state =
-      start_annealing(params, result.periods, failing_legs(options), e, options.seed);
+  AnnealingState state = start_annealing(
+      params, result.periods, sim::failing_legs(walker.faults().timeline()), e, options.seed);
   while (std::optional<Candidate> candidate = propose(params, state)) {
     sim::Event start;
     start.kind = sim::EventKind::trial_start;
@@ -502,10 +464,10 @@ class RobustRun {
 }  // namespace
 
 LearningResult compensate(Walker& walker, const CompensationOptions& options) {
-  validate(options, walker.controller_model().morphology);
-  if (walker.step_count() != 0 || walker.faults().timeline() != fault_timeline(options)) {
-    throw std::invalid_argument(
-        "compensate: the walker must be at its start, with the options' faults to come");
+  validate(options);
+  validate_faults(options, walker.faults().timeline());
+  if (walker.step_count() != 0) {
+    throw std::invalid_argument("compensate: the walker must be at its start");
   }
   if (options.mode == Mode::paper) return compensate_paper(walker, options);
   return RobustRun(walker, options).run();

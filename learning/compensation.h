@@ -35,8 +35,7 @@ class Walker {
   virtual neural::ControllerState& controller() = 0;
   virtual const neural::ControllerModel& controller_model() const = 0;
   // The run's faults (SPEC §4): the walker applies them before the steps they name, counted
-  // from its start (sim::Stepper), and the learner reads from it what came. Made from the
-  // compensation options' timeline (fault_timeline).
+  // from its start (sim::Stepper), and the learner reads from it what came.
   virtual const sim::FaultSchedule& faults() const = 0;
   // Shows what the learner is doing to whoever watches (a film, the viewer, Python).
   virtual void emit(const sim::Event& /*event*/) {}
@@ -89,16 +88,11 @@ inline constexpr Limits<int> kHoldWindowsLimits{1, 100};
 inline constexpr Limits<long> kMonitorWindowsLimits{1, 1000};
 inline constexpr Limits<int> kMaxEpisodesLimits{1, 1000};
 
-// How a compensation run is made.
+// How a compensation run learns. What fails and when is the run's, not the learner's: the
+// walker's fault schedule (sim::FaultSchedule) says what came.
 struct CompensationOptions {
   Mode mode = Mode::robust;
   AnnealingParams annealing;
-  // The shorthand fault: these legs fail `fail_step` steps after the run starts. `faults`, when
-  // not empty, is the whole timeline instead (robust mode: any legs fail or recover at any
-  // step, several times).
-  std::vector<std::size_t> disabled;
-  long fail_step = 0;
-  sim::FaultTimeline faults;
   long window_steps = kDefaultWindowSteps;
   // Unmeasured steps after every period change (paper: and before the first detection window).
   // Empty = paper: default_settle_steps(model); robust: locked_settle_steps(model, periods).
@@ -113,16 +107,14 @@ struct CompensationOptions {
   std::uint64_t seed = 0;
 };
 
-// The timeline the options describe: `faults`, or the shorthand fault.
-sim::FaultTimeline fault_timeline(const CompensationOptions& options);
-// Every leg that fails at some point, in leg order (for labels).
-std::vector<std::size_t> failing_legs(const CompensationOptions& options);
+// Throws OptionError (key "annealing.beta", "window_steps", ...; one line) for a value outside
+// its limits. Paper mode ignores the robust-mode options (hold, monitor and max episodes,
+// learn_periods, steering).
+void validate(const CompensationOptions& options);
 
-// Throws OptionError (key "annealing.beta", "window_steps", "disabled", ...; one line, naming
-// legs) for a value outside its limits, an unknown or repeated leg, every leg disabled, a bad
-// timeline (sim::validate), or a paper-mode run with more than one fault. Paper mode ignores the
-// robust-mode options (hold, monitor and max episodes, learn_periods, steering).
-void validate(const CompensationOptions& options, const robot::Morphology& morph);
+// Throws OptionError (key "mode") for a fault timeline these options cannot learn with: paper
+// mode takes one fault and no recovery (SPEC §6).
+void validate_faults(const CompensationOptions& options, const sim::FaultTimeline& faults);
 
 // One learning episode: from a detecting window to the end of its annealing.
 struct Episode {
@@ -167,8 +159,9 @@ struct LearningResult {
 };
 
 // Runs the whole online loop on `walker`, which should be walking forward with every client
-// synchronised (as make_controller_state leaves it), at its step 0, with the faults of
-// fault_timeline(options) to come (else std::invalid_argument: a caller's mistake). Paper mode is
+// synchronised (as make_controller_state leaves it), at its step 0 (else std::invalid_argument:
+// a caller's mistake), its faults to come as its schedule says. Throws OptionError for options or
+// a timeline validate() or validate_faults() refuse. Paper mode is
 // SPEC §6 exactly; robust mode (issue 8):
 // - a window is judged on both its yaw change and its path angle (sim::measure_window);
 // - a combination is accepted only when it holds for hold_windows consecutive windows (a trial

@@ -30,10 +30,9 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(AnnealingParams, beta, threshold
                                                 period_set)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SteeringParams, heading_gain, lateral_gain,
                                                 integral_gain, max_heading_offset_deg, max_effort)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(CompensationOptions, mode, annealing, disabled,
-                                                fail_step, faults, window_steps, settle_steps,
-                                                detection_windows, hold_windows, monitor_windows,
-                                                max_episodes, learn_periods, steering,
-                                                steering_params, seed)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(CompensationOptions, mode, annealing, window_steps,
+                                                settle_steps, detection_windows, hold_windows,
+                                                monitor_windows, max_episodes, learn_periods,
+                                                steering, steering_params, seed)
 
 }  // namespace multicpg::learning

@@ -13,16 +13,12 @@
 #include <string>
 #include <vector>
 
-#include "apps/learning_options.h"
-#include "apps/options.h"
-#include "apps/results_json.h"
-#include "apps/sim_flags.h"
-#include "apps/tunnel_command.h"
-#include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "common/limits.h"
 #include "experiments/experiment_file.h"
 #include "experiments/learning_run.h"
+#include "experiments/run_json.h"
+#include "experiments/run_spec.h"
 #include "experiments/sweep.h"
 #include "experiments/tunnel.h"
 #include "learning/annealing.h"
@@ -30,6 +26,7 @@
 #include "report/film.h"
 #include "report/render.h"
 #include "robot/leg_sets.h"
+#include "sim/fault_spec.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -79,30 +76,92 @@ std::string leg_text(const py::object& legs) {
   if (py::isinstance<py::str>(legs)) return legs.cast<std::string>();
   std::string text;
   for (const py::handle item : legs) {
-    text += (text.empty() ? "" : ",") + py::str(item).cast<std::string>();
+    if (!text.empty()) text += ',';
+    text += py::str(item).cast<std::string>();
   }
   return text;
 }
 
-// Periods given as 4, "R1=5,R2=4" or one number per leg, as the text of `--periods`.
-std::string periods_text(const robot::Morphology& morph, const py::object& periods) {
+// Periods given as 4, "R1=5,R2=4" or one number per leg.
+std::vector<int> parse_periods(const robot::Morphology& morph, const py::object& periods) {
   if (py::isinstance<py::int_>(periods) || py::isinstance<py::str>(periods)) {
-    return py::str(periods).cast<std::string>();
+    return robot::parse_period_map(morph, py::str(periods).cast<std::string>(),
+                                   robot::kDefaultPeriod);
   }
   const auto list = periods.cast<std::vector<int>>();
   if (list.size() != morph.size()) {
     throw BadInput("expected " + std::to_string(morph.size()) + " periods, got " +
                    std::to_string(list.size()));
   }
-  std::string text;
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    text += (i ? "," : "") + morph.legs[i].name + "=" + std::to_string(list[i]);
+  for (int p : list) {
+    if (!robot::is_gait_period(p)) {
+      throw BadInput("period " + std::to_string(p) +
+                     " gives no gait (allowed: " + robot::gait_periods_text() + ")");
+    }
   }
-  return text;
+  return list;
 }
 
-std::vector<int> parse_periods(const robot::Morphology& morph, const py::object& periods) {
-  return robot::parse_period_map(morph, periods_text(morph, periods), robot::kDefaultPeriod);
+// The Python argument that sets a RunSpec key, for messages.
+std::string argument_of(const std::string& key) {
+  if (key == "start.periods") return "periods";
+  if (key == "start.warmup") return "warmup";
+  if (key == "faults") return "disable/faults/recoveries";
+  if (key.rfind("sim.", 0) == 0) return key.substr(4);
+  if (key == "learning.annealing.threshold_deg") return "threshold";
+  if (key == "learning.window_steps") return "window";
+  if (key == "learning.settle_steps") return "settle";
+  return key.substr(key.rfind('.') + 1);
+}
+
+// A run described by Python's arguments, checked whole (experiments::validate); a bad value is a
+// ValueError naming its argument.
+struct RunArgs {
+  py::object periods = py::int_(robot::kDefaultPeriod);
+  py::object disable = py::none();
+  long disable_at = 0;
+  std::vector<std::string> faults;
+  std::vector<std::string> recoveries;
+  long warmup = sim::kControllerWarmup;
+};
+
+experiments::RunSpec run_spec(robot::RobotKind kind, const sim::SimOptions& sim_options,
+                              const RunArgs& a,
+                              std::optional<learning::CompensationOptions> learning) {
+  experiments::RunSpec spec;
+  spec.robot = kind;
+  spec.sim = sim_options;
+  const robot::Morphology& morph = experiments::morphology(spec);
+  // Each argument parsed with its name in the message.
+  const auto named = [](const char* argument, const auto& parse) {
+    try {
+      return parse();
+    } catch (const BadInput& e) {
+      throw BadInput(std::string(argument) + ": " + e.what());
+    }
+  };
+  spec.faults = sim::fail_at(
+      named("disable", [&] { return robot::parse_leg_set(morph, leg_text(a.disable)); }),
+      a.disable_at);
+  for (const std::string& f : a.faults) {
+    spec.faults.push_back(named("faults", [&] { return sim::parse_fault(morph, f, false); }));
+  }
+  for (const std::string& f : a.recoveries) {
+    spec.faults.push_back(named("recoveries", [&] { return sim::parse_fault(morph, f, true); }));
+  }
+  sim::sort_timeline(spec.faults);
+  if (learning) {
+    spec.start = experiments::learning_start(learning->mode);
+    spec.learning = std::move(learning);
+  } else {
+    spec.start = {named("periods", [&] { return parse_periods(morph, a.periods); }), a.warmup};
+  }
+  try {
+    experiments::validate(spec);
+  } catch (const OptionError& e) {
+    throw BadInput(argument_of(e.key()) + ": " + e.what());
+  }
+  return spec;
 }
 
 // A robot and its simulation model, shared read-only by every Simulation of it.
@@ -123,7 +182,8 @@ std::shared_ptr<Robot> make_robot(const std::string& name, bool tunnel, double c
   options.control_dt = control_dt;
   options.physics_dt = physics_dt.value_or(0.0);
   options.servo_gain = servo_gain.value_or(0.0);
-  r->options = apps::sim_options(options);
+  sim::validate(options);
+  r->options = options;
   r->options.scene.tunnel = tunnel;
   r->model = std::make_shared<const sim::SimModel>(sim::make_sim_model(r->kind, r->options));
   return r;
@@ -170,21 +230,10 @@ struct State {
 // A run, stepped through sim::Stepper. Methods that walk release the GIL.
 class Simulation {
  public:
-  Simulation(std::shared_ptr<Robot> robot, const py::object& periods, const py::object& disable,
-             long disable_at, const std::vector<std::string>& faults,
-             const std::vector<std::string>& recoveries, long warmup, bool record)
+  Simulation(std::shared_ptr<Robot> robot, const RunArgs& args, bool record)
       : robot_(std::move(robot)), recording_(record) {
-    apps::WalkFlags flags;
-    flags.robot = std::string(robot::to_string(robot_->kind));
-    flags.periods = periods_text(robot_->morph(), periods);
-    flags.disable = leg_text(disable);
-    flags.disable_at = disable_at;
-    flags.faults = faults;
-    flags.recoveries = recoveries;
-    flags.warmup = warmup;
-    const apps::WalkChoice choice = apps::parse_walk_flags(flags);
-    const sim::StartSpec start{choice.periods, choice.warmup};
-    stepper_ = std::make_unique<sim::Stepper>(*robot_->model, start, choice.faults, &recorder_,
+    const experiments::RunSpec spec = run_spec(robot_->kind, robot_->options, args, std::nullopt);
+    stepper_ = std::make_unique<sim::Stepper>(*robot_->model, spec.start, spec.faults, &recorder_,
                                               recording_ ? &record_ : nullptr);
     recorder_.enabled = recording_;
     if (recording_) recorder_.append(stepper_->state());
@@ -443,49 +492,50 @@ py::dict path_arrays(const sim::WalkRecord& r) {
   return out;
 }
 
-struct LearnArgs {
-  py::object disable;
-  long disable_at;
-  std::vector<std::string> faults;
-  std::vector<std::string> recoveries;
-  apps::LearningFlags flags;
-};
-
-learning::CompensationOptions learn_options(const robot::Morphology& morph, const LearnArgs& a) {
-  apps::WalkFlags w;
-  w.disable = leg_text(a.disable);
-  w.disable_at = a.disable_at;
-  w.faults = a.faults;
-  w.recoveries = a.recoveries;
-  return apps::compensation_options(a.flags, morph, apps::parse_faults(morph, w));
-}
-
-py::dict learn(const py::object& robot_object, const LearnArgs& args, bool record,
+py::dict learn(const py::object& robot_object, const RunArgs& args,
+               const learning::CompensationOptions& options, bool record,
                const py::object& observer) {
   const std::shared_ptr<Robot> robot = robot_arg(robot_object);
   const robot::Morphology& morph = robot->morph();
-  const learning::CompensationOptions options = learn_options(morph, args);
+  experiments::RunSpec spec = run_spec(robot->kind, robot->options, args, options);
+  spec.record.steps = record;
   TrialCallback callback(observer, morph);
   experiments::LearningRun run;
   {
     const py::gil_scoped_release release;
-    run = experiments::run_learning(*robot->model, options, record, 0, &callback);
+    run = experiments::run_learning(*robot->model, spec, 0, &callback);
   }
-  py::dict out = to_python(apps::learn_json(morph, options, run.result, args.disable_at));
+  py::dict out = to_python(experiments::learn_json(spec, run.result));
   out["trace_arrays"] = trace_arrays(run.result.trace, morph.size());
   if (record) out["path"] = path_arrays(run.record);
   return out;
 }
 
-py::dict tunnel(const apps::TunnelRequest& request, const py::object& observer) {
-  const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
+py::dict tunnel(const experiments::RunSpec& spec, long max_steps, const std::string& video,
+                const py::object& observer) {
+  const robot::Morphology& morph = experiments::morphology(spec);
+  if (!video.empty() && report::film_format(video) != report::FilmFormat::video) {
+    throw BadInput("video must name an .mp4 file");
+  }
+  require_in("max_steps", max_steps, sim::kRunStepsLimits);
   TrialCallback callback(observer, morph);
-  apps::TunnelOutcome out;
+  experiments::TunnelOutcome out;
   {
     const py::gil_scoped_release release;
-    out = apps::run_tunnel_command(request, &callback);
+    const sim::SimModel corridor = experiments::tunnel_model(spec);
+    std::optional<report::Film> film;
+    std::optional<report::FilmObserver> film_observer;
+    if (!video.empty()) {
+      report::FilmSpec film_spec;
+      film_spec.out = video;
+      film.emplace(corridor, film_spec);
+      film_observer.emplace(*film, "tunnel 3.0 m x 1.2 m");
+    }
+    out = experiments::run_tunnel(spec, corridor, max_steps,
+                                  film_observer ? &*film_observer : nullptr, &callback);
+    if (film) film->finish();
   }
-  py::dict result = to_python(apps::tunnel_json(morph, out));
+  py::dict result = to_python(experiments::tunnel_json(spec, out));
   if (out.learned) result["trace_arrays"] = trace_arrays(out.learned->trace, morph.size());
   result["path"] = path_arrays(out.run.record);
   return result;
@@ -669,8 +719,8 @@ PYBIND11_MODULE(_multicpg, m) {
           py::init([](const py::object& robot, const py::object& periods, const py::object& disable,
                       long disable_at, const std::vector<std::string>& faults,
                       const std::vector<std::string>& recoveries, long warmup, bool record) {
-            return std::make_unique<mp::Simulation>(mp::robot_arg(robot), periods, disable,
-                                                    disable_at, faults, recoveries, warmup, record);
+            const mp::RunArgs args{periods, disable, disable_at, faults, recoveries, warmup};
+            return std::make_unique<mp::Simulation>(mp::robot_arg(robot), args, record);
           }),
           py::arg("robot") = "hexapod", py::kw_only(), py::arg("periods") = 4,
           py::arg("disable") = py::none(), py::arg("disable_at") = 0,
@@ -746,17 +796,23 @@ PYBIND11_MODULE(_multicpg, m) {
       py::arg("start"), py::arg("end"),
       "Yaw change (wrapped, + = left) and path angle of a window between two poses (x, y, yaw).");
 
-  const auto learning_flags = [](const std::string& mode, const std::string& steering,
-                                 int hold_windows, long monitor_windows, bool period_learning,
-                                 double beta, double threshold, long window,
-                                 std::optional<long> settle, int max_trials, std::uint64_t seed) {
+  const auto learning_options = [](const std::string& mode, const std::string& steering,
+                                   int hold_windows, long monitor_windows, bool period_learning,
+                                   double beta, double threshold, long window,
+                                   std::optional<long> settle, int max_trials, std::uint64_t seed) {
     // Python's keyword arguments, one per option (the CLI binds its flags the same way).
-    multicpg::apps::LearningFlags f;
-    multicpg::learning::CompensationOptions& o = f.options;
+    multicpg::learning::CompensationOptions o;
     o.mode = multicpg::learning::parse_mode(mode);
-    o.steering = multicpg::learning::parse_steering(steering);
-    f.robust_only = steering != "reflex" || hold_windows != o.hold_windows ||
-                    monitor_windows != o.monitor_windows || !period_learning;
+    const bool robust_only = steering != "reflex" || hold_windows != o.hold_windows ||
+                             monitor_windows != o.monitor_windows || !period_learning;
+    if (o.mode == multicpg::learning::Mode::paper && robust_only) {
+      throw multicpg::BadInput(
+          "steering, hold_windows, monitor_windows and period_learning are robust-mode "
+          "arguments");
+    }
+    o.steering = o.mode == multicpg::learning::Mode::paper
+                     ? multicpg::learning::Steering::off
+                     : multicpg::learning::parse_steering(steering);
     o.hold_windows = hold_windows;
     o.monitor_windows = monitor_windows;
     o.learn_periods = period_learning;
@@ -766,23 +822,28 @@ PYBIND11_MODULE(_multicpg, m) {
     o.settle_steps = settle;
     o.annealing.max_trials = max_trials;
     o.seed = seed;
-    return f;
+    return o;
   };
 
   m.def(
       "learn",
-      [learning_flags](const py::object& robot, const py::object& disable, long disable_at,
-                       const std::vector<std::string>& faults,
-                       const std::vector<std::string>& recoveries, const std::string& mode,
-                       const std::string& steering, int hold_windows, long monitor_windows,
-                       bool period_learning, double beta, double threshold, long window,
-                       std::optional<long> settle, int max_trials, std::uint64_t seed, bool record,
-                       const py::object& observer) {
-        const mp::LearnArgs args{
-            disable, disable_at, faults, recoveries,
-            learning_flags(mode, steering, hold_windows, monitor_windows, period_learning, beta,
-                           threshold, window, settle, max_trials, seed)};
-        return mp::learn(robot, args, record, observer);
+      [learning_options](const py::object& robot, const py::object& disable, long disable_at,
+                         const std::vector<std::string>& faults,
+                         const std::vector<std::string>& recoveries, const std::string& mode,
+                         const std::string& steering, int hold_windows, long monitor_windows,
+                         bool period_learning, double beta, double threshold, long window,
+                         std::optional<long> settle, int max_trials, std::uint64_t seed,
+                         bool record, const py::object& observer) {
+        mp::RunArgs args;
+        args.disable = disable;
+        args.disable_at = disable_at;
+        args.faults = faults;
+        args.recoveries = recoveries;
+        return mp::learn(
+            robot, args,
+            learning_options(mode, steering, hold_windows, monitor_windows, period_learning, beta,
+                             threshold, window, settle, max_trials, seed),
+            record, observer);
       },
       py::arg("robot") = "hexapod", py::kw_only(), py::arg("disable") = py::none(),
       py::arg("disable_at") = 0, py::arg("faults") = std::vector<std::string>{},
@@ -808,29 +869,30 @@ PYBIND11_MODULE(_multicpg, m) {
 
   m.def(
       "tunnel",
-      [learning_flags](const py::object& disable, const py::object& periods, bool learn,
-                       long max_steps, const std::string& video, const std::string& mode,
-                       const std::string& steering, int hold_windows, long monitor_windows,
-                       bool period_learning, double beta, double threshold, long window,
-                       std::optional<long> settle, int max_trials, std::uint64_t seed,
-                       double control_dt, std::optional<double> physics_dt,
-                       std::optional<double> servo_gain, const py::object& observer) {
-        multicpg::apps::TunnelRequest request;
-        request.disable = mp::leg_text(disable);
-        if (!periods.is_none()) {
-          request.periods = mp::periods_text(
-              multicpg::robot::morphology(multicpg::robot::RobotKind::hexapod), periods);
+      [learning_options](const py::object& disable, const py::object& periods, bool learn,
+                         long max_steps, const std::string& video, const std::string& mode,
+                         const std::string& steering, int hold_windows, long monitor_windows,
+                         bool period_learning, double beta, double threshold, long window,
+                         std::optional<long> settle, int max_trials, std::uint64_t seed,
+                         double control_dt, std::optional<double> physics_dt,
+                         std::optional<double> servo_gain, const py::object& observer) {
+        if (learn && !periods.is_none()) {
+          throw multicpg::BadInput("periods and learn exclude each other: learn finds them");
         }
-        request.learn = learn;
-        request.learning =
-            learning_flags(mode, steering, hold_windows, monitor_windows, period_learning, beta,
-                           threshold, window, settle, max_trials, seed);
-        request.max_steps = max_steps;
-        request.video = video;
-        request.sim.control_dt = control_dt;
-        request.sim.physics_dt = physics_dt.value_or(0.0);
-        request.sim.servo_gain = servo_gain.value_or(0.0);
-        return mp::tunnel(request, observer);
+        multicpg::sim::SimOptions sim;
+        sim.control_dt = control_dt;
+        sim.physics_dt = physics_dt.value_or(0.0);
+        sim.servo_gain = servo_gain.value_or(0.0);
+        mp::RunArgs args;
+        args.disable = disable;
+        if (!periods.is_none()) args.periods = periods;
+        std::optional<multicpg::learning::CompensationOptions> options;
+        if (learn) {
+          options = learning_options(mode, steering, hold_windows, monitor_windows, period_learning,
+                                     beta, threshold, window, settle, max_trials, seed);
+        }
+        return mp::tunnel(mp::run_spec(multicpg::robot::RobotKind::hexapod, sim, args, options),
+                          max_steps, video, observer);
       },
       py::kw_only(), py::arg("disable") = py::none(), py::arg("periods") = py::none(),
       py::arg("learn") = false, py::arg("max_steps") = multicpg::experiments::kTunnelMaxSteps,

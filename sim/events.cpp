@@ -30,9 +30,9 @@ void validate(const robot::Morphology& morph, const FaultTimeline& faults) {
   std::vector<bool> failed(morph.size(), false);
   long previous = 0;
   for (const Fault& f : faults) {
-    const char* what = f.recover ? "--recover" : "--fault";
+    const char* what = f.recover ? "a recovery" : "a fault";
     if (f.step < 0 || f.step > kMaxSteps) {
-      throw BadInput(std::string(what) + " step must be in 0.." + std::to_string(kMaxSteps) +
+      throw BadInput(std::string(what) + "'s step must be in 0.." + std::to_string(kMaxSteps) +
                      ", got " + std::to_string(f.step));
     }
     if (f.step < previous) throw BadInput("faults must be listed in step order");
@@ -61,6 +61,39 @@ void validate(const robot::Morphology& morph, const FaultTimeline& faults) {
                      std::to_string(f.step) + ": it cannot walk");
     }
   }
+}
+
+void sort_timeline(FaultTimeline& faults) {
+  std::stable_sort(faults.begin(), faults.end(), [](const Fault& a, const Fault& b) {
+    return a.step != b.step ? a.step < b.step : a.recover && !b.recover;
+  });
+}
+
+FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step) {
+  if (legs.empty()) return {};
+  return {Fault{step, legs, false}};
+}
+
+std::vector<std::size_t> failing_legs(const FaultTimeline& faults) {
+  std::vector<std::size_t> legs;
+  for (const Fault& f : faults) {
+    if (!f.recover) legs.insert(legs.end(), f.legs.begin(), f.legs.end());
+  }
+  std::sort(legs.begin(), legs.end());
+  legs.erase(std::unique(legs.begin(), legs.end()), legs.end());
+  return legs;
+}
+
+std::vector<std::size_t> failed_after(const robot::Morphology& morph, const FaultTimeline& faults) {
+  std::vector<bool> failed(morph.size(), false);
+  for (const Fault& f : faults) {
+    for (std::size_t leg : f.legs) failed.at(leg) = !f.recover;
+  }
+  std::vector<std::size_t> legs;
+  for (std::size_t leg = 0; leg < failed.size(); ++leg) {
+    if (failed[leg]) legs.push_back(leg);
+  }
+  return legs;
 }
 
 FaultSchedule::FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline)

@@ -49,8 +49,20 @@ const char* to_string(EventKind kind);
 
 // Throws BadInput (one line, leg names) for a timeline that is not sorted, names a leg out of
 // range or twice in one event, fails a leg that has already failed, recovers one that has not,
-// disables every leg, or has a negative step.
+// disables every leg, or has a step outside 0..kMaxSteps.
 void validate(const robot::Morphology& morph, const FaultTimeline& faults);
+
+// Puts a timeline in step order, a recovery before a failure at the same step (so a leg may
+// recover and another fail at one step); events of one step otherwise keep their order.
+void sort_timeline(FaultTimeline& faults);
+
+// "R1@0" style timeline: the legs fail before step `step`; no legs = no fault.
+FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step);
+
+// Every leg that fails at some point of the timeline, in leg order.
+std::vector<std::size_t> failing_legs(const FaultTimeline& faults);
+// The legs still failed when the whole timeline has come, in leg order.
+std::vector<std::size_t> failed_after(const robot::Morphology& morph, const FaultTimeline& faults);
 
 // A run's faults as they come (SPEC §4, issue 8): its timeline, how much of it has come, and the
 // legs failed now. The one home of fault bookkeeping: sim::Stepper applies a run's faults through

@@ -6,47 +6,34 @@
 #include <string>
 
 #include "common/errors.h"
+#include "common/limits.h"
 
 namespace multicpg::sim {
 namespace {
 
 void check_spec(const SimModel& model, const WalkSpec& spec) {
-  if (spec.steps <= 0 || spec.steps > kMaxSteps) {
-    throw BadInput("--steps must be in 1.." + std::to_string(kMaxSteps) + ", got " +
-                   std::to_string(spec.steps));
-  }
-  if (spec.window <= 0 || spec.window > kMaxSteps) {
-    throw BadInput("--window must be in 1.." + std::to_string(kMaxSteps) + ", got " +
-                   std::to_string(spec.window));
-  }
-  if (spec.settle < 0 || spec.settle > kMaxSteps) {
-    throw BadInput("--settle must be in 0.." + std::to_string(kMaxSteps) + ", got " +
-                   std::to_string(spec.settle));
-  }
-  if (spec.start.warmup < 0 || spec.start.warmup > kMaxSteps) {
-    throw BadInput("--warmup must be in 0.." + std::to_string(kMaxSteps) + ", got " +
-                   std::to_string(spec.start.warmup));
-  }
+  require_in("steps", spec.steps, kRunStepsLimits);
+  require_in("window", spec.window, kRunStepsLimits);
+  require_in("settle", spec.settle, kStepLimits);
+  require_in("start.warmup", spec.start.warmup, kStepLimits);
   if (!spec.start.periods.empty() && spec.start.periods.size() != model.legs.size()) {
-    throw BadInput("expected " + std::to_string(model.legs.size()) + " periods, got " +
-                   std::to_string(spec.start.periods.size()));
+    throw OptionError("start.periods", "expected " + std::to_string(model.legs.size()) +
+                                           " periods, got " +
+                                           std::to_string(spec.start.periods.size()));
   }
   validate(model.controller.morphology, spec.faults);
   const long total = spec.settle + spec.steps;
   for (const Fault& f : spec.faults) {
     if (f.step >= total) {
-      throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +
-                     std::to_string(total - 1) + ", got " + std::to_string(f.step));
+      throw OptionError("faults", std::string(f.recover ? "a recovery" : "a fault") + " at step " +
+                                      std::to_string(f.step) +
+                                      " comes after the walk's last step " +
+                                      std::to_string(total - 1));
     }
   }
 }
 
 }  // namespace
-
-FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step) {
-  if (legs.empty()) return {};
-  return {Fault{step, legs, false}};
-}
 
 SimState start_walk_state(const SimModel& model, const std::vector<int>& periods) {
   if (periods.empty()) return make_sim_state(model);

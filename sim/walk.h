@@ -53,9 +53,6 @@ struct WalkResult {
 // speed and windows from row `settle` on, over `steps` measured steps.
 void measure_walk(const SimModel& model, long settle, long steps, long window, WalkResult& result);
 
-// "R1@0" style helper: the legs fail before step `step`; no legs = no fault.
-FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step);
-
 // Runs spec.settle + spec.steps controller steps through a Stepper. Throws BadInput for a spec
 // that cannot run (wrong number of periods, a bad fault timeline, steps or window <= 0, settle
 // < 0, a fault outside the run, more than kMaxSteps); RuntimeFailure if the physics becomes

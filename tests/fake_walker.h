@@ -29,10 +29,6 @@ class FakeWalker : public Walker {
         bias_(bias_deg_per_step) {
     take_due_faults();
   }
-  // A walker for compensate(options): the options' faults.
-  FakeWalker(robot::RobotKind kind, const CompensationOptions& options,
-             double bias_deg_per_step = 0.0)
-      : FakeWalker(kind, fault_timeline(options), bias_deg_per_step) {}
 
   // It walks kSpeedMPerStep along its heading, so its path angle equals its mean heading.
   static constexpr double kSpeedMPerStep = 0.002;

@@ -17,12 +17,16 @@ namespace {
 using robot::RobotKind;
 
 // The paper's algorithm (SPEC §6); robust mode has its own tests below.
-CompensationOptions options_for(std::vector<std::size_t> disabled, std::uint64_t seed) {
+CompensationOptions options_for(std::uint64_t seed) {
   CompensationOptions o;
   o.mode = Mode::paper;
-  o.disabled = std::move(disabled);
   o.seed = seed;
   return o;
+}
+
+// The legs fail at the start of the walk.
+sim::FaultTimeline failing(std::vector<std::size_t> legs) {
+  return sim::fail_at(legs, 0);
 }
 
 Periods periods_of(Walker& w) {
@@ -32,8 +36,8 @@ Periods periods_of(Walker& w) {
 }
 
 TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
-  const CompensationOptions o = options_for({0}, 1);
-  FakeWalker walker(RobotKind::hexapod, o);
+  const CompensationOptions o = options_for(1);
+  FakeWalker walker(RobotKind::hexapod, failing({0}));
   const LearningResult r = compensate(walker, o);
 
   ASSERT_TRUE(r.converged());
@@ -64,9 +68,9 @@ TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
 TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
   auto run = [&](std::uint64_t seed) {
-    const CompensationOptions o = options_for({0, 2}, seed);
-    FakeWalker walker(RobotKind::hexapod, o);
-    return to_json(compensate(walker, o), morph, o.disabled);
+    const CompensationOptions o = options_for(seed);
+    FakeWalker walker(RobotKind::hexapod, failing({0, 2}));
+    return to_json(compensate(walker, o), morph, {0, 2});
   };
   const nlohmann::json a = run(7);
   EXPECT_EQ(a, run(7));
@@ -74,9 +78,9 @@ TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
 }
 
 TEST(Compensation, HealthyRobotNeedsNoCompensation) {
-  CompensationOptions o = options_for({}, 1);
+  CompensationOptions o = options_for(1);
   o.settle_steps = 10;
-  FakeWalker walker(RobotKind::hexapod, o);
+  FakeWalker walker(RobotKind::hexapod);
   const LearningResult r = compensate(walker, o);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::no_deviation);
@@ -88,10 +92,10 @@ TEST(Compensation, HealthyRobotNeedsNoCompensation) {
 }
 
 TEST(Compensation, LateFailureIsDetectedAfterIt) {
-  CompensationOptions o = options_for({0}, 1);
+  CompensationOptions o = options_for(1);
   o.settle_steps = 0;
-  o.fail_step = 1000;  // healthy windows [0,400) and [400,800) come first
-  FakeWalker walker(RobotKind::hexapod, o);
+  // Healthy windows [0,400) and [400,800) come first.
+  FakeWalker walker(RobotKind::hexapod, sim::fail_at({0}, 1000));
   const LearningResult r = compensate(walker, o);
   ASSERT_TRUE(r.detection_step.has_value());
   // [800,1200) holds 200 disabled steps: 19 deg > 8, detected at its end.
@@ -102,10 +106,10 @@ TEST(Compensation, LateFailureIsDetectedAfterIt) {
 
 TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   // A bias no period combination can cancel: 0.2 deg/step, 80 deg per window.
-  CompensationOptions o = options_for({0}, 3);
+  CompensationOptions o = options_for(3);
   o.annealing.max_trials = 12;
   o.settle_steps = 0;
-  FakeWalker walker(RobotKind::hexapod, o, 0.2);
+  FakeWalker walker(RobotKind::hexapod, failing({0}), 0.2);
   const LearningResult r = compensate(walker, o);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
@@ -116,9 +120,9 @@ TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
 }
 
 TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
-  CompensationOptions o = options_for({0, 1, 2}, 4);  // only L2 works: 5 combinations
+  CompensationOptions o = options_for(4);
   o.settle_steps = 0;
-  FakeWalker walker(RobotKind::quadruped, o, 0.2);
+  FakeWalker walker(RobotKind::quadruped, failing({0, 1, 2}), 0.2);  // only L2: 5 combinations
   const LearningResult r = compensate(walker, o);
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::space_exhausted);
@@ -127,9 +131,9 @@ TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
 
 TEST(Compensation, JsonHasTheReportedFields) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
-  const CompensationOptions o = options_for({0}, 1);
-  FakeWalker walker(RobotKind::hexapod, o);
-  const nlohmann::json j = to_json(compensate(walker, o), morph, o.disabled);
+  const CompensationOptions o = options_for(1);
+  FakeWalker walker(RobotKind::hexapod, failing({0}));
+  const nlohmann::json j = to_json(compensate(walker, o), morph, {0});
   EXPECT_TRUE(j.at("converged").is_boolean());
   EXPECT_TRUE(j.at("trials").is_number_integer());
   EXPECT_TRUE(j.at("final_deviation_deg").is_number());
@@ -146,23 +150,23 @@ TEST(Compensation, JsonHasTheReportedFields) {
 }
 
 TEST(Compensation, RejectsBadInput) {
-  const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
   auto bad = [&](const std::function<void(CompensationOptions&)>& change) {
-    CompensationOptions o = options_for({0}, 1);
+    CompensationOptions o = options_for(1);
     change(o);
-    EXPECT_THROW(validate(o, hex), BadInput);
+    EXPECT_THROW(validate(o), OptionError);
   };
   bad([](CompensationOptions& o) { o.window_steps = 0; });
   bad([](CompensationOptions& o) { o.settle_steps = -1; });
-  bad([](CompensationOptions& o) { o.fail_step = -1; });
   bad([](CompensationOptions& o) { o.detection_windows = 0; });
   bad([](CompensationOptions& o) { o.annealing.beta = -1.0; });
   bad([](CompensationOptions& o) { o.annealing.threshold_deg = 0.0; });
-  bad([](CompensationOptions& o) { o.disabled = {0, 1, 2, 3, 4, 5}; });
-  bad([](CompensationOptions& o) { o.disabled = {6}; });
-  bad([](CompensationOptions& o) { o.disabled = {1, 1}; });
+  // A timeline no walker can have: a schedule refuses it before any learning.
+  const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
+  EXPECT_THROW(sim::FaultSchedule(hex, failing({0, 1, 2, 3, 4, 5})), BadInput);
+  EXPECT_THROW(sim::FaultSchedule(hex, failing({6})), BadInput);
+  EXPECT_THROW(sim::FaultSchedule(hex, failing({1, 1})), BadInput);
   FakeWalker walker(RobotKind::hexapod);
-  CompensationOptions o = options_for({0}, 1);
+  CompensationOptions o = options_for(1);
   o.window_steps = 0;
   EXPECT_THROW(compensate(walker, o), BadInput);
   EXPECT_EQ(walker.step_count(), 0);
@@ -211,12 +215,11 @@ TEST(Compensation, DefaultSettleCoversCpgLockAndDelays) {
   EXPECT_EQ(default_settle_steps(neural::make_controller_model(RobotKind::quadruped)), 319);
 }
 
-// Robust mode (issue 8) on the fake walker: faults that come and go.
-CompensationOptions robust_options(sim::FaultTimeline faults, std::uint64_t seed) {
+// Robust mode on the fake walker: faults that come and go.
+CompensationOptions robust_options(std::uint64_t seed) {
   CompensationOptions o;
   o.mode = Mode::robust;
   o.steering = Steering::off;  // the fake walker has no VRN
-  o.faults = std::move(faults);
   o.seed = seed;
   return o;
 }
@@ -227,8 +230,8 @@ int count(const std::vector<sim::Event>& events, sim::EventKind kind) {
 }
 
 TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
-  const CompensationOptions o = robust_options({{0, {0}, false}}, 1);
-  FakeWalker walker(RobotKind::hexapod, o);
+  const CompensationOptions o = robust_options(1);
+  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}});
   const LearningResult r = compensate(walker, o);
   ASSERT_TRUE(r.converged());
   ASSERT_EQ(r.episodes.size(), 1u);
@@ -241,18 +244,16 @@ TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
   EXPECT_EQ(count(walker.events, sim::EventKind::episode_end), 1);
 }
 
-TEST(RobustCompensation, RefusesAWalkerWithOtherFaults) {
-  const CompensationOptions o = robust_options({{0, {0}, false}}, 1);
-  FakeWalker healthy(RobotKind::hexapod);
-  EXPECT_THROW(compensate(healthy, o), std::invalid_argument);
-  FakeWalker walked(RobotKind::hexapod, o);
+TEST(RobustCompensation, RefusesAWalkerThatHasWalked) {
+  const CompensationOptions o = robust_options(1);
+  FakeWalker walked(RobotKind::hexapod, {{0, {0}, false}});
   walked.step();
   EXPECT_THROW(compensate(walked, o), std::invalid_argument);
 }
 
 TEST(RobustCompensation, SecondFaultLearnsTwice) {
-  const CompensationOptions o = robust_options({{0, {0}, false}, {30000, {4}, false}}, 2);
-  FakeWalker walker(RobotKind::hexapod, o);
+  const CompensationOptions o = robust_options(2);
+  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {4}, false}});
   const LearningResult r = compensate(walker, o);
   ASSERT_EQ(r.episodes.size(), 2u);
   EXPECT_LT(r.episodes[0].detection_step, 30000);
@@ -266,8 +267,8 @@ TEST(RobustCompensation, SecondFaultLearnsTwice) {
 }
 
 TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
-  const CompensationOptions o = robust_options({{0, {0}, false}, {30000, {0}, true}}, 3);
-  FakeWalker walker(RobotKind::hexapod, o);
+  const CompensationOptions o = robust_options(3);
+  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {0}, true}});
   const LearningResult r = compensate(walker, o);
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_EQ(count(walker.events, sim::EventKind::recovery), 1);
@@ -282,17 +283,19 @@ TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
 }
 
 TEST(RobustCompensation, PaperModeRefusesTimelines) {
-  FakeWalker walker(RobotKind::hexapod);
-  CompensationOptions o = robust_options({{0, {0}, false}, {900, {0}, true}}, 1);
+  CompensationOptions o = robust_options(1);
   o.mode = Mode::paper;
-  EXPECT_THROW(compensate(walker, o), BadInput);
-  o = robust_options({{900, {0}, true}}, 1);
-  EXPECT_THROW(compensate(walker, o), BadInput);  // recovery before its fault
-  o = robust_options({{0, {0, 0}, false}}, 1);
-  EXPECT_THROW(compensate(walker, o), BadInput);  // a leg listed twice
-  o = robust_options({{0, {0}, false}}, 1);
+  FakeWalker twice(RobotKind::hexapod, {{0, {0}, false}, {900, {0}, true}});
+  EXPECT_THROW(compensate(twice, o), OptionError);
+  EXPECT_EQ(twice.step_count(), 0);
+  const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
+  // Timelines that cannot happen never make a walker.
+  EXPECT_THROW(sim::FaultSchedule(hex, {{900, {0}, true}}), BadInput);    // recovery before fault
+  EXPECT_THROW(sim::FaultSchedule(hex, {{0, {0, 0}, false}}), BadInput);  // a leg listed twice
+  o = robust_options(1);
   o.hold_windows = 0;
-  EXPECT_THROW(compensate(walker, o), BadInput);
+  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}});
+  EXPECT_THROW(compensate(walker, o), OptionError);
 }
 
 TEST(Steering, CutsTheSideTowardWhichTheRobotMustTurn) {

@@ -18,20 +18,24 @@ const sim::SimModel& hexapod() {
   return model;
 }
 
-// The paper's algorithm (issue 4's claims); robust mode is tested through the CLI.
-learning::CompensationOptions r1_disabled(std::uint64_t seed) {
-  learning::CompensationOptions o;
+// The paper's algorithm (paper §4.1's claims); robust mode is tested through the CLI.
+experiments::RunSpec r1_disabled(std::uint64_t seed, bool record = false) {
+  experiments::RunSpec spec;
+  learning::CompensationOptions& o = spec.learning.emplace();
   o.mode = learning::Mode::paper;
-  o.disabled = {robot::leg_index(hexapod().controller.morphology, "R1")};
   o.seed = seed;
-  return o;
+  spec.start = experiments::learning_start(o.mode);
+  spec.faults = sim::fail_at({robot::leg_index(hexapod().controller.morphology, "R1")}, 0);
+  spec.record.steps = record;
+  experiments::validate(spec);
+  return spec;
 }
 
 TEST(LearningSim, R1DisabledConvergesInNineOfTenSeeds) {
   int converged = 0;
   std::vector<int> trials;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    const auto run = experiments::run_learning(hexapod(), r1_disabled(seed), false);
+    const auto run = experiments::run_learning(hexapod(), r1_disabled(seed));
     // The paper's first window with R1 disabled: 37.86 deg to the right (Fig. 8).
     EXPECT_GT(run.result.initial_deviation_deg, 20.0) << "seed " << seed;
     if (run.result.converged()) {
@@ -47,8 +51,8 @@ TEST(LearningSim, R1DisabledConvergesInNineOfTenSeeds) {
 }
 
 TEST(LearningSim, SameSeedGivesAnIdenticalRun) {
-  const auto a = experiments::run_learning(hexapod(), r1_disabled(3), true);
-  const auto b = experiments::run_learning(hexapod(), r1_disabled(3), true);
+  const auto a = experiments::run_learning(hexapod(), r1_disabled(3, true));
+  const auto b = experiments::run_learning(hexapod(), r1_disabled(3, true));
   const auto& morph = hexapod().controller.morphology;
   EXPECT_EQ(learning::to_json(a.result, morph, {0}), learning::to_json(b.result, morph, {0}));
   EXPECT_EQ(a.record.x, b.record.x);
@@ -62,7 +66,7 @@ TEST(LearningSim, RandomSearchNeedsTheMostTrials) {
   spec.seed = 1;
   spec.out = dir;
   spec.progress = false;
-  spec.base = r1_disabled(0);
+  spec.base = *r1_disabled(0).learning;
   const auto table = experiments::run_beta_study(spec, {0.0, 0.5, 10.0});
   ASSERT_EQ(table.rows.size(), 3u);
   EXPECT_EQ(table.rows[0].group, "0");

@@ -159,7 +159,7 @@ TEST(Sweep, BadFilesNameFileLineAndKey) {
       {"scenarios = [{name = \"x\", faults = [\n {legs = \"R1\"},\n {step = 100, legs = "
        "\"L2\"}]}]\n"
        "[learning]\nmode = \"paper\"\n",
-       "4: learning"},
+       "5: learning.mode paper mode takes one fault"},
   };
   for (const BadFile& c : cases) {
     write(file, c.text);

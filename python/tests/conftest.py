@@ -25,13 +25,6 @@ def cli_json(*args):
     return json.loads(run_cli(*args, "--json").stdout)
 
 
-def cli_error(*args):
-    """The one-line message of a CLI error, without the 'multicpg: ' prefix."""
-    done = run_cli(*args, check=False)
-    assert done.returncode == 2, done.stderr
-    return done.stderr.strip().removeprefix("multicpg: ")
-
-
 @pytest.fixture(scope="session")
 def hexapod():
     import multicpg

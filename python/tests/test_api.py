@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import multicpg
-from conftest import cli_error, cli_json, run_cli
+from conftest import cli_json, run_cli
 
 STEPS = 120
 
@@ -146,22 +146,20 @@ def test_tunnel_equals_the_cli():
     assert len(trials) == len(arrays["trial"]) == cli["learning"]["trials"]
 
 
-def test_bad_arguments_raise_value_error_with_the_cli_message(hexapod):
-    with pytest.raises(ValueError) as e:
-        multicpg.Robot("snake")
-    assert str(e.value) == cli_error("walk", "--robot", "snake")
-    with pytest.raises(ValueError) as e:
-        multicpg.Simulation(hexapod, periods=7)
-    assert str(e.value) == cli_error("walk", "--periods", "7")
-    with pytest.raises(ValueError) as e:
-        multicpg.Simulation(hexapod, disable="R1,R2,R3,L1,L2,L3")
-    assert str(e.value) == cli_error("walk", "--disable", "R1,R2,R3,L1,L2,L3")
-    with pytest.raises(ValueError) as e:
-        multicpg.learn(disable="R1", mode="greedy")
-    assert str(e.value) == cli_error("learn", "--disable", "R1", "--mode", "greedy")
-    with pytest.raises(ValueError) as e:
-        multicpg.Simulation(hexapod, faults=["R1@x"])
-    assert str(e.value) == cli_error("walk", "--fault", "R1@x")
+def test_bad_arguments_raise_value_error_naming_the_argument(hexapod):
+    cases = [
+        (lambda: multicpg.Robot("snake"), "snake"),
+        (lambda: multicpg.Simulation(hexapod, periods=7), "periods: "),
+        (lambda: multicpg.Simulation(hexapod, disable="R1,R2,R3,L1,L2,L3"), "every leg"),
+        (lambda: multicpg.learn(disable="R1", mode="greedy"), "greedy"),
+        (lambda: multicpg.Simulation(hexapod, faults=["R1@x"]), "faults: "),
+        (lambda: multicpg.Simulation(hexapod, warmup=-1), "warmup: "),
+    ]
+    for call, mention in cases:
+        with pytest.raises(ValueError) as e:
+            call()
+        assert mention in str(e.value)
+        assert "--" not in str(e.value), "a Python error names no CLI flag"
     sim = multicpg.Simulation(hexapod, disable="R1")
     with pytest.raises(ValueError, match="already failed"):
         sim.fail("R1")

@@ -57,24 +57,27 @@ Section learning_r1_stage(const StageContext& ctx) {
   const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod);
   const robot::Morphology& morph = hexapod.controller.morphology;
   const std::size_t legs = morph.size();
-  learning::CompensationOptions options;
+  experiments::RunSpec spec;
+  learning::CompensationOptions& options = spec.learning.emplace();
   options.mode = learning::Mode::paper;  // the paper's figures show the paper's algorithm
-  options.disabled = {robot::leg_index(morph, "R1")};
+  options.seed = ctx.options.seed;
+  spec.start = experiments::learning_start(options.mode);
+  const std::vector<std::size_t> disabled{robot::leg_index(morph, "R1")};
   // R1 fails as the first measured window starts, after the robot walked healthy while its
   // CPGs settled: that window's deviation is the paper's "after 400 time steps" (§4.1).
-  options.fail_step = learning::default_settle_steps(hexapod.controller);
-  options.seed = ctx.options.seed;
+  spec.faults = sim::fail_at(disabled, learning::default_settle_steps(hexapod.controller));
+  spec.record.steps = true;
   const std::filesystem::path video = ctx.dir("videos") / "learning-r1.mp4";
   Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, ctx.sizes.film_speed, {}});
   FilmObserver observer(film);
   const experiments::LearningRun run =
-      experiments::run_learning(hexapod, options, /*record=*/true, kAfterLearningSteps, &observer);
+      experiments::run_learning(hexapod, spec, kAfterLearningSteps, &observer);
   film.finish();
   const learning::LearningResult& r = run.result;
   const std::filesystem::path figures = ctx.dir("figures");
 
   std::vector<TrialPoint> points;
-  const Table trace = trace_table(morph, r, options.disabled, points);
+  const Table trace = trace_table(morph, r, disabled, points);
   const FigureFiles fig8 =
       plot_learning_trace(points, leg_names(morph), options.annealing.threshold_deg, figures);
 
@@ -110,7 +113,7 @@ Section learning_r1_stage(const StageContext& ctx) {
   for (bool learned : {false, true}) {
     sim::WalkSpec spec;
     spec.start.periods = learned ? r.periods : std::vector<int>(legs, learning::kStartPeriod);
-    spec.faults = sim::fail_at(options.disabled, 0);
+    spec.faults = sim::fail_at(disabled, 0);
     spec.steps = kPathSteps;
     spec.record = false;
     const sim::WalkResult w = sim::walk(hexapod, spec);
@@ -118,13 +121,13 @@ Section learning_r1_stage(const StageContext& ctx) {
     for (std::size_t i = 0; i < w.record.rows(); ++i)
       path.push_back({w.record.x[i], w.record.y[i]});
   }
-  const std::string learned = robot::period_map_text(morph, r.periods, options.disabled);
+  const std::string learned = robot::period_map_text(morph, r.periods, disabled);
   paths.before_label = "all periods 4";
   paths.after_label = "learned: " + learned;
   const FigureFiles path_fig = plot_trunk_paths(paths, figures);
 
   write_file_atomic(figures / "learning-r1.json",
-                    learning::to_json(r, morph, options.disabled).dump(2) + "\n");
+                    learning::to_json(r, morph, disabled).dump(2) + "\n");
   return {"learning-r1",
           "Learning with R1 disabled (Figs. 8, 9, 10; the trunk's path)",
           "R1 disabled, all periods 4: " + fixed(paper::kR1InitialDeg, 2) +

@@ -68,12 +68,13 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   // its periods and steering reflex through the tunnel.
   {
     const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod);
-    learning::CompensationOptions robust;
-    robust.disabled = disabled;
-    robust.seed = ctx.options.seed;
-    const experiments::LearningRun run = experiments::run_learning(open, robust, false);
+    experiments::RunSpec robust;
+    robust.learning.emplace().seed = ctx.options.seed;
+    robust.start = experiments::learning_start(robust.learning->mode);
+    robust.faults = sim::fail_at(disabled, 0);
+    const experiments::LearningRun run = experiments::run_learning(open, robust);
     std::optional<learning::SteeringParams> steering;
-    if (run.result.steering) steering = robust.steering_params;
+    if (run.result.steering) steering = robust.learning->steering_params;
     variants.push_back({"robust learning (" + std::to_string(run.result.trials) + " trials)",
                         run.result.periods, sc.after_deg, false, nullptr, steering});
   }
@@ -89,8 +90,8 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
       observer.emplace(*film, name + " disabled, " + v.source);
     }
     experiments::TunnelSpec spec;
-    spec.disabled = disabled;
-    spec.periods = v.periods;
+    spec.start.periods = v.periods;
+    spec.faults = sim::fail_at(disabled, 0);
     spec.steering = v.steering;
     const experiments::TunnelRun t =
         experiments::run_tunnel(corridor, spec, observer ? &*observer : nullptr);

@@ -1,0 +1,124 @@
+#include "apps/run_flags.h"
+
+#include <algorithm>
+#include <map>
+
+#include "apps/flag_checks.h"
+#include "apps/options.h"
+#include "apps/sim_flags.h"
+#include "common/errors.h"
+#include "robot/leg_sets.h"
+#include "sim/fault_spec.h"
+#include "sim/walk.h"
+
+namespace multicpg::apps {
+namespace {
+
+// The fault timeline of --disable/--disable-at, --fault and --recover, in step order.
+sim::FaultTimeline parse_faults(const robot::Morphology& morph, const RunFlags& f) {
+  sim::FaultTimeline faults =
+      sim::fail_at(parse_leg_flag(morph, f.disable, "--disable"), f.disable_at);
+  const auto add = [&](const std::vector<std::string>& texts, bool recover) {
+    for (const std::string& text : texts) {
+      try {
+        faults.push_back(sim::parse_fault(morph, text, recover));
+      } catch (const BadInput& e) {
+        throw BadInput(std::string(recover ? "--recover" : "--fault") + ": " + e.what());
+      }
+    }
+  };
+  add(f.faults, false);
+  add(f.recoveries, true);
+  sim::sort_timeline(faults);
+  return faults;
+}
+
+// The flags the user gave for the run's faults, "--disable/--fault" as the message names them.
+std::string fault_flags(const RunFlags& f) {
+  std::string flags;
+  const auto add = [&](bool given, const char* flag) {
+    if (given) flags += (flags.empty() ? "" : "/") + std::string(flag);
+  };
+  add(!f.disable.empty(), "--disable");
+  add(!f.disable.empty() && f.disable_at > 0, "--disable-at");
+  add(!f.faults.empty(), "--fault");
+  add(!f.recoveries.empty(), "--recover");
+  return flags.empty() ? "--disable or --fault" : flags;
+}
+
+}  // namespace
+
+void add_robot_flag(CLI::App& cmd, RunFlags& f) {
+  cmd.add_option("--robot", f.robot, "hexapod, quadruped or octopod")->capture_default_str();
+}
+
+void add_start_flags(CLI::App& cmd, RunFlags& f) {
+  cmd.add_option("--periods", f.periods,
+                 "CPG period of every leg (1, 4, 5, 6, 8, 9), or per leg: R1=5,R2=4,... "
+                 "(unnamed legs 4)")
+      ->capture_default_str();
+  cmd.add_option("--warmup", f.warmup,
+                 "controller steps run before the robot moves, so it starts walking with locked "
+                 "CPGs and full delay lines")
+      ->check(in(sim::kStepLimits))
+      ->capture_default_str();
+  cmd.add_flag("--cold", f.cold, "start from a cold controller (no warm-up, as --warmup 0)");
+}
+
+void add_fault_flags(CLI::App& cmd, RunFlags& f) {
+  cmd.add_option("--disable", f.disable, "legs that fail, e.g. R1,R3");
+  cmd.add_option("--disable-at", f.disable_at, "controller step (from 0) at which they fail")
+      ->check(in(sim::kStepLimits))
+      ->capture_default_str();
+  cmd.add_option("--fault", f.faults, "LEGS@STEP: these legs fail before that step (repeatable)");
+  cmd.add_option("--recover", f.recoveries,
+                 "LEGS@STEP: these failed legs work again from that step (repeatable)");
+}
+
+void add_walk_flags(CLI::App& cmd, RunFlags& f) {
+  add_robot_flag(cmd, f);
+  add_start_flags(cmd, f);
+  add_fault_flags(cmd, f);
+}
+
+std::string flag_of(const std::string& key, const RunFlags& f) {
+  // The learning options' flag names differ from their keys.
+  static const std::map<std::string, std::string> kFlags{
+      {"robot", "--robot"},
+      {"start.periods", "--periods"},
+      {"start.warmup", "--warmup"},
+      {"learning.annealing.beta", "--beta"},
+      {"learning.annealing.threshold_deg", "--threshold"},
+      {"learning.annealing.max_trials", "--max-trials"},
+      {"learning.window_steps", "--window"},
+      {"learning.settle_steps", "--settle"},
+  };
+  if (key == "faults") return fault_flags(f);
+  if (const auto it = kFlags.find(key); it != kFlags.end()) return it->second;
+  // sim.control_dt -> --control-dt, learning.hold_windows -> --hold-windows, steps -> --steps
+  std::string flag = "--" + key.substr(key.find('.') + 1);
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
+  experiments::RunSpec spec;
+  spec.robot = robot::parse_robot(f.robot);
+  const robot::Morphology& morph = robot::morphology(spec.robot);
+  spec.sim = f.sim;
+  spec.faults = parse_faults(morph, f);
+  if (learn) {
+    spec.learning = learning_options(f.learning);
+    spec.start = experiments::learning_start(spec.learning->mode);
+  } else {
+    spec.start = {parse_periods_flag(morph, f.periods, "--periods"), f.cold ? 0 : f.warmup};
+  }
+  try {
+    experiments::validate(spec);
+  } catch (const OptionError& e) {
+    throw BadInput(flag_of(e.key(), f) + ": " + e.what());
+  }
+  return spec;
+}
+
+}  // namespace multicpg::apps

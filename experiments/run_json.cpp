@@ -1,0 +1,50 @@
+#include "experiments/run_json.h"
+
+#include "learning/json.h"
+#include "robot/leg_sets.h"
+#include "sim/course_json.h"
+
+namespace multicpg::experiments {
+namespace {
+
+// The single failure a timeline of one fault of legs, not a recovery, is.
+bool single_failure(const sim::FaultTimeline& faults) {
+  return faults.size() == 1 && !faults.front().recover;
+}
+
+}  // namespace
+
+nlohmann::json learning_record(const learning::CompensationOptions& options,
+                               const sim::FaultTimeline& faults) {
+  nlohmann::json j = options;
+  const bool single = single_failure(faults);
+  j["disabled"] = single ? faults.front().legs : std::vector<std::size_t>{};
+  j["fail_step"] = single ? faults.front().step : 0L;
+  j["faults"] = single ? sim::FaultTimeline{} : faults;
+  return j;
+}
+
+nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& result) {
+  const robot::Morphology& morph = morphology(spec);
+  nlohmann::json json = learning::to_json(result, morph, sim::failing_legs(spec.faults));
+  json["robot"] = morph.name;
+  json["disable_at"] = spec.faults.empty() ? 0L : spec.faults.front().step;
+  json["options"] = learning_record(*spec.learning, spec.faults);
+  return json;
+}
+
+nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o) {
+  const robot::Morphology& morph = morphology(spec);
+  const TunnelRun& run = o.run;
+  nlohmann::json j{{"passed", run.passed},       {"touched_wall", run.touched_wall},
+                   {"steps", run.steps},         {"forward_m", run.forward_m},
+                   {"lateral_m", run.lateral_m}, {"deviation_deg", run.deviation_deg}};
+  j["periods"] = robot::period_map_json(morph, o.periods);
+  if (o.learned) {
+    j["learning"] = learning::to_json(*o.learned, morph, o.disabled);
+    j["options"] = learning_record(*spec.learning, spec.faults);
+  }
+  return j;
+}
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,66 @@
+#include "experiments/run_spec.h"
+
+#include <algorithm>
+
+#include "common/errors.h"
+#include "common/limits.h"
+#include "robot/leg_sets.h"
+#include "sim/walk.h"
+
+namespace multicpg::experiments {
+
+sim::StartSpec learning_start(learning::Mode mode) {
+  sim::StartSpec start;
+  if (mode == learning::Mode::paper) start.warmup = 0;
+  return start;
+}
+
+const robot::Morphology& morphology(const RunSpec& spec) {
+  return robot::morphology(spec.robot);
+}
+
+sim::SimModel make_run_model(const RunSpec& spec) {
+  return sim::make_sim_model(spec.robot, spec.sim);
+}
+
+void validate(const RunSpec& spec) {
+  const robot::Morphology& morph = morphology(spec);
+  within("sim", [&] { sim::validate(spec.sim); });
+  const std::vector<int>& periods = spec.start.periods;
+  if (!periods.empty() && periods.size() != morph.size()) {
+    throw OptionError("start.periods", "the " + morph.name + " takes " +
+                                           std::to_string(morph.size()) + " periods, got " +
+                                           std::to_string(periods.size()));
+  }
+  for (int p : periods) {
+    if (!robot::is_gait_period(p)) {
+      throw OptionError("start.periods",
+                        "period " + std::to_string(p) +
+                            " gives no gait (allowed: " + robot::gait_periods_text() + ")");
+    }
+  }
+  require_in("start.warmup", spec.start.warmup, sim::kStepLimits);
+  try {
+    sim::validate(morph, spec.faults);
+  } catch (const OptionError&) {
+    throw;
+  } catch (const BadInput& e) {
+    throw OptionError("faults", e.what());
+  }
+  require_in("record.check_windows", spec.record.check_windows, kCheckWindowsLimits);
+  if (!spec.learning) return;
+  within("learning", [&] {
+    learning::validate(*spec.learning);
+    learning::validate_faults(*spec.learning, spec.faults);
+  });
+  if (spec.faults.empty()) {
+    throw OptionError("faults", "a learning run needs a leg that fails: there is nothing to learn");
+  }
+  if (std::adjacent_find(periods.begin(), periods.end(), std::not_equal_to<>()) != periods.end()) {
+    throw OptionError("start.periods",
+                      "a learning run starts with every leg at one period, its clients "
+                      "synchronised (SPEC §5)");
+  }
+}
+
+}  // namespace multicpg::experiments
