@@ -17,6 +17,7 @@
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
 #include "robot/leg_sets.h"
+#include "sim/fault_spec.h"
 #include "sim/record_csv.h"
 
 namespace multicpg::apps {
@@ -130,7 +131,7 @@ void run_learn(const LearnOptions& o) {
   }
   std::cout << ", faults";
   for (const sim::Fault& f : spec.faults) {
-    std::cout << " " << robot::leg_set_name(morph, f.legs) << (f.recover ? " recover" : " fail")
+    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail")
               << "@" << f.step;
   }
   std::cout << ", beta " << options.annealing.beta << ", threshold "

@@ -17,6 +17,7 @@
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
+#include "sim/fault_spec.h"
 #include "sim/record_csv.h"
 #include "sim/walk.h"
 
@@ -47,8 +48,12 @@ nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
   const nlohmann::json periods = robot::period_map_json(morph, run.spec.start.periods);
   nlohmann::json faults = nlohmann::json::array();
   for (const sim::Fault& f : run.spec.faults) {
-    faults.push_back(
-        {{"step", f.step}, {"legs", robot::leg_set_name(morph, f.legs)}, {"recover", f.recover}});
+    nlohmann::json fault{
+        {"step", f.step}, {"legs", robot::leg_set_name(morph, f.legs)}, {"recover", f.recover}};
+    if (!std::holds_alternative<sim::LegFault>(f.kind) || f.joint) {
+      fault["fault"] = sim::malfunction_text(morph, f);
+    }
+    faults.push_back(fault);
   }
   nlohmann::json windows = nlohmann::json::array();
   for (const sim::WindowMeasure& m : result.windows) {
@@ -88,7 +93,7 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
   out << (s.start.warmup > 0 ? " (warmed-up controller)" : " (cold controller)") << "\nfaults: ";
   if (s.faults.empty()) out << "none";
   for (const sim::Fault& f : s.faults) {
-    out << robot::leg_set_name(morph, f.legs) << (f.recover ? " recover" : " fail") << " at step "
+    out << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << " at step "
         << f.step << "  ";
   }
   out << "\n";

@@ -37,7 +37,9 @@ sim::FaultTimeline parse_faults(const robot::Morphology& morph, const RunFlags& 
 std::string fault_flags(const RunFlags& f) {
   std::string flags;
   const auto add = [&](bool given, const char* flag) {
-    if (given) flags += (flags.empty() ? "" : "/") + std::string(flag);
+    if (!given) return;
+    if (!flags.empty()) flags += '/';
+    flags += flag;
   };
   add(!f.disable.empty(), "--disable");
   add(!f.disable.empty() && f.disable_at > 0, "--disable-at");
@@ -70,9 +72,14 @@ void add_fault_flags(CLI::App& cmd, RunFlags& f) {
   cmd.add_option("--disable-at", f.disable_at, "controller step (from 0) at which they fail")
       ->check(in(sim::kStepLimits))
       ->capture_default_str();
-  cmd.add_option("--fault", f.faults, "LEGS@STEP: these legs fail before that step (repeatable)");
+  cmd.add_option("--fault", f.faults,
+                 "SPEC@STEP: a fault before that step (repeatable). SPEC: LEGS (the legs fail, "
+                 "R1,R3), LEGS.JOINT:locked[=DEG], LEGS.JOINT:passive, LEGS[.JOINT]:weak=FACTOR, "
+                 "LEGS:short=FRACTION, LEGS:slip=FACTOR, imu:drift=DEG_PER_S, imu:noise=DEG "
+                 "(docs/faults.md)");
   cmd.add_option("--recover", f.recoveries,
-                 "LEGS@STEP: these failed legs work again from that step (repeatable)");
+                 "SPEC@STEP: that fault ends from that step (repeatable; the value may be left "
+                 "out)");
 }
 
 void add_walk_flags(CLI::App& cmd, RunFlags& f) {

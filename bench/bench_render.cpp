@@ -21,7 +21,7 @@ void BM_RenderFrame(benchmark::State& bench) {
   mj_forward(model.get(), data.get());
   Renderer renderer(model.get(), kDefaultFrameWidth, kDefaultFrameHeight);
   const CameraSpec camera;
-  const std::vector<std::string> red{"R1_"};
+  const auto red = multicpg::testing::red_leg(model.get());
   for (int i = 0; i < kWarmupFrames; ++i)
     render_frame(renderer, model.get(), data.get(), camera, red);
   for (auto _ : bench) {

@@ -41,7 +41,8 @@ LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long a
     // Walk on as the learner left the robot: its periods and its steering reflex.
     stepper.set_before_step([&run, &options](sim::Stepper& s) {
       neural::ControllerState& c = s.state().controller;
-      c.drive = learning::steer(options.steering_params, *run.result.steering, s.pose(), c.drive);
+      c.drive =
+          learning::steer(options.steering_params, *run.result.steering, s.sensed_pose(), c.drive);
     });
   }
   for (long walked = 0; walked < after_steps;) {

@@ -18,7 +18,8 @@ class SimWalker final : public learning::Walker {
   explicit SimWalker(sim::Stepper& stepper) : stepper_(stepper) {}
 
   void step() override { stepper_.step(); }
-  sim::Pose2 pose() const override { return stepper_.pose(); }
+  // What the robot senses: a faulty yaw sensor misleads the learner as it would a real robot.
+  sim::Pose2 pose() const override { return stepper_.sensed_pose(); }
   long step_count() const override { return stepper_.step_count(); }
   neural::ControllerState& controller() override { return stepper_.state().controller; }
   const neural::ControllerModel& controller_model() const override {

@@ -17,6 +17,7 @@
 #include "experiments/scenarios.h"
 #include "learning/json.h"
 #include "robot/leg_sets.h"
+#include "sim/fault_spec.h"
 #include "sim/json.h"
 #include "sim/sim.h"
 #include "sim/walk.h"
@@ -219,9 +220,10 @@ std::string value_text(const json& v) {
 
 struct ScenarioSpec {
   std::string name;
-  json resolved;  // the name of a leg set, or {name, faults} of a timeline
-  std::vector<std::size_t> disabled;
-  sim::FaultTimeline faults;
+  json resolved;  // the name of a leg set or fault, or {name, faults} of a timeline
+  std::vector<std::size_t> disabled;    // a leg set that fails at the document's fail_step
+  std::optional<sim::Fault> malfunction;  // another fault that comes at the fail_step
+  sim::FaultTimeline faults;            // a timeline
 };
 
 // A leg set given as "R1+R3" or ["R1", "R3"] (robot/leg_sets.h), at least one leg.
@@ -241,6 +243,55 @@ robot::LegSet parse_legs(const robot::Morphology& morph, const json& legs,
     throw OptionError(path, "must name legs (\"R1+R3\" or [\"R1\", \"R3\"]), got " + legs.dump());
   }
   return out;
+}
+
+// One fault of a timeline table: {step, legs, recover} and, for kinds other than a whole leg,
+// {kind, joint, value} (sim/faults.h; the yaw sensor's kinds name no legs).
+sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const std::string& path) {
+  if (!f.is_object()) throw OptionError(path, "must be a table {step, legs, recover, kind, ...}");
+  const json defaults{{"step", 0},   {"legs", json::array()}, {"recover", false},
+                      {"kind", ""},  {"joint", ""},           {"value", 0.0}};
+  for (const auto& item : f.items()) {
+    if (!defaults.contains(item.key())) {
+      throw OptionError(child(path, item.key()),
+                        "is not a fault key (known: step, legs, recover, kind, joint, value)");
+    }
+    check_type(item.value(), defaults.at(item.key()), child(path, item.key()));
+  }
+  sim::Fault fault;
+  fault.step = f.value("step", 0L);
+  fault.recover = f.value("recover", false);
+  try {
+    std::optional<double> value;
+    if (f.contains("value")) value = f.at("value").get<double>();
+    fault.kind = sim::make_kind(f.value("kind", std::string(sim::LegFault::kName)), value,
+                                fault.recover);
+  } catch (const BadInput& e) {
+    throw OptionError(child(path, f.contains("value") ? "value" : "kind"), e.what());
+  }
+  if (f.contains("joint")) {
+    try {
+      fault.joint = robot::parse_joint(f.at("joint").get<std::string>());
+    } catch (const BadInput& e) {
+      throw OptionError(child(path, "joint"), e.what());
+    }
+  }
+  if (sim::strikes(fault.kind) != sim::Strikes::sensor || f.contains("legs")) {
+    fault.legs = parse_legs(morph, f.value("legs", json()), child(path, "legs"));
+  }
+  return fault;
+}
+
+// A timeline fault as the resolved document records it: leg names, and kind, joint and value
+// only for kinds other than a whole leg.
+json timeline_fault_json(const robot::Morphology& morph, const sim::Fault& fault) {
+  json j{{"step", fault.step}, {"legs", robot::leg_set_json(morph, fault.legs)},
+         {"recover", fault.recover}};
+  if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) return j;
+  j["kind"] = sim::kind_name(fault.kind);
+  if (fault.joint) j["joint"] = robot::to_string(*fault.joint);
+  if (const std::optional<double> v = sim::value_of(fault.kind)) j["value"] = *v;
+  return j;
 }
 
 ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
@@ -266,29 +317,9 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
   }
   json faults = json::array();
   for (std::size_t i = 0; i < s.at("faults").size(); ++i) {
-    const json& f = s.at("faults")[i];
-    const std::string fp = indexed(faults_path, i);
-    if (!f.is_object()) throw OptionError(fp, "must be a table {step, legs, recover}");
-    const json fault_defaults{{"step", 0}, {"legs", json::array()}, {"recover", false}};
-    for (const auto& item : f.items()) {
-      if (!fault_defaults.contains(item.key())) {
-        throw OptionError(child(fp, item.key()), "is not a fault key (known: step, legs, recover)");
-      }
-    }
-    sim::Fault fault;
-    if (f.contains("step")) {
-      check_type(f.at("step"), fault_defaults.at("step"), child(fp, "step"));
-      fault.step = f.at("step").get<long>();
-    }
-    if (f.contains("recover")) {
-      check_type(f.at("recover"), fault_defaults.at("recover"), child(fp, "recover"));
-      fault.recover = f.at("recover").get<bool>();
-    }
-    fault.legs = parse_legs(morph, f.value("legs", json()), child(fp, "legs"));
+    const sim::Fault fault = timeline_fault(morph, s.at("faults")[i], indexed(faults_path, i));
     out.faults.push_back(fault);
-    faults.push_back({{"step", fault.step},
-                      {"legs", robot::leg_set_json(morph, fault.legs)},
-                      {"recover", fault.recover}});
+    faults.push_back(timeline_fault_json(morph, fault));
   }
   try {
     sim::validate(morph, out.faults);
@@ -297,6 +328,33 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
   }
   out.resolved = {{"name", out.name}, {"faults", faults}};
   return out;
+}
+
+// A scenario written as one fault without its step ("R1+R3", "R2.CTr:locked", "L1:weak=0.3";
+// sim/fault_spec.h): it comes at the document's fail_step. A leg set is named as before; any
+// other fault by its text with ':' as '_', so it names a run file.
+ScenarioSpec fault_scenario(const robot::Morphology& morph, const json& text,
+                            const std::string& path) {
+  sim::Fault fault;
+  try {
+    fault = sim::parse_malfunction(morph, text.get<std::string>(), false);
+  } catch (const BadInput& e) {
+    throw OptionError(path, e.what());
+  }
+  if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) {
+    const std::vector<std::size_t> legs = parse_legs(morph, text, path);
+    const std::string name = robot::leg_set_name(morph, legs);
+    return {name, name, legs, std::nullopt, {}};
+  }
+  try {
+    sim::validate(morph, {fault});
+  } catch (const BadInput& e) {
+    throw OptionError(path, e.what());
+  }
+  const std::string spec = sim::malfunction_text(morph, fault);
+  std::string name = spec;
+  std::replace(name.begin(), name.end(), ':', '_');
+  return {name, spec, {}, fault, {}};
 }
 
 std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& doc) {
@@ -321,7 +379,7 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
     } catch (const BadInput& e) {
       throw OptionError("scenarios", e.what());
     }
-    for (const Scenario& n : named) out.push_back({n.name, n.name, n.disabled, {}});
+    for (const Scenario& n : named) out.push_back({n.name, n.name, n.disabled, std::nullopt, {}});
   } else if (s.is_array()) {
     if (s.empty()) throw OptionError("scenarios", "is an empty list");
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -329,12 +387,12 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
       if (s[i].is_object()) {
         out.push_back(timeline_scenario(morph, s[i], path));
       } else if (s[i].is_string()) {
-        const std::vector<std::size_t> legs = parse_legs(morph, s[i], path);
-        const std::string name = robot::leg_set_name(morph, legs);
-        out.push_back({name, name, legs, {}});
+        out.push_back(fault_scenario(morph, s[i], path));
       } else {
-        throw OptionError(
-            path, "must be a leg set (\"R1+R3\") or a fault timeline table, got " + s[i].dump());
+        throw OptionError(path,
+                          "must be a leg set (\"R1+R3\"), a fault (\"R2.CTr:locked\") or a "
+                          "fault timeline table, got " +
+                              s[i].dump());
       }
       for (std::size_t j = 0; j + 1 < out.size(); ++j) {
         if (out[j].name == out.back().name) {
@@ -720,7 +778,13 @@ Sweep resolve_sweep(const json& doc) {
       spec.sim = sim_options;
       spec.learning = base;
       spec.start = learning_start(base.mode);
-      spec.faults = s.faults.empty() ? sim::fail_at(s.disabled, fail_step) : s.faults;
+      spec.faults = s.faults;
+      if (s.malfunction) {
+        spec.faults = {*s.malfunction};
+        spec.faults.front().step = fail_step;
+      } else if (s.faults.empty()) {
+        spec.faults = sim::fail_at(s.disabled, fail_step);
+      }
       spec.record.check_windows = check_windows;
       spec.record.trace = trace.get<bool>();
       try {
@@ -747,7 +811,7 @@ Sweep resolve_sweep(const json& doc) {
         json options = *spec.learning;
         options["disabled"] = s.disabled;
         options[kFailStepKey] = fail_step;
-        options["faults"] = s.faults;
+        options["faults"] = s.malfunction ? spec.faults : s.faults;
         task.params = {{"robot", robot::to_string(sweep.robot)},
                        {"scenario", s.name},
                        {"disabled", robot::leg_set_json(morph, sim::failing_legs(spec.faults))},

@@ -46,9 +46,10 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
   const sim::Pose2 start = stepper.pose();
   if (spec.steering) {
     stepper.set_before_step([params = *spec.steering,
-                             reflex = learning::start_steering(start)](sim::Stepper& s) mutable {
+                             reflex = learning::start_steering(stepper.sensed_pose())](
+                                sim::Stepper& s) mutable {
       neural::ControllerState& c = s.state().controller;
-      c.drive = learning::steer(params, reflex, s.pose(), c.drive);
+      c.drive = learning::steer(params, reflex, s.sensed_pose(), c.drive);
     });
   }
   while (run.steps < spec.max_steps) {

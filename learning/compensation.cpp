@@ -65,7 +65,7 @@ class Walk {
   bool faults_pending() const { return walker_.faults().pending(); }
   // Faults and recoveries since the last call.
   int take_fault_count() { return std::exchange(fault_count_, 0); }
-  // A recovery that left every leg working, since the last call.
+  // A recovery that left no fault in force, since the last call.
   bool take_full_recovery() { return std::exchange(full_recovery_, false); }
   double effort() const { return effort_; }
   const std::optional<SteeringState>& steering() const { return steering_; }
@@ -80,7 +80,7 @@ class Walk {
       recovered = recovered || came[seen_].recover;
       ++fault_count_;
     }
-    if (recovered && failed_now().empty()) full_recovery_ = true;
+    if (recovered && walker_.faults().in_force().empty()) full_recovery_ = true;
   }
 
   Walker& walker_;

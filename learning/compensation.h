@@ -168,7 +168,7 @@ struct LearningResult {
 //   stops at its first window over the threshold, whose deviation is the trial's E);
 // - after an episode the robot keeps walking and monitoring, and a window over the threshold
 //   starts a new episode; the run ends after monitor_windows clean windows past the last fault;
-// - a recovery that leaves every leg working sets every period back to the master's and
+// - a recovery that leaves no fault in force sets every period back to the master's and
 //   resynchronises the clients (SPEC §5), then settles;
 // - with Steering::reflex, learning/steering.h holds the course set where the run started.
 LearningResult compensate(Walker& walker, const CompensationOptions& options);

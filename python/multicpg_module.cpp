@@ -259,7 +259,7 @@ class Simulation {
     const std::lock_guard<std::mutex> lock(mutex_);
     const std::vector<std::size_t> list = robot::parse_leg_set(robot_->morph(), leg_text(legs));
     if (list.empty()) throw BadInput("name at least one leg, e.g. \"R1\" or [\"R1\", \"R3\"]");
-    stepper_->set_failed(list, failed);
+    stepper_->apply_now(sim::Fault{0, list, !failed});
   }
 
   void synchronise(bool on) {

@@ -9,7 +9,9 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "report/fault_colours.h"
 #include "robot/leg_sets.h"
+#include "sim/fault_spec.h"
 
 namespace multicpg::report {
 namespace {
@@ -101,26 +103,32 @@ void Film::rethrow_failure() {
   if (failure_) std::rethrow_exception(failure_);
 }
 
+namespace {
+
+// What a fault event struck, for a caption: "R1+R3", "R2.CTr locked", "imu drift 0.5".
+std::string fault_event_text(const robot::Morphology& morph, const sim::Fault& fault) {
+  std::string text = sim::malfunction_text(morph, fault);
+  std::replace(text.begin(), text.end(), ':', ' ');
+  std::replace(text.begin(), text.end(), '=', ' ');
+  return text;
+}
+
+}  // namespace
+
 FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
                      const std::string& caption) {
   FramePose out;
   const mjModel* m = model.mj.get();
   out.qpos.assign(state.data->qpos, state.data->qpos + m->nq);
+  out.model = state.faults.model;
+  out.colours = fault_colours(model, state.faults.in_force);
   std::vector<int> periods;
-  robot::LegSet disabled;
   const robot::Morphology& morph = model.controller.morphology;
-  for (std::size_t i = 0; i < morph.size(); ++i) {
-    const neural::LegState& leg = state.controller.legs[i];
-    periods.push_back(leg.cpg.period);
-    if (leg.disabled) {
-      out.red.push_back(morph.legs[i].name + "_");
-      disabled.push_back(i);
-    }
-  }
-  out.overlay.titles = "Step\nTime\nPeriods\nDisabled";
+  for (const neural::LegState& leg : state.controller.legs) periods.push_back(leg.cpg.period);
+  out.overlay.titles = "Step\nTime\nPeriods\nFaults";
   out.overlay.values = std::to_string(state.step) + "\n" + fixed(state.data->time, 1) + " s\n" +
                        robot::period_map_text(morph, periods) + "\n" +
-                       (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled));
+                       faults_caption(morph, state.faults.in_force);
   if (!caption.empty()) {
     out.overlay.titles += "\n";
     out.overlay.values += "\n" + caption;
@@ -130,10 +138,10 @@ FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
 
 Image draw_frame(Renderer& renderer, const sim::SimModel& model, mjData* data,
                  const CameraSpec& camera, const FramePose& pose) {
-  const mjModel* m = model.mj.get();
+  const mjModel* m = pose.model ? pose.model.get() : model.mj.get();
   std::copy(pose.qpos.begin(), pose.qpos.end(), data->qpos);
   mj_fwdPosition(m, data);  // body and geom poses, the tracked subtree's centre, the lights
-  return render_frame(renderer, m, data, camera, pose.red, pose.overlay);
+  return render_frame(renderer, m, data, camera, pose.colours, pose.overlay);
 }
 
 Image film_frame(Renderer& renderer, const sim::SimModel& model, const sim::SimState& state,
@@ -186,10 +194,10 @@ void FilmObserver::on_event(const sim::SimModel& model, const sim::SimState& /*s
   const robot::Morphology& morph = model.controller.morphology;
   switch (e.kind) {
     case sim::EventKind::fault:
-      caption_ = robot::leg_set_name(morph, e.legs) + " failed";
+      caption_ = e.fault ? fault_event_text(morph, *e.fault) + " failed" : "a fault";
       break;
     case sim::EventKind::recovery:
-      caption_ = robot::leg_set_name(morph, e.legs) + " works again";
+      caption_ = e.fault ? fault_event_text(morph, *e.fault) + " works again" : "a recovery";
       break;
     case sim::EventKind::detection:
       caption_ = fmt_deviation("deviation ", e.deviation_deg) + ": learning starts";

@@ -44,8 +44,11 @@ struct FilmSpec {
 // What one frame shows: the pose and the overlay, copied from the state at capture.
 struct FramePose {
   std::vector<mjtNum> qpos;
-  std::vector<std::string> red;  // failed legs, drawn red
-  Overlay overlay;               // step, time, periods, disabled legs, caption
+  // The run's own model while a fault reshapes the robot (sim/fault_effects.h); null: the shared
+  // one. Never changed once made, so the film's thread may draw from it.
+  std::shared_ptr<const mjModel> model;
+  Colouring colours;  // the faults in force, each kind in its colour
+  Overlay overlay;    // step, time, periods, faults in force, caption
 };
 FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
                      const std::string& caption);

@@ -5,7 +5,6 @@
 #include <mutex>
 
 #include "common/errors.h"
-#include "report/disabled_legs.h"
 
 namespace multicpg::report {
 namespace {
@@ -86,16 +85,30 @@ Renderer::~Renderer() {
   mjv_freeScene(&scene_);
 }
 
+void paint(mjvScene& scene, const Colouring& colours) {
+  if (colours.empty()) return;
+  for (int i = 0; i < scene.ngeom; ++i) {
+    mjvGeom& g = scene.geoms[i];
+    if (g.objtype != mjOBJ_GEOM) continue;
+    for (const GeomColour& c : colours) {
+      if (c.geom == g.objid) std::copy(c.rgba.begin(), c.rgba.end(), g.rgba);
+    }
+  }
+}
+
 Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const CameraSpec& camera,
-                   const std::vector<std::string>& red_prefixes, const Overlay& overlay) {
-  if (model != renderer.model_)
-    throw BadInput("render_frame: the model is not the renderer's model");
+                   const Colouring& colours, const Overlay& overlay) {
+  const mjModel* own = renderer.model_;
+  const bool same_parts = model != nullptr && model->nbody == own->nbody &&
+                          model->ngeom == own->ngeom && model->nmesh == own->nmesh &&
+                          model->ntex == own->ntex && model->nmat == own->nmat;
+  if (!same_parts) throw BadInput("render_frame: the model is not the renderer's model");
   if (data == nullptr) throw BadInput("render_frame: no data");
   renderer.gl_.make_current();
   aim_camera(model, data, camera, renderer.camera_, renderer.tracked_body_);
   mjv_updateScene(model, data, &renderer.option_, nullptr, &renderer.camera_, mjCAT_ALL,
                   &renderer.scene_);
-  paint_red(model, renderer.scene_, red_prefixes);
+  paint(renderer.scene_, colours);
 
   const mjrRect viewport{0, 0, renderer.width_, renderer.height_};
   mjr_setBuffer(mjFB_OFFSCREEN, &renderer.context_);

@@ -16,6 +16,18 @@
 
 namespace multicpg::report {
 
+using Rgba = std::array<float, 4>;
+
+// A geom drawn in a colour of its own (a fault's, report/fault_colours.h).
+struct GeomColour {
+  int geom = -1;
+  Rgba rgba{};
+};
+using Colouring = std::vector<GeomColour>;
+
+// Recolours the scene's geoms (call after mjv_updateScene).
+void paint(mjvScene& scene, const Colouring& colours);
+
 inline constexpr int kDefaultFrameWidth = 640;
 inline constexpr int kDefaultFrameHeight = 480;
 // Frame sides a user may ask for: a thumbnail to 4K's 4096 px, which every GL driver's
@@ -54,7 +66,7 @@ class Renderer {
 
  private:
   friend Image render_frame(Renderer&, const mjModel*, mjData*, const CameraSpec&,
-                            const std::vector<std::string>&, const Overlay&);
+                            const Colouring&, const Overlay&);
   const mjModel* model_;
   int width_;
   int height_;
@@ -66,10 +78,11 @@ class Renderer {
   int tracked_body_ = -1;  // body the camera followed last frame, to start tracking without a swoop
 };
 
-// Renders the current state of `data` (after mj_forward or mj_step). Geoms whose own name, or
-// whose body's or an ancestor body's name, starts with one of `red_prefixes` (e.g. "R1_") are
-// drawn red. `model` must be the renderer's model; an unknown track body throws BadInput.
+// Renders the current state of `data` (after mj_forward or mj_step), the geoms of `colours` in
+// their colours (report/fault_colours.h). `model` must be the renderer's model or a copy of it
+// that a fault reshaped (the same bodies, geoms and visual assets: sim/fault_effects.h); another
+// model or an unknown track body throws BadInput.
 Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const CameraSpec& camera,
-                   const std::vector<std::string>& red_prefixes, const Overlay& overlay = {});
+                   const Colouring& colours, const Overlay& overlay = {});
 
 }  // namespace multicpg::report

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "common/errors.h"
-#include "report/disabled_legs.h"
+#include "report/fault_colours.h"
 #include "report/render.h"
 #include "robot/leg_sets.h"
 #include "sim/walk.h"
@@ -208,7 +208,9 @@ class Viewer {
       // last working leg is refused (BadInput): the overlay shows why until the next leg key.
       refused_.clear();
       try {
-        if (leg < model_.legs.size()) stepper_.set_failed({leg}, !stepper_.faults().failed(leg));
+        if (leg < model_.legs.size()) {
+          stepper_.apply_now(sim::Fault{0, {leg}, stepper_.faults().failed(leg)});
+        }
       } catch (const BadInput& e) {
         refused_ = e.what();
       }
@@ -242,7 +244,7 @@ class Viewer {
   }
 
   // The right column of the status overlay, one line per title.
-  std::string status_values(const std::vector<std::size_t>& disabled) const {
+  std::string status_values() const {
     const robot::Morphology& morph = model_.controller.morphology;
     std::ostringstream values;
     values << state_.step << "\n"
@@ -252,7 +254,7 @@ class Viewer {
              << state_.controller.legs[i].cpg.period;
     }
     values << "\n"
-           << (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled)) << "\n"
+           << faults_caption(morph, state_.faults.in_force) << "\n"
            << (synchronised_ ? "synchronised" : "free") << "\n"
            << (paused_ ? "paused" : "running");
     if (!refused_.empty()) values << "\n" << refused_;
@@ -260,22 +262,19 @@ class Viewer {
   }
 
   void draw() {
-    const mjModel* m = model_.mj.get();
+    const mjModel* m = sim::physics_model(model_, state_);
     const robot::Morphology& morph = model_.controller.morphology;
-    const std::vector<std::size_t> disabled = stepper_.faults().failed_legs();
-    std::vector<std::string> red;
-    for (std::size_t leg : disabled) red.push_back(morph.legs[leg].name + "_");
 
     mjrRect viewport{0, 0, 0, 0};
     glfwGetFramebufferSize(window_.get(), &viewport.width, &viewport.height);
     mjv_updateScene(m, state_.data.get(), &option_, nullptr, &camera_, mjCAT_ALL, &scene_);
-    paint_red(m, scene_, red);
+    paint(scene_, fault_colours(model_, state_.faults.in_force));
     mjr_render(viewport, &scene_, &context_);
 
-    const std::string values = status_values(disabled);
+    const std::string values = status_values();
     mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport,
-                refused_.empty() ? "Step\nTime\nPeriods\nDisabled\nClients\nStatus"
-                                 : "Step\nTime\nPeriods\nDisabled\nClients\nStatus\nRefused",
+                refused_.empty() ? "Step\nTime\nPeriods\nFaults\nClients\nStatus"
+                                 : "Step\nTime\nPeriods\nFaults\nClients\nStatus\nRefused",
                 values.c_str(), &context_);
     const std::string keys = "Space\nRight\n1-" + std::to_string(morph.size()) + "\nS\nEsc, Q";
     const std::string actions = "pause / resume\none step while paused\ndisable / enable leg " +

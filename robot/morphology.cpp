@@ -52,6 +52,13 @@ std::string_view to_string(Joint joint) {
   return "TC";
 }
 
+Joint parse_joint(std::string_view name) {
+  for (Joint j : kJoints) {
+    if (name == to_string(j)) return j;
+  }
+  throw BadInput("unknown joint '" + std::string(name) + "' (TC, CTr or FTi)");
+}
+
 RobotKind parse_robot(std::string_view name) {
   for (RobotKind k : kRobotKinds) {
     if (name == morphology(k).name) return k;

@@ -48,6 +48,7 @@ std::string_view to_string(Joint joint);
 
 // Parsers for user input; each throws BadInput with one line naming what is wrong.
 RobotKind parse_robot(std::string_view name);
+Joint parse_joint(std::string_view name);  // "TC", "CTr" or "FTi"
 std::size_t leg_index(const Morphology& morph, std::string_view name);
 
 }  // namespace multicpg::robot

@@ -9,7 +9,12 @@
 
 namespace multicpg::sim {
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Fault, step, legs, recover)
+// A fault as {step, legs (indices), recover}, the form leg faults have always been recorded in,
+// with "kind" (its name), "joint" and "value" for every other kind.
+void to_json(nlohmann::json& j, const Fault& fault);
+// Throws BadInput for an unknown kind or joint, or a value its kind does not take.
+void from_json(const nlohmann::json& j, Fault& fault);
+
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(WindowMeasure, yaw_deg, path_deg, forward_m,
                                                 lateral_m, steering_effort)
 

@@ -1,29 +1,22 @@
 // What happens to a walking robot, as the one stepping loop (sim/stepper.h) and the learner
 // (learning/compensation.h) report it to an observer: faults, detections, trials, episodes
-// (issue 8). Plain types, no MuJoCo, so the learner and its fake walker can use them too.
+// (docs/learning.md). Plain types, no MuJoCo, so the learner and its fake walker can use them
+// too.
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "neural/controller.h"
 #include "robot/morphology.h"
+#include "sim/faults.h"
 
 namespace multicpg::sim {
 
 // Largest number of steps of any run, settle and warm-up included: 10^8 steps are 43 days of
 // walking at 27 Hz; past it step counts would overflow their sums.
 inline constexpr long kMaxSteps = 100'000'000;
-
-// Legs that fail (or recover) before controller step `step` of a run (SPEC §4: any step).
-struct Fault {
-  long step = 0;
-  std::vector<std::size_t> legs;
-  bool recover = false;
-  bool operator==(const Fault&) const = default;
-};
-// Sorted by step; several events may share a step.
-using FaultTimeline = std::vector<Fault>;
 
 enum class EventKind {
   fault,        // legs failed
@@ -37,7 +30,8 @@ enum class EventKind {
 struct Event {
   EventKind kind = EventKind::fault;
   long step = 0;                  // controller steps since the run started
-  std::vector<std::size_t> legs;  // fault, recovery
+  std::vector<std::size_t> legs;  // fault, recovery: the legs struck (none: the sensor)
+  std::optional<Fault> fault;     // fault, recovery: what came
   int episode = 0;                // 1-based learning episode (detection .. episode_end)
   int trial = 0;                  // 1-based trial of the episode
   std::vector<int> periods;       // trial_start/end, episode_end: the combination
@@ -47,26 +41,36 @@ struct Event {
 
 const char* to_string(EventKind kind);
 
-// Throws BadInput (one line, leg names) for a timeline that is not sorted, names a leg out of
-// range or twice in one event, fails a leg that has already failed, recovers one that has not,
-// disables every leg, or has a step outside 0..kMaxSteps.
+// Throws BadInput (one line, leg and joint names) for a timeline that is not sorted, has a step
+// outside 0..kMaxSteps, names a leg out of range or twice in one event, names a joint where the
+// kind strikes whole legs (or none where it strikes joints), locks a joint outside its limits,
+// strikes what a fault of its kind already strikes, recovers what is not struck, or disables
+// every leg.
 void validate(const robot::Morphology& morph, const FaultTimeline& faults);
 
 // Puts a timeline in step order, a recovery before a failure at the same step (so a leg may
 // recover and another fail at one step); events of one step otherwise keep their order.
 void sort_timeline(FaultTimeline& faults);
 
-// "R1@0" style timeline: the legs fail before step `step`; no legs = no fault.
+// "R1@0" style timeline: the legs fail (leg faults) before step `step`; no legs = no fault.
 FaultTimeline fail_at(const std::vector<std::size_t>& legs, long step);
 
-// Every leg that fails at some point of the timeline, in leg order.
+// Every leg that loses its function (a leg fault) at some point of the timeline, in leg order.
 std::vector<std::size_t> failing_legs(const FaultTimeline& faults);
-// The legs still failed when the whole timeline has come, in leg order.
+// The legs whose leg fault is still in force when the whole timeline has come, in leg order.
 std::vector<std::size_t> failed_after(const robot::Morphology& morph, const FaultTimeline& faults);
+// The faults in force when the whole timeline has come, one per leg (or the sensor) struck.
+FaultTimeline in_force_after(const robot::Morphology& morph, const FaultTimeline& faults);
+// Puts one fault (or recovery) into `in_force` (faults in force, one per leg or the sensor).
+// Throws BadInput (validate's message) when it cannot happen now; `in_force` may then be
+// partly changed.
+void take_fault(const robot::Morphology& morph, const Fault& fault, FaultTimeline& in_force);
 
-// A run's faults as they come (SPEC §4, issue 8): its timeline, how much of it has come, and the
-// legs failed now. The one home of fault bookkeeping: sim::Stepper applies a run's faults through
-// it (and the learner's fake walker likewise), and the learner reads from it what came.
+// A run's faults as they come (SPEC §4): its timeline, how much of it has come, and what is in
+// force now. The one home of fault bookkeeping: sim::Stepper applies a run's faults through it
+// (and the learner's fake walker likewise), and the learner reads from it what came. A leg fault
+// is the controller's (the leg holds its posture, neural::set_disabled); every other kind is the
+// physics' (sim/fault_effects.h), which the stepper applies to what came.
 class FaultSchedule {
  public:
   // Throws BadInput (validate's message) for a bad timeline.
@@ -75,17 +79,17 @@ class FaultSchedule {
   // Applies to `controller`, in order, the faults due before step `step` (whose step is at most
   // `step`); returns how many came.
   std::size_t apply_due(long step, neural::ControllerState& controller);
-  // Legs fail (or work again) now, out of the timeline (the viewer's keys, Python). Throws
-  // BadInput (validate's message) for a leg that has already failed, one that has not, or
-  // failing every leg. The timeline still comes as planned.
-  void apply_now(const robot::Morphology& morph, const Fault& fault,
-                 neural::ControllerState& controller);
+  // A fault (or recovery) now, out of the timeline (the viewer's keys, Python). Throws BadInput
+  // (validate's message) when it cannot happen now. The timeline still comes as planned.
+  void apply_now(const Fault& fault, neural::ControllerState& controller);
 
   const FaultTimeline& timeline() const { return timeline_; }
   // Every fault that has come, from the timeline or not, in order.
   const std::vector<Fault>& applied() const { return applied_; }
-  // Whether `leg` has failed now (false for a leg out of range).
-  bool failed(std::size_t leg) const { return leg < failed_.size() && failed_[leg]; }
+  // The faults in force now, one per leg (or the sensor) struck, in the order they came.
+  const FaultTimeline& in_force() const { return in_force_; }
+  // Whether `leg` has lost its function now (a leg fault; false for a leg out of range).
+  bool failed(std::size_t leg) const;
   std::vector<std::size_t> failed_legs() const;
   // Faults of the timeline still to come.
   bool pending() const { return next_ < timeline_.size(); }
@@ -93,10 +97,11 @@ class FaultSchedule {
  private:
   void apply(const Fault& fault, neural::ControllerState& controller);
 
+  robot::Morphology morph_;
   FaultTimeline timeline_;
   std::size_t next_ = 0;
   std::vector<Fault> applied_;
-  std::vector<bool> failed_;
+  FaultTimeline in_force_;
 };
 
 // The fault or recovery event a fault makes.

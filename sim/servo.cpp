@@ -16,9 +16,9 @@ double torque_limit(const ServoModel& servo, double error) {
 }
 
 double servo_torque(const ServoModel& servo, double target, double angle, double velocity,
-                    double dt) {
+                    double dt, double limit_scale) {
   const double error = target - angle;
-  const double fmax = torque_limit(servo, error);
+  const double fmax = limit_scale * torque_limit(servo, error);
   const double wanted =
       servo.spec.loop_gain * (commanded_velocity(servo.spec, error, dt) - velocity);
   return std::clamp(wanted, -fmax, fmax);

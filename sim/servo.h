@@ -28,8 +28,9 @@ double commanded_velocity(const robot::ServoSpec& spec, double error, double dt)
 // Torque bound: P tanh(|2 error / range| + damp), small near the target (compliance).
 double torque_limit(const ServoModel& servo, double error);
 
-// Torque for one physics step of length dt (N m).
+// Torque for one physics step of length dt (N m), within `limit_scale` times the torque bound (a
+// weak motor's share, sim/faults.h).
 double servo_torque(const ServoModel& servo, double target, double angle, double velocity,
-                    double dt);
+                    double dt, double limit_scale = 1.0);
 
 }  // namespace multicpg::sim

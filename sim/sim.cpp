@@ -108,6 +108,7 @@ JointSlot joint_slot(const mjModel* m, const std::string& joint, robot::ServoSpe
                      const robot::AngleRange& range) {
   const int j = id_of(m, mjOBJ_JOINT, joint);
   JointSlot slot;
+  slot.joint = j;
   slot.qpos = m->jnt_qposadr[j];
   slot.dof = m->jnt_dofadr[j];
   slot.actuator = id_of(m, mjOBJ_ACTUATOR, joint);
@@ -116,9 +117,13 @@ JointSlot joint_slot(const mjModel* m, const std::string& joint, robot::ServoSpe
   return slot;
 }
 
-void drive(const SimModel& model, mjData* d, const JointSlot& slot, double target) {
+void drive(const SimModel& model, mjData* d, const JointSlot& slot, double target,
+           const JointCondition& condition = {}) {
   d->ctrl[slot.actuator] =
-      servo_torque(slot.servo, target, d->qpos[slot.qpos], d->qvel[slot.dof], model.physics_dt);
+      condition.servo == JointCondition::Servo::driven
+          ? servo_torque(slot.servo, target, d->qpos[slot.qpos], d->qvel[slot.dof],
+                         model.physics_dt, condition.torque_scale)
+          : 0.0;
 }
 
 [[noreturn]] void unstable(const SimState& state, double time, const std::string& why) {
@@ -303,6 +308,16 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
                      gain(*specs[j]), robot::joint_limits(leg.type, joint));
     }
     slots.touch = m->sensor_adr[id_of(m, mjOBJ_SENSOR, leg.name + "_foot")];
+    slots.tibia_body = id_of(m, mjOBJ_BODY, leg.name + "_tibia");
+    slots.tibia_geom = id_of(m, mjOBJ_GEOM, leg.name + "_tibia");
+    slots.foot_body = id_of(m, mjOBJ_BODY, leg.name + "_foot");
+    slots.foot_geom = id_of(m, mjOBJ_GEOM, leg.name + "_foot");
+    for (int p = 0; p < m->npair; ++p) {
+      if (m->pair_geom2[p] == slots.foot_geom || m->pair_geom1[p] == slots.foot_geom) {
+        slots.foot_pair = p;
+      }
+    }
+    if (slots.foot_pair < 0) throw RuntimeFailure("MuJoCo model has no ground pair of " + leg.name);
     model.legs.push_back(slots);
   }
   if (body.trunk.size() > 1) {
@@ -326,18 +341,24 @@ SimState make_sim_state(const SimModel& model, int period) {
   for (int w = 0; w < mjNWARNING; ++w) state.warnings[w] = state.data->warning[w].number;
   state.controller = neural::make_controller_state(model.controller, period);
   state.targets = model.start_pose;
+  state.faults.joints.resize(model.legs.size());
   return state;
+}
+
+const mjModel* physics_model(const SimModel& model, const SimState& state) {
+  return state.faults.model ? state.faults.model.get() : model.mj.get();
 }
 
 SimState copy_sim_state(const SimModel& model, const SimState& state) {
   SimState copy;
   copy.data.reset(mj_makeData(model.mj.get()));
   if (!copy.data) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
-  mj_copyData(copy.data.get(), model.mj.get(), state.data.get());
+  mj_copyData(copy.data.get(), physics_model(model, state), state.data.get());
   copy.controller = state.controller;
   copy.targets = state.targets;
   copy.step = state.step;
   copy.warnings = state.warnings;
+  copy.faults = state.faults;  // the run's own model is never changed in place: shared safely
   return copy;
 }
 
@@ -350,12 +371,12 @@ void sim_step(const SimModel& model, SimState& state) {
                         robot::joint_angle(type, Joint::CTr, c.ctr),
                         robot::joint_angle(type, Joint::FTi, c.fti)};
   }
-  const mjModel* m = model.mj.get();
+  const mjModel* m = physics_model(model, state);
   mjData* d = state.data.get();
   for (int s = 0; s < model.substeps; ++s) {
     for (std::size_t i = 0; i < model.legs.size(); ++i) {
       for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-        drive(model, d, model.legs[i].joints[j], state.targets[i][j]);
+        drive(model, d, model.legs[i].joints[j], state.targets[i][j], state.faults.joints[i][j]);
       }
     }
     for (const JointSlot& slot : model.backbone) drive(model, d, slot, 0.0);  // held at 0

@@ -18,6 +18,7 @@
 #include "neural/controller.h"
 #include "robot/body.h"
 #include "robot/mjcf.h"
+#include "sim/fault_state.h"
 #include "sim/servo.h"
 
 namespace multicpg::sim {
@@ -70,6 +71,7 @@ struct SimOptions {
 
 // Where one servo's joint lives in the mjModel.
 struct JointSlot {
+  int joint = -1;
   int qpos = -1;
   int dof = -1;
   int actuator = -1;
@@ -80,6 +82,13 @@ struct LegSlots {
   robot::LegType type;
   std::array<JointSlot, robot::kJointsPerLeg> joints;  // TC, CTr, FTi
   int touch = -1;  // sensordata address of the foot's touch sensor
+  // The parts a fault reshapes (sim/fault_effects.h): the tibia's body and capsule, the foot's
+  // body and capsule, and the foot's contact pair with the ground.
+  int tibia_body = -1;
+  int tibia_geom = -1;
+  int foot_body = -1;
+  int foot_geom = -1;
+  int foot_pair = -1;
 };
 
 struct MjModelDeleter {
@@ -134,7 +143,12 @@ struct SimState {
   std::vector<robot::LegAngles> targets;   // joint targets of the current controller step, rad
   long step = 0;                           // controller steps done
   std::array<int, mjNWARNING> warnings{};  // MuJoCo warning counts already seen
+  FaultEffects faults;                     // what the faults in force do to the physics
 };
+
+// The model the run's physics steps now: its own while a fault reshapes the robot
+// (sim/fault_effects.h), else the shared one.
+const mjModel* physics_model(const SimModel& model, const SimState& state);
 
 // The robot standing in its start pose at the origin, facing +x, every CPG at `period` and
 // synchronised (neural::make_controller_state).
@@ -145,7 +159,8 @@ SimState make_sim_state(const SimModel& model, int period = 4);
 SimState copy_sim_state(const SimModel& model, const SimState& state);
 
 // One controller step: neural::controller_step, joint targets (robot::joint_angle), then
-// model.substeps physics steps, each setting every servo's torque (sim/servo.h) before mj_step.
+// model.substeps physics steps, each setting every servo's torque (sim/servo.h, as the faults in
+// force allow: none for a locked or passive joint, a weak motor's share) before mj_step.
 // Throws RuntimeFailure naming the step if the physics becomes unstable (a NaN or infinite state,
 // a MuJoCo warning such as a bad acceleration, MuJoCo resetting the state, the trunk faster than
 // any real robot or bodies deep inside each other).

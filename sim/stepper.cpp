@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/errors.h"
+#include "sim/fault_effects.h"
 #include "sim/walk.h"
 
 namespace multicpg::sim {
@@ -17,8 +18,9 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
       record_(record),
       record_joints_(record_joints) {
   if (start.warmup < 0) {
-    throw BadInput("--warmup must not be negative, got " + std::to_string(start.warmup));
+    throw OptionError("start.warmup", "must not be negative, got " + std::to_string(start.warmup));
   }
+  state_.faults.sensor.random.seed(start.seed);
   apply_due_faults();
   warm_up_controller(model_, state_, start.warmup);
   if (record_ != nullptr) {
@@ -29,13 +31,15 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
 
 void Stepper::apply_due_faults() {
   const std::size_t first = faults_.applied().size();
-  if (faults_.apply_due(walked_, state_.controller) > 0) tell_faults(first);
+  if (faults_.apply_due(walked_, state_.controller) > 0) take_faults(first);
 }
 
-void Stepper::tell_faults(std::size_t first) {
-  if (observer_ == nullptr) return;
+void Stepper::take_faults(std::size_t first) {
   for (std::size_t i = first; i < faults_.applied().size(); ++i) {
-    observer_->on_event(model_, state_, fault_event(faults_.applied()[i]));
+    apply_fault_effect(model_, state_, faults_.applied()[i]);
+    if (observer_ != nullptr) {
+      observer_->on_event(model_, state_, fault_event(faults_.applied()[i]));
+    }
   }
 }
 
@@ -43,6 +47,7 @@ void Stepper::step() {
   apply_due_faults();
   if (before_step_) before_step_(*this);
   sim_step(model_, state_);
+  advance_sensor(model_, state_);
   ++walked_;
   if (record_ != nullptr) append_record(model_, state_, record_joints_, *record_);
   if (observer_ != nullptr) observer_->on_step(model_, state_);
@@ -52,10 +57,11 @@ void Stepper::steps(long n) {
   for (long i = 0; i < n; ++i) step();
 }
 
-void Stepper::set_failed(const std::vector<std::size_t>& legs, bool failed) {
+void Stepper::apply_now(Fault fault) {
+  fault.step = walked_;
   const std::size_t first = faults_.applied().size();
-  faults_.apply_now(model_.controller.morphology, Fault{walked_, legs, !failed}, state_.controller);
-  tell_faults(first);
+  faults_.apply_now(fault, state_.controller);
+  take_faults(first);
 }
 
 StepperCheckpoint Stepper::checkpoint() const {
@@ -76,6 +82,11 @@ void Stepper::emit(Event event) {
 Pose2 Stepper::pose() const {
   const Position p = trunk_position(model_, state_);
   return {p.x, p.y, trunk_yaw_deg(model_, state_)};
+}
+
+Pose2 Stepper::sensed_pose() const {
+  const Position p = trunk_position(model_, state_);
+  return {p.x, p.y, sensed_yaw_deg(model_, state_)};
 }
 
 }  // namespace multicpg::sim

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -27,6 +28,8 @@ struct StartSpec {
   std::vector<int> periods;  // one per leg; empty = every leg 4. Unequal periods free the clients
   // Controller steps run alone before the physics starts; 0 = a cold controller (--cold).
   long warmup = kControllerWarmup;
+  // The run's random stream: a noisy sensor's draws (sim/fault_effects.h).
+  std::uint64_t seed = 1;
 };
 
 // Sees every step and every event of a run; the default does nothing.
@@ -59,10 +62,11 @@ class Stepper {
   void steps(long n);
   // Tells the observer (the learner's detections, trials and episodes).
   void emit(Event event);
-  // Legs fail (or work again) now, before the next step, told to the observer like a scheduled
-  // fault. Throws BadInput (sim::validate's message) for a leg that has already failed, one that
-  // has not failed, or failing every leg. Scheduled faults still come as planned.
-  void set_failed(const std::vector<std::size_t>& legs, bool failed);
+  // A fault (or recovery) now, before the next step (its step is set to it), told to the
+  // observer like a scheduled one. Throws BadInput (sim::validate's message) when it cannot
+  // happen now (a leg that has already failed, a recovery of what is not struck, failing every
+  // leg). Scheduled faults still come as planned.
+  void apply_now(Fault fault);
   // A deep copy of the run (copy_sim_state and the fault bookkeeping), and back: after restore
   // the stepper continues exactly as it did from the checkpoint. The checkpoint must come from a
   // stepper of the same model; the record (if any) is not rewound.
@@ -78,14 +82,19 @@ class Stepper {
   long step_count() const {
     return walked_;
   }  // controller steps since the start (warm-up excluded)
+  // The trunk's true pose.
   Pose2 pose() const;
+  // The pose as the robot senses it: the true position (odometry) and the yaw its sensor reads
+  // (sim::sensed_yaw_deg: a drifting or noisy sensor's error included). What the learner and the
+  // steering reflex see.
+  Pose2 sensed_pose() const;
   // The run's faults: the timeline, what has come, the legs failed now.
   const FaultSchedule& faults() const { return faults_; }
 
  private:
   void apply_due_faults();
-  // Shows the observer the faults that came from `first` on.
-  void tell_faults(std::size_t first);
+  // Applies the physics of the faults that came from `first` on and shows them to the observer.
+  void take_faults(std::size_t first);
 
   const SimModel& model_;
   SimState state_;

@@ -8,6 +8,9 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "report/render.h"
 
 namespace multicpg::testing {
 
@@ -41,16 +44,20 @@ struct DataDeleter {
 using ModelPtr = std::unique_ptr<mjModel, ModelDeleter>;
 using DataPtr = std::unique_ptr<mjData, DataDeleter>;
 
+// The leg's shank in a fault's colour (red), as films draw a disabled leg.
+inline std::vector<report::GeomColour> red_leg(const mjModel* m) {
+  return {{mj_name2id(m, mjOBJ_GEOM, "shank"), {0.85F, 0.08F, 0.08F, 1.0F}}};
+}
+
 // MuJoCo 2.2 loads XML only from files, so the text goes through a virtual file system.
-inline ModelPtr load_render_test_model() {
+inline ModelPtr load_render_test_model(const char* xml = kRenderTestModel) {
   constexpr const char* kFile = "render-test.xml";
   constexpr int kErrorLength = 1000;
   mjVFS vfs;
   mj_defaultVFS(&vfs);
-  const int size = static_cast<int>(std::strlen(kRenderTestModel));
+  const int size = static_cast<int>(std::strlen(xml));
   if (mj_makeEmptyFileVFS(&vfs, kFile, size) != 0) throw std::runtime_error("VFS is full");
-  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, kFile)], kRenderTestModel,
-              static_cast<std::size_t>(size));
+  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, kFile)], xml, static_cast<std::size_t>(size));
   char error[kErrorLength] = "";
   mjModel* model = mj_loadXML(kFile, &vfs, error, kErrorLength);
   mj_deleteVFS(&vfs);

@@ -111,7 +111,7 @@ TEST_F(RenderTest, FrameShowsTheRobotWithTheRedLegRed) {
   }
   const CameraSpec camera;
   const Image plain = render_frame(renderer, model_.get(), data_.get(), camera, {});
-  const Image red = render_frame(renderer, model_.get(), data_.get(), camera, {"R1_"});
+  const Image red = render_frame(renderer, model_.get(), data_.get(), camera, red_leg(model_.get()));
   ASSERT_EQ(plain.width, kDefaultFrameWidth);
   ASSERT_EQ(plain.height, kDefaultFrameHeight);
   ASSERT_EQ(red.rgb.size(), 3U * kDefaultFrameWidth * kDefaultFrameHeight);
@@ -173,7 +173,9 @@ TEST_F(RenderTest, OtherSizesAndBadInput) {
   CameraSpec nowhere;
   nowhere.track_body = "no_such_body";
   EXPECT_THROW(render_frame(renderer, model_.get(), data_.get(), nowhere, {}), multicpg::BadInput);
-  auto other = load_render_test_model();
+  // A model of other parts (a reshaped copy of the renderer's own is drawn, sim/fault_effects.h).
+  auto other = load_render_test_model(
+      R"(<mujoco><worldbody><geom type="sphere" size="0.1"/></worldbody></mujoco>)");
   EXPECT_THROW(render_frame(renderer, other.get(), data_.get(), CameraSpec{}, {}),
                multicpg::BadInput);
   EXPECT_THROW(Renderer(nullptr), multicpg::BadInput);
@@ -198,7 +200,8 @@ TEST_F(RenderTest, VideoHasEveryFrame) {
   for (int i = 0; i < kVideoFrames; ++i) {
     data_->qpos[0] += 0.02;
     mj_forward(model_.get(), data_.get());
-    video.add_frame(render_frame(renderer, model_.get(), data_.get(), CameraSpec{}, {"R1_"}));
+    video.add_frame(
+        render_frame(renderer, model_.get(), data_.get(), CameraSpec{}, red_leg(model_.get())));
   }
   EXPECT_FALSE(fs::exists(mp4)) << "the video must appear only when finished";
   video.finish();

@@ -277,7 +277,7 @@ TEST(Stepper, RestoredCheckpointContinuesIdentically) {
   const sim::StepperCheckpoint saved = stepper.checkpoint();
   const auto walk_on = [&] {
     stepper.steps(30);
-    stepper.set_failed({4}, true);  // L2, now
+    stepper.apply_now({0, {4}, false});  // L2, now
     stepper.steps(40);
     return stepper.pose();
   };
@@ -296,10 +296,10 @@ TEST(Stepper, RestoredCheckpointContinuesIdentically) {
 TEST(Stepper, LegsFailAndRecoverNowOrSayWhyNot) {
   const sim::SimModel& m = model(RobotKind::hexapod);
   sim::Stepper stepper(m, {{}, 0}, {{0, {0}, false}});
-  EXPECT_THROW(stepper.set_failed({0}, true), BadInput);              // already failed
-  EXPECT_THROW(stepper.set_failed({1}, false), BadInput);             // has not failed
-  EXPECT_THROW(stepper.set_failed({1, 2, 3, 4, 5}, true), BadInput);  // every leg
-  stepper.set_failed({0}, false);
+  EXPECT_THROW(stepper.apply_now({0, {0}, false}), BadInput);              // already failed
+  EXPECT_THROW(stepper.apply_now({0, {1}, true}), BadInput);             // has not failed
+  EXPECT_THROW(stepper.apply_now({0, {1, 2, 3, 4, 5}, false}), BadInput);  // every leg
+  stepper.apply_now({0, {0}, true});
   EXPECT_FALSE(stepper.state().controller.legs[0].disabled);
   EXPECT_FALSE(stepper.faults().failed(0));
 }
