@@ -26,6 +26,7 @@ struct ExperimentOptions {
   LearningFlags learning;
   long check_windows = 0;
   sim::SimOptions sim;
+  BodyFlags body;
 };
 
 experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
@@ -39,7 +40,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
   spec.base =
       compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
   spec.check_windows = o.check_windows;
-  spec.sim = sim_options(o.sim);
+  spec.sim = sim_options(o.sim, o.body, kind);
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
 }
@@ -71,7 +72,7 @@ void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with
                  "whether every one held (holds_after)")
       ->check(in(experiments::kCheckWindowsLimits))
       ->capture_default_str();
-  add_sim_flags(cmd, o.sim);
+  add_sim_flags(cmd, o.sim, o.body);
 }
 
 }  // namespace

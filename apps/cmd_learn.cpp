@@ -27,6 +27,7 @@ struct LearnOptions {
   WalkFlags faults;  // only the fault flags are declared
   LearningFlags learning;
   sim::SimOptions sim;
+  BodyFlags body;
   bool json = false;
   std::string out;
 };
@@ -108,7 +109,7 @@ void run_learn(const LearnOptions& o) {
       compensation_options(o.learning, morph, parse_faults(morph, o.faults));
   const std::vector<std::size_t> failing = learning::failing_legs(options);
   if (!o.out.empty()) ensure_writable_dir(o.out);
-  const sim::SimModel model = sim::make_sim_model(kind, sim_options(o.sim));
+  const sim::SimModel model = sim::make_sim_model(kind, sim_options(o.sim, o.body, kind));
 
   const experiments::LearningRun run =
       experiments::run_learning(model, options, /*record=*/!o.out.empty());
@@ -162,7 +163,7 @@ void register_learn(CLI::App& app) {
   cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
   add_fault_flags(*cmd, opts->faults);
   add_learning_flags(*cmd, opts->learning);
-  add_sim_flags(*cmd, opts->sim);
+  add_sim_flags(*cmd, opts->sim, opts->body);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");

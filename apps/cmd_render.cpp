@@ -22,6 +22,7 @@ struct RenderOptions {
   bool tunnel = false;
   LearningFlags learning;
   sim::SimOptions sim;
+  BodyFlags body;
   std::string out;
   int width = report::kDefaultFrameWidth;
   int height = report::kDefaultFrameHeight;
@@ -36,7 +37,7 @@ void run_render(const RenderOptions& o) {
   std::optional<learning::CompensationOptions> learn;
   if (o.learn) learn = compensation_options(o.learning, morph, choice.faults);
 
-  sim::SimOptions sim_opts = sim_options(o.sim);
+  sim::SimOptions sim_opts = sim_options(o.sim, o.body, kind);
   sim_opts.scene.tunnel = o.tunnel;
   const sim::SimModel model = sim::make_sim_model(kind, sim_opts);
   report::FilmSpec spec;
@@ -87,7 +88,7 @@ void register_render(CLI::App& app) {
   cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
   add_learning_flags(*cmd, o->learning);
-  add_sim_flags(*cmd, o->sim);
+  add_sim_flags(*cmd, o->sim, o->body);
   cmd->add_option("--width", o->width, "frame width in pixels")
       ->check(in(report::kFrameSideLimits))
       ->capture_default_str();

@@ -72,7 +72,7 @@ void register_tunnel(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--video", o->request.video, "also film the run to FILE.mp4");
   cmd->add_flag("--json", o->json, "print one JSON object");
-  add_sim_flags(*cmd, o->request.sim);
+  add_sim_flags(*cmd, o->request.sim, o->request.body);
   cmd->callback([o, periods] { run_tunnel(*o, periods->count() > 0); });
 }
 

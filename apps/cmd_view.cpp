@@ -4,6 +4,7 @@
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "apps/options.h"
+#include "apps/sim_flags.h"
 #include "apps/walk_flags.h"
 #include "common/errors.h"
 #include "report/viewer.h"
@@ -15,6 +16,7 @@ namespace {
 
 struct ViewOptions {
   WalkFlags walk;
+  BodyFlags body;
   long steps = 0;  // only read when --steps is given
 };
 
@@ -35,7 +37,8 @@ void run_view(const ViewOptions& o, bool steps_given) {
     spec.steps = o.steps;
   }
 
-  const sim::SimModel model = sim::make_sim_model(choice.kind);
+  const sim::SimModel model =
+      sim::make_sim_model(choice.kind, sim_options({}, o.body, choice.kind));
   const long steps = report::run_viewer(model, spec);
   std::cout << "viewed " << steps << " steps (" << static_cast<double>(steps) * model.control_dt
             << " s simulated)\n";
@@ -48,6 +51,7 @@ void register_view(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "watch the robot walk in a window (Space pause, Right step, 1-8 legs, S sync)");
   add_walk_flags(*cmd, opts->walk);
+  add_body_flags(*cmd, opts->body);
   CLI::Option* steps = cmd->add_option("--steps", opts->steps, "quit after this many steps")
                            ->check(in(sim::kRunStepsLimits));
   cmd->callback([opts, steps] { run_view(*opts, steps->count() > 0); });

@@ -31,6 +31,7 @@ struct WalkOptions {
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
   sim::SimOptions sim;
+  BodyFlags body;
   std::string csv;
   bool json = false;
 };
@@ -119,7 +120,7 @@ void run_walk(const WalkOptions& o) {
   spec.steps = o.steps;
   spec.window = o.window;
   spec.record = !o.csv.empty();
-  const sim::SimOptions sim_opts = sim_options(o.sim);
+  const sim::SimOptions sim_opts = sim_options(o.sim, o.body, kind);
   std::optional<AtomicFile> csv;
   if (!o.csv.empty()) csv.emplace(o.csv);
 
@@ -156,7 +157,7 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--window", opts->window, "steps per yaw-deviation window (SPEC §6)")
       ->check(in(learning::kWindowStepsLimits))
       ->capture_default_str();
-  add_sim_flags(*cmd, opts->sim);
+  add_sim_flags(*cmd, opts->sim, opts->body);
   cmd->add_option("--csv", opts->csv,
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");

@@ -24,7 +24,7 @@ TunnelOutcome run_tunnel_command(const TunnelRequest& o, sim::Observer* learning
   if (!o.video.empty() && report::film_format(o.video) != report::FilmFormat::video) {
     throw BadInput("--video must name an .mp4 file");
   }
-  const sim::SimOptions open_options = sim_options(o.sim);
+  const sim::SimOptions open_options = sim_options(o.sim, o.body, robot::RobotKind::hexapod);
   sim::SimOptions options = open_options;
   options.scene.tunnel = true;
   const sim::SimModel model = sim::make_sim_model(robot::RobotKind::hexapod, options);

@@ -23,6 +23,7 @@ struct TunnelRequest {
   long max_steps = experiments::kTunnelMaxSteps;
   std::string video;  // .mp4 to film the tunnel walk; empty = none
   sim::SimOptions sim;
+  BodyFlags body;
 };
 
 struct TunnelOutcome {

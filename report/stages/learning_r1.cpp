@@ -54,7 +54,7 @@ Table trace_table(const robot::Morphology& morph, const learning::LearningResult
 }  // namespace
 
 Section learning_r1_stage(const StageContext& ctx) {
-  const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod);
+  const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod, ctx.options.sim);
   const robot::Morphology& morph = hexapod.controller.morphology;
   const std::size_t legs = morph.size();
   learning::CompensationOptions options;

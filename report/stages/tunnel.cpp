@@ -67,7 +67,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   // Issue 8: robust learning (learn --mode robust) in the open field from a walking robot, then
   // its periods and steering reflex through the tunnel.
   {
-    const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod);
+    const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod, ctx.options.sim);
     learning::CompensationOptions robust;
     robust.disabled = disabled;
     robust.seed = ctx.options.seed;
@@ -120,7 +120,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
 }  // namespace
 
 Section tunnel_stage(const StageContext& ctx) {
-  sim::SimOptions with_tunnel;
+  sim::SimOptions with_tunnel = ctx.options.sim;
   with_tunnel.scene.tunnel = true;
   const sim::SimModel corridor = sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
   const experiments::ExperimentTable hexapod =
