@@ -26,6 +26,7 @@ struct ExperimentOptions {
   LearningFlags learning;
   long check_windows = 0;
   sim::SimOptions sim;
+  BodyFlags body;
 };
 
 experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
@@ -37,7 +38,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
   spec.out = o.out;
   spec.base = learning_options(o.learning);  // checked with each run (resolve_sweep)
   spec.check_windows = o.check_windows;
-  spec.sim = sim_options(o.sim);
+  spec.sim = sim_options(o.sim, o.body, kind);
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
 }
@@ -69,7 +70,7 @@ void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with
                  "whether every one held (holds_after)")
       ->check(in(experiments::kCheckWindowsLimits))
       ->capture_default_str();
-  add_sim_flags(cmd, o.sim);
+  add_sim_flags(cmd, o.sim, o.body);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ struct LandscapeOptions {
   std::vector<int> period_set = learning::AnnealingParams{}.period_set;
   std::string learned;
   sim::SimOptions sim;
+  BodyFlags body;
 };
 
 std::vector<learning::Periods> read_learned(const std::string& path,
@@ -56,7 +57,7 @@ void run(const LandscapeOptions& o) {
   spec.period_set = o.period_set;
   spec.windows = o.windows;
   spec.threshold_deg = o.threshold;
-  spec.sim = sim_options(o.sim);
+  spec.sim = sim_options(o.sim, o.body, spec.kind);
   experiments::validate(spec);
   if (o.jobs && *o.jobs < 1) {
     throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
@@ -123,7 +124,7 @@ void register_landscape(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--learned", o->learned,
                   "JSON array of learned combinations ({leg: period} objects) to mark");
-  add_sim_flags(*cmd, o->sim);
+  add_sim_flags(*cmd, o->sim, o->body);
   cmd->callback([o] { run(*o); });
 }
 

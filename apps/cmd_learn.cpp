@@ -159,7 +159,7 @@ void register_learn(CLI::App& app) {
   add_robot_flag(*cmd, opts->run);
   add_fault_flags(*cmd, opts->run);
   add_learning_flags(*cmd, opts->run.learning);
-  add_sim_flags(*cmd, opts->run.sim);
+  add_sim_flags(*cmd, opts->run.sim, opts->run.body);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");

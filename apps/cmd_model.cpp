@@ -1,9 +1,16 @@
-// multicpg model: print the MJCF of a robot, as the simulation compiles it (SPEC §7).
+// multicpg model: print the MJCF of a robot, as the simulation compiles it (SPEC §7), or the
+// named body models with every value and its source.
+#include <fmt/format.h>
+
+#include <iomanip>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
+#include "robot/body_json.h"
+#include "robot/body_models.h"
 
 namespace multicpg::apps {
 namespace {
@@ -11,13 +18,53 @@ namespace {
 struct ModelOptions {
   std::string robot = "hexapod";
   bool tunnel = false;
+  bool list = false;
   sim::SimOptions sim;
+  BodyFlags body;
   std::string out;
 };
 
+std::string number(const nlohmann::json& v) {
+  return fmt::format("{:.6g}", v.get<double>());
+}
+
+// A parameter's value as the listing shows it: numbers to 6 digits, postures as TC,CTr,FTi.
+std::string value_text(const nlohmann::json& v) {
+  if (v.is_array()) {
+    if (v.empty()) return "none";
+    std::string out;
+    for (const nlohmann::json& e : v) out += (out.empty() ? "" : "; ") + e.dump();
+    return out;
+  }
+  if (v.is_object())
+    return number(v.at("tc")) + "," + number(v.at("ctr")) + "," + number(v.at("fti"));
+  return number(v);
+}
+
+// Every model, every value, its unit and its source (robot/body_models.h).
+void print_models(std::ostream& out) {
+  for (robot::BodyModel m : robot::kBodyModels) {
+    out << robot::to_string(m) << (m == robot::kDefaultBodyModel ? " (default)" : "") << ": "
+        << robot::describe(m) << "\n";
+    const nlohmann::json values = robot::body_params(m);
+    for (std::string_view key : robot::parameter_keys()) {
+      const std::string k(key);
+      const std::string shown =
+          value_text(values.at(k)) + " " + std::string(robot::value_unit(key));
+      out << "  " << std::left << std::setw(20) << k << std::setw(22) << shown << "  "
+          << robot::value_source(m, key) << "\n";
+    }
+    out << "\n";
+  }
+}
+
 void run_model(const ModelOptions& o) {
+  if (o.list) {
+    print_models(std::cout);
+    return;
+  }
   const robot::RobotKind kind = robot::parse_robot(o.robot);
-  sim::SimOptions options = sim_options(o.sim);
+  sim::SimOptions options = sim_options(o.sim, o.body, kind);
   options.scene.tunnel = o.tunnel;
   const std::string xml = sim::model_xml(kind, options);
   if (o.out.empty()) {
@@ -31,10 +78,13 @@ void run_model(const ModelOptions& o) {
 
 void register_model(CLI::App& app) {
   auto opts = std::make_shared<ModelOptions>();
-  CLI::App* cmd = app.add_subcommand("model", "print a robot's MuJoCo model (MJCF)");
+  CLI::App* cmd = app.add_subcommand(
+      "model", "print a robot's MuJoCo model (MJCF), or with --list the body models");
   cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
   cmd->add_flag("--tunnel", opts->tunnel, "add the 3.0 m x 1.2 m corridor of paper §5");
-  add_sim_flags(*cmd, opts->sim, /*with_servo=*/false);
+  cmd->add_flag("--list", opts->list,
+                "list the body models (--model) with every parameter's value and source");
+  add_sim_flags(*cmd, opts->sim, opts->body, /*with_servo=*/false);
   cmd->add_option("--out", opts->out, "write the MJCF to this file instead of printing it");
   cmd->callback([opts] { run_model(*opts); });
 }

@@ -78,7 +78,7 @@ void register_render(CLI::App& app) {
   cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
   add_learning_flags(*cmd, o->run.learning);
-  add_sim_flags(*cmd, o->run.sim);
+  add_sim_flags(*cmd, o->run.sim, o->run.body);
   cmd->add_option("--width", o->width, "frame width in pixels")
       ->check(in(report::kFrameSideLimits))
       ->capture_default_str();

@@ -5,6 +5,7 @@
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
+#include "apps/sim_flags.h"
 #include "common/errors.h"
 #include "experiments/runner.h"
 #include "report/figures.h"
@@ -27,6 +28,7 @@ void register_reproduce(CLI::App& app) {
   struct Options {
     report::ReproduceOptions run;
     std::optional<int> jobs;
+    BodyFlags body;
   };
   auto o = std::make_shared<Options>();
   CLI::App* cmd = app.add_subcommand(
@@ -39,11 +41,15 @@ void register_reproduce(CLI::App& app) {
   cmd->add_option("--seed", o->run.seed, "base seed of every learning run")
       ->check(seed_value())
       ->capture_default_str();
+  add_body_flags(*cmd, o->body);
   cmd->callback([o] {
     if (o->jobs && *o->jobs < 1) {
       throw BadInput("--jobs must be at least 1, got " + std::to_string(*o->jobs));
     }
     o->run.jobs = o->jobs.value_or(0);
+    // One body for every stage: the hexapod's and the quadruped's experiments.
+    sim_options({}, o->body, robot::RobotKind::quadruped);
+    o->run.sim = sim_options({}, o->body, robot::RobotKind::hexapod);
     report::reproduce(o->run);
     std::cout << "open " << (o->run.out / "index.html").string() << "\n";
   });

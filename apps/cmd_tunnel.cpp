@@ -93,7 +93,7 @@ void register_tunnel(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
   cmd->add_flag("--json", o->json, "print one JSON object");
-  add_sim_flags(*cmd, o->run.sim);
+  add_sim_flags(*cmd, o->run.sim, o->run.body);
   cmd->callback([o, periods] { run_tunnel(*o, periods->count() > 0); });
 }
 

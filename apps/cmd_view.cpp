@@ -5,6 +5,7 @@
 #include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/run_flags.h"
+#include "apps/sim_flags.h"
 #include "common/errors.h"
 #include "report/viewer.h"
 #include "sim/sim.h"
@@ -48,6 +49,7 @@ void register_view(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "view", "watch the robot walk in a window (Space pause, Right step, 1-8 legs, S sync)");
   add_walk_flags(*cmd, opts->run);
+  add_body_flags(*cmd, opts->run.body);
   CLI::Option* steps = cmd->add_option("--steps", opts->steps, "quit after this many steps")
                            ->check(in(sim::kRunStepsLimits));
   cmd->callback([opts, steps] { run_view(*opts, steps->count() > 0); });

@@ -163,7 +163,7 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--window", opts->window, "steps per yaw-deviation window (SPEC §6)")
       ->check(in(learning::kWindowStepsLimits))
       ->capture_default_str();
-  add_sim_flags(*cmd, opts->run.sim);
+  add_sim_flags(*cmd, opts->run.sim, opts->run.body);
   cmd->add_option("--csv", opts->csv,
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");

@@ -102,6 +102,7 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
   };
   if (key == "faults") return fault_flags(f);
   if (const auto it = kFlags.find(key); it != kFlags.end()) return it->second;
+  if (key.rfind("sim.", 0) == 0) return sim_flag(key.substr(4));
   // sim.control_dt -> --control-dt, learning.hold_windows -> --hold-windows, steps -> --steps
   std::string flag = "--" + key.substr(key.find('.') + 1);
   std::replace(flag.begin(), flag.end(), '_', '-');
@@ -112,7 +113,7 @@ experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   experiments::RunSpec spec;
   spec.robot = robot::parse_robot(f.robot);
   const robot::Morphology& morph = robot::morphology(spec.robot);
-  spec.sim = f.sim;
+  spec.sim = with_body(f.sim, f.body);
   spec.faults = parse_faults(morph, f);
   if (learn) {
     spec.learning = learning_options(f.learning);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/learning_options.h"
+#include "apps/sim_flags.h"
 #include "experiments/run_spec.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
@@ -25,6 +26,7 @@ struct RunFlags {
   std::vector<std::string> recoveries;  // --recover LEGS@STEP, repeatable
   LearningFlags learning;
   sim::SimOptions sim;
+  BodyFlags body;  // the body model and parameters over it (apps/sim_flags.h)
 };
 
 // --robot.

@@ -25,7 +25,7 @@ sim::SimModel make_run_model(const RunSpec& spec) {
 
 void validate(const RunSpec& spec) {
   const robot::Morphology& morph = morphology(spec);
-  within("sim", [&] { sim::validate(spec.sim); });
+  within("sim", [&] { sim::validate(spec.sim, spec.robot); });
   const std::vector<int>& periods = spec.start.periods;
   if (!periods.empty() && periods.size() != morph.size()) {
     throw OptionError("start.periods", "the " + morph.name + " takes " +

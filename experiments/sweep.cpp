@@ -16,6 +16,7 @@
 #include "experiments/processes.h"
 #include "experiments/scenarios.h"
 #include "learning/json.h"
+#include "robot/body_models.h"
 #include "robot/leg_sets.h"
 #include "sim/fault_spec.h"
 #include "sim/json.h"
@@ -82,7 +83,7 @@ void check_type(const json& value, const json& def, const std::string& path) {
       check_type(value[i], def.front(), indexed(path, i));
     }
   } else if (def.is_object()) {
-    throw wrong();
+    if (!value.is_object()) throw wrong();  // an element of a list of tables
   }
 }
 
@@ -448,8 +449,32 @@ std::vector<std::string> axis_names(const std::vector<GridAxis>& grid) {
   return names;
 }
 
-void check_sim(const sim::SimOptions& options) {
-  within("sim", [&] { sim::validate(options); });
+void check_sim(const sim::SimOptions& options, robot::RobotKind kind) {
+  within("sim", [&] { sim::validate(options, kind); });
+}
+
+// The defaults [sim] is merged onto: the simulation's, with the body of the document's
+// sim.model (a model supplies the body, [sim.body] keys override it).
+json sim_defaults(const json& doc) {
+  sim::SimOptions defaults;
+  const json section = doc.value("sim", json::object());
+  if (section.is_object() && section.contains("model")) {
+    const json& name = section.at("model");
+    if (name.is_array()) {
+      throw OptionError("sim.model",
+                        "takes one model per experiment (one file per model), got " + name.dump());
+    }
+    if (!name.is_string()) {
+      throw OptionError("sim.model", "must be a model name (a string), got " + name.dump());
+    }
+    try {
+      defaults.model = robot::parse_body_model(name.get<std::string>());
+    } catch (const BadInput& e) {
+      throw OptionError("sim.model", e.what());
+    }
+    defaults.body = robot::body_params(defaults.model);
+  }
+  return defaults;
 }
 
 // OUT/experiment.json's arguments, if OUT holds an experiment.
@@ -607,8 +632,9 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind) {
   spec.windows = landscape.at("windows").get<int>();
   spec.window_steps = landscape.at("window_steps").get<long>();
   spec.threshold_deg = landscape.at("threshold_deg").get<double>();
-  json sim_doc = sim::SimOptions{};
-  merge_checked(doc.value("sim", json::object()), json(sim::SimOptions{}), "sim", sim_doc, grid);
+  const json sim_default = sim_defaults(doc);
+  json sim_doc = sim_default;
+  merge_checked(doc.value("sim", json::object()), sim_default, "sim", sim_doc, grid);
   refuse_grid(grid);
   spec.sim = options_from<sim::SimOptions>(sim_doc, "sim");
   try {
@@ -618,7 +644,7 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind) {
   } catch (const BadInput& e) {
     throw OptionError("landscape", e.what());
   }
-  check_sim(spec.sim);
+  check_sim(spec.sim, kind);
   Sweep sweep;
   sweep.robot = kind;
   sweep.resolved = {{"kind", "landscape"},
@@ -712,9 +738,9 @@ Sweep resolve_sweep(const json& doc) {
   json learning = learning_document(learning::CompensationOptions{}, 0);
   merge_checked(doc.value("learning", json::object()), json(learning), "learning", learning,
                 sweep.grid, kPerRunLearningKeys);
-  json sim_doc = sim::SimOptions{};
-  merge_checked(doc.value("sim", json::object()), json(sim::SimOptions{}), "sim", sim_doc,
-                sweep.grid);
+  const json sim_default = sim_defaults(doc);
+  json sim_doc = sim_default;
+  merge_checked(doc.value("sim", json::object()), sim_default, "sim", sim_doc, sweep.grid);
 
   const json record_in = doc.value("record", json::object());
   if (!record_in.is_object()) throw OptionError("record", "must be a table");
@@ -771,7 +797,7 @@ Sweep resolve_sweep(const json& doc) {
     learning_point.erase(kFailStepKey);
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(sim_point, "sim");
-    if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options);
+    if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options, sweep.robot);
     for (const ScenarioSpec& s : scenarios) {
       RunSpec spec;
       spec.robot = sweep.robot;

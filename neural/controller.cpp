@@ -74,7 +74,7 @@ void step_delay_lines(const ControllerModel& model, ControllerState& state) {
 void map_joint_commands(const ControllerModel& model, ControllerState& state) {
   for (std::size_t i = 0; i < state.legs.size(); ++i) {
     LegState& leg = state.legs[i];
-    leg.command = leg.disabled ? kDisabledPosture : model.legs[i].map(leg.delayed.pre);
+    leg.command = leg.disabled ? model.legs[i].disabled : model.legs[i].map(leg.delayed.pre);
   }
 }
 
@@ -102,15 +102,19 @@ void validate(const ControllerParams& params) {
   }
 }
 
-ControllerModel make_controller_model(robot::RobotKind kind, const ControllerParams& params) {
+ControllerModel make_controller_model(robot::RobotKind kind, const ControllerParams& params,
+                                      const robot::BodyParams& body) {
   ControllerModel model{robot::morphology(kind), params, {}};
   const robot::Morphology& morph = model.morphology;
-  for (const robot::Leg& leg : morph.legs) {
+  const std::vector<robot::LegPosture> postures = robot::disabled_postures(body, morph);
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    const robot::Leg& leg = morph.legs[i];
     LegCircuit c;
     c.delay = leg_delay(params.delays, morph.legs_per_side, leg.position, leg.side == Side::left);
     c.front = leg.type == LegType::front;
     c.hind = leg.type == LegType::hind;
-    c.map = leg_motor_map(kind, leg.type);
+    c.map = leg_motor_map(kind, leg.type, body.lift_body);
+    c.disabled = {postures[i].tc, postures[i].ctr, postures[i].fti};
     model.legs.push_back(c);
   }
   return model;

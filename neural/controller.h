@@ -12,6 +12,7 @@
 #include "neural/postprocessing.h"
 #include "neural/psn.h"
 #include "neural/vrn.h"
+#include "robot/body_params.h"
 #include "robot/morphology.h"
 
 namespace multicpg::neural {
@@ -32,6 +33,7 @@ struct LegCircuit {
   bool front = false;
   bool hind = false;
   LegMotorMap map;
+  MotorCommands disabled;  // what the leg's joints hold while it is disabled (SPEC §4)
 };
 
 // What the controller is: immutable once made, shared by any number of states.
@@ -54,7 +56,11 @@ inline constexpr int kMaxDelayStep = 1000;
 // kMaxParamMagnitude, or a delay step outside 0..kMaxDelayStep.
 void validate(const ControllerParams& params);
 
-ControllerModel make_controller_model(robot::RobotKind kind, const ControllerParams& params = {});
+// The controller of `kind` with `params`; `body` gives each leg's disabled posture and the body
+// lift of its motor maps (robot/body_params.h). Throws OptionError ("leg_postures[0].leg") for a
+// posture of a leg the robot does not have.
+ControllerModel make_controller_model(robot::RobotKind kind, const ControllerParams& params = {},
+                                      const robot::BodyParams& body = {});
 
 // What one leg's circuit is doing.
 struct LegState {
@@ -67,7 +73,7 @@ struct LegState {
   DelayedSignals delayed;  // after the delay and shaping
   MotorCommands command;   // to the joints, m in [-1, 1]
   double alpha = 0.0;      // synchronisation to the master (paper Eq. 5); unused on the master
-  bool disabled = false;   // holds kDisabledPosture (SPEC §4)
+  bool disabled = false;   // holds its circuit's disabled posture (SPEC §4)
 };
 
 // What the controller is doing.

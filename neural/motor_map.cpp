@@ -1,5 +1,9 @@
 #include "neural/motor_map.h"
 
+#include <numbers>
+
+#include "robot/joint_map.h"
+
 namespace multicpg::neural {
 namespace {
 
@@ -33,9 +37,18 @@ Window tc_window(RobotKind kind, LegType type) {
 
 }  // namespace
 
-LegMotorMap leg_motor_map(RobotKind kind, LegType type) {
+LegMotorMap leg_motor_map(RobotKind kind, LegType type, double lift_body_deg) {
   const Window w = tc_window(kind, type);
-  return LegMotorMap{LinearMap{-kTcPreRange, kTcPreRange, w.lo, w.hi}, kCtrMap, kFtiMap};
+  const double lift = lift_body_deg * std::numbers::pi / 180.0;
+  LinearMap ctr = kCtrMap;
+  const double ctr_shift = robot::command_change(type, robot::Joint::CTr, -lift);
+  ctr.to_lo += ctr_shift;
+  ctr.to_hi += ctr_shift;
+  LinearMap fti = kFtiMap;
+  const double fti_shift = robot::command_change(type, robot::Joint::FTi, lift);
+  fti.to_lo += fti_shift;
+  fti.to_hi += fti_shift;
+  return LegMotorMap{LinearMap{-kTcPreRange, kTcPreRange, w.lo, w.hi}, ctr, fti};
 }
 
 }  // namespace multicpg::neural

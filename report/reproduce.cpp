@@ -20,6 +20,7 @@
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "report/stages/stage.h"
+#include "sim/json.h"
 
 namespace multicpg::report {
 namespace {
@@ -154,6 +155,9 @@ class Reproduction {
                "Ren et al., \"Multiple chaotic central pattern generators with learning "
                "for legged locomotion and malfunction compensation\", Information "
                "Sciences 2015, reproduced with multicpg in MuJoCo") +
+           (o_.sim.model == robot::kDefaultBodyModel
+                ? ""
+                : " with the body model " + std::string(robot::to_string(o_.sim.model))) +
            (o_.quick ? " (quick run: one learning run per scenario and per β, faster videos)"
                      : "") +
            ". Each section says what the paper reports and what we measured; every figure has "
@@ -172,7 +176,8 @@ class Reproduction {
 
   // A folder made with other options is not resumed (the sections would not match).
   void check_arguments() const {
-    const nlohmann::json args{{"quick", o_.quick}, {"seed", o_.seed}};
+    const nlohmann::json args{
+        {"quick", o_.quick}, {"seed", o_.seed}, {"model", o_.sim.model}, {"body", o_.sim.body}};
     const fs::path file = o_.out / "reproduce.json";
     if (fs::exists(file)) {
       std::ifstream in(file);
@@ -197,7 +202,10 @@ class Reproduction {
     in.quadruped = read_if_present("quadruped");
     in.beta = read_if_present("beta");
     if (!in.hexapod && !in.quadruped && !in.beta) return;
-    in.command = "multicpg reproduce --out " + o_.out.string() + (o_.quick ? " --quick" : "");
+    in.command = "multicpg reproduce --out " + o_.out.string() + (o_.quick ? " --quick" : "") +
+                 (o_.sim.model == robot::kDefaultBodyModel
+                      ? ""
+                      : " --model " + std::string(robot::to_string(o_.sim.model)));
     write_file_atomic(o_.out / "results.md", experiments::results_markdown(in));
   }
 

@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "sim/sim.h"
+
 namespace multicpg::report {
 
 struct ReproduceOptions {
@@ -16,6 +18,9 @@ struct ReproduceOptions {
   bool quick = false;  // fewer runs and faster videos: minutes, not tens of minutes
   int jobs = 0;        // parallel learning runs and stages; 0 = every core
   std::uint64_t seed = 1;
+  // The simulation of every stage: its body model and parameters (--model and the Body flags);
+  // paper-sim, the paper's simulator, by default.
+  sim::SimOptions sim;
   bool progress = true;
   // Stages to run (stage ids, see reproduce_stages()); empty = all; the stages they need run
   // too. index.html shows those done.

@@ -8,11 +8,11 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // --- Trunk (reference §6.1 "Trunk", lpzrobots AmosII v2 at scale 1) ---
-constexpr double kTrunkLength = 0.43;   // hexapod, m
-constexpr double kTrunkWidth = 0.07;    // m
-constexpr double kTrunkHeight = 0.065;  // m
-constexpr double kFrontLength = 0.12;   // front box, m
-constexpr double kTrunkMass = 3.0;      // both boxes, kg (density 3.0 / (0.43 0.07 0.065))
+constexpr double kTrunkLength = 0.43;         // hexapod, m
+constexpr double kTrunkWidth = 0.07;          // m
+constexpr double kTrunkHeight = 0.065;        // m
+constexpr double kFrontLength = 0.12;         // front box, m
+constexpr double kTrunkMass = kSimTrunkMass;  // both boxes, kg (density 3.0 / (0.43 0.07 0.065))
 constexpr double kTrunkDensity = kTrunkMass / kTrunkLength;  // kg per m of trunk length
 constexpr double kBackboneLimit = kPi / 4.0;                 // +-45 deg
 
@@ -28,8 +28,8 @@ constexpr double kQuadHindLegX = -0.10;
 // --- Masses (reference §6.1 "Mass budget") ---
 // Total 5.758 / 2.2 x trunk mass = 7.8518 kg; the 4.8518 kg of legs are shared as
 // shoulder = coxa = femur = tibia = 4.8518 / 24 x 19/20 and foot = 4.8518 / 6 / 20.
-constexpr double kSegmentMass = 0.19205;  // kg
-constexpr double kFootMass = 0.040432;    // kg
+constexpr double kSegmentMass = kSimSegmentMass;  // kg
+constexpr double kFootMass = kSimFootMass;        // kg
 
 // --- Segments (reference §6.1 "Segments": lpzrobots Capsule(radius, cylinder length)) ---
 constexpr Capsule kShoulder{0.0129, 0.045, kSegmentMass};
@@ -39,10 +39,11 @@ constexpr Capsule kTibia{0.013, 0.087, kSegmentMass};
 constexpr Capsule kFoot{0.015, 0.013, kFootMass};
 
 // --- Servos (reference §6.1 "Servos") ---
-constexpr double kMaxVelocity = 1.7 * 1.961 * kPi;  // 10.47 rad/s
-constexpr double kServoGain = kMaxVelocity / 2.0;   // K = 5.2366 1/s (at the 0.1 s step)
-// coxaPower = 10 (1.962 / (0.035 2.2)) 0.035 3.0 = 26.75 N m; backPower is 30/10 of it.
-constexpr double kLegPower = 10.0 * (1.962 / (0.035 * 2.2)) * 0.035 * kTrunkMass;
+constexpr double kMaxVelocity = kSimServoSpeed;    // 10.47 rad/s
+constexpr double kServoGain = kMaxVelocity / 2.0;  // K = 5.2366 1/s (at the 0.1 s step)
+// coxaPower = 10 (1.962 / (0.035 2.2)) 0.035 3.0 = 26.75 N m; backPower is 30/10 of it. The
+// backbone is held at 0 and keeps its power whatever the leg servos are (BodyParams).
+constexpr double kLegPower = kSimServoTorque;
 constexpr double kBackPower = 3.0 * kLegPower;  // 80.26 N m
 constexpr double kFtiDamp = 0.01;
 // Gearbox rotor inertia reflected to the joint (the reference's ODE motors are constraints and
@@ -55,17 +56,19 @@ constexpr double kServoArmature = 0.01;  // kg m^2
 // footPower = (350 0.08 / 2.2) 3.0 / 0.08 = 477.3 N/m, KD 0.05, stops 2 mm apart, preload 0.08 m.
 constexpr FootSpring kFootSpring{(350.0 * 0.08 / 2.2) * kTrunkMass / 0.08, 0.05, 0.002, 0.08};
 constexpr double kContactSensorRadius = 0.01515;  // reference §6.1 "Foot contact sensor"
-// Reference §6.1 "Materials": mu = roughness product, 3.0 (robot) x 0.8 (ground) = 2.4.
-constexpr double kFriction = 2.4;
+// Passive coupling of each joint (paper §5: "a passive coupling is installed at each joint"): a
+// Kelvin-Voigt element whose damping is its stiffness times this relaxation time, a rubber-like
+// loss (docs/robots.md "Body parameters": the walk hardly depends on it).
+constexpr double kCouplingRelaxation = 0.005;  // s
 
 // The velocity loop's gain is the servo's stall torque over its no-load speed (ServoSpec).
-ServoSpec servo(double power, double damp) {
-  return {.max_velocity = kMaxVelocity,
+ServoSpec servo(double power, double damp, double max_velocity = kMaxVelocity) {
+  return {.max_velocity = max_velocity,
           .gain = kServoGain,
           .power = power,
           .damp = damp,
           .armature = kServoArmature,
-          .loop_gain = power / kMaxVelocity};
+          .loop_gain = power / max_velocity};
 }
 
 RobotBody common_body(RobotKind kind) {
@@ -84,7 +87,13 @@ RobotBody common_body(RobotKind kind) {
   b.fti_servo = servo(kLegPower, kFtiDamp);
   b.foot = kFootSpring;
   b.contact_sensor_radius = kContactSensorRadius;
-  b.friction = kFriction;
+  b.foot_friction = kSimFriction;
+  b.trunk_friction = kSimFriction;
+  b.slip = kMujocoFootSlip;
+  b.torsional_friction = 0.0;
+  b.rolling_friction = 0.0;
+  b.joint_compliance = 0.0;
+  b.coupling_damping = 0.0;
   b.yaw_part = 0;
   return b;
 }
@@ -134,6 +143,31 @@ const RobotBody& robot_body(RobotKind kind) {
   static const std::array<RobotBody, kRobotKinds.size()> bodies{
       amos_body(RobotKind::hexapod), quadruped_body(), amos_body(RobotKind::octopod)};
   return bodies[robot_index(kind)];
+}
+
+RobotBody robot_body(RobotKind kind, const BodyParams& params) {
+  RobotBody b = robot_body(kind);
+  // Ratios are exactly 1 at the defaults, so the paper-sim body is today's to the bit.
+  const double trunk_scale = params.trunk_mass / kSimTrunkMass;
+  for (TrunkBox& box : b.trunk) box.mass *= trunk_scale;
+  const double leg_scale =
+      (params.total_mass - params.trunk_mass) / (kSimTotalMass - kSimTrunkMass);
+  for (Capsule* c : {&b.segments.shoulder, &b.segments.coxa, &b.segments.femur, &b.segments.tibia,
+                     &b.segments.foot}) {
+    c->mass *= leg_scale;
+  }
+  b.tc_servo = servo(params.servo_torque, 0.0, params.servo_speed);
+  b.ctr_servo = servo(params.servo_torque, 0.0, params.servo_speed);
+  b.fti_servo = servo(params.servo_torque, kFtiDamp, params.servo_speed);
+  b.foot_friction = params.foot_friction;
+  b.trunk_friction = params.trunk_friction;
+  b.slip = params.slip;
+  b.torsional_friction = params.torsional_friction;
+  b.rolling_friction = params.rolling_friction;
+  b.joint_compliance = params.joint_compliance;
+  b.coupling_damping =
+      params.joint_compliance > 0.0 ? kCouplingRelaxation / params.joint_compliance : 0.0;
+  return b;
 }
 
 double total_mass(const RobotBody& body) {

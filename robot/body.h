@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "robot/body_params.h"
 #include "robot/morphology.h"
 
 namespace multicpg::robot {
@@ -80,12 +81,27 @@ struct RobotBody {
   ServoSpec tc_servo, ctr_servo, fti_servo;
   FootSpring foot;
   double contact_sensor_radius;  // m, foot contact sensor sphere
-  double friction;               // Coulomb friction of every robot-ground pair
+  // Ground contacts (BodyParams; docs/robots.md "Body parameters").
+  double foot_friction;       // Coulomb friction of the feet and tibiae against the ground
+  double trunk_friction;      // and of the trunk boxes
+  double slip;                // m/s per N of tangential force on one contact
+  double torsional_friction;  // m; 0 = none
+  double rolling_friction;    // m; 0 = none
+  // Passive coupling between each leg servo and its segment: rad per N m (0 = rigid), and its
+  // damping (N m s/rad).
+  double joint_compliance;
+  double coupling_damping;
 };
 
-// The description of a robot: the hexapod AMOSII v2 (reference §6.1), the quadruped AmosFour
-// (§6.2) or the octopod (the hexapod's leg design, four legs a side).
+// The description of a robot as the paper's simulator has it: the hexapod AMOSII v2 (reference
+// §6.1), the quadruped AmosFour (§6.2) or the octopod (the hexapod's leg design, four legs a
+// side).
 const RobotBody& robot_body(RobotKind kind);
+
+// The same robot with the physical parameters `params` (validate()d): masses, friction, slip,
+// joint compliance and leg servos. Only the hexapod's trunk is `params.trunk_mass`; the other
+// trunks keep its density, and every leg weighs (total_mass - trunk_mass) / 6.
+RobotBody robot_body(RobotKind kind, const BodyParams& params);
 
 // Sum of every part's mass, kg.
 double total_mass(const RobotBody& body);

@@ -40,4 +40,9 @@ double joint_angle(LegType type, Joint joint, double command) {
   return 0.5 * (r.lo + r.hi) + 0.5 * (r.hi - r.lo) * m;
 }
 
+double command_change(LegType type, Joint joint, double radians) {
+  const AngleRange r = joint_limits(type, joint);
+  return radians / (0.5 * (r.hi - r.lo));
+}
+
 }  // namespace multicpg::robot

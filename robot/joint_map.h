@@ -22,4 +22,7 @@ AngleRange joint_limits(LegType type, Joint joint);
 // clips its input.
 double joint_angle(LegType type, Joint joint, double command);
 
+// The change of command that turns `joint` by `radians` (the inverse slope of joint_angle).
+double command_change(LegType type, Joint joint, double radians);
+
 }  // namespace multicpg::robot

@@ -17,9 +17,13 @@ constexpr const char* kIntegrator = "Euler";
 // Elliptic friction cones: with mu = 2.4 the pyramidal approximation does not hold the feet (the
 // hexapod does not advance; docs/robots.md).
 constexpr const char* kCone = "elliptic";
-// Torsional and rolling friction: MuJoCo's defaults (they only act with condim > 3, unused).
+// Torsional and rolling friction when the body has none: MuJoCo's defaults, inert at condim 3.
 constexpr double kTorsionalFriction = 0.005;
 constexpr double kRollingFriction = 0.0001;
+// Contact dimensions: tangential friction; with torsional; with torsional and rolling.
+constexpr int kCondimSliding = 3;
+constexpr int kCondimTorsional = 4;
+constexpr int kCondimRolling = 6;
 // Contacts (issue 12; docs/robots.md "Contacts and materials"). The ground touches only the trunk
 // boxes and the lower legs (tibia and foot): explicit contact pairs, which skip MuJoCo's broad
 // phase. In 102 walks (every robot, every period, up to three disabled legs) only feet and trunk
@@ -85,6 +89,14 @@ std::string hinge(const std::string& name, const Vec3& axis, const AngleRange& r
          num(range.lo) + " " + num(range.hi) + "\" armature=\"" + num(servo.armature) + "\"/>";
 }
 
+// The passive coupling behind a servo (RobotBody::joint_compliance): a spring hinge on the servo's
+// axis, so the segment turns by the servo's angle plus the coupling's give.
+std::string coupling(const RobotBody& body, const std::string& servo_joint, const Vec3& axis) {
+  return "<joint name=\"" + coupling_joint(servo_joint) + "\" type=\"hinge\" axis=\"" + vec(axis) +
+         "\" limited=\"false\" stiffness=\"" + num(1.0 / body.joint_compliance) + "\" damping=\"" +
+         num(body.coupling_damping) + "\"/>";
+}
+
 // The joints of the MJCF in document order, for the keyframe.
 struct Emitted {
   std::vector<double> qpos;
@@ -109,18 +121,24 @@ void write_leg(Writer& w, int depth, const RobotBody& body, std::size_t index, d
   const Vec3 tc_axis{0.0, 0.0, -s};
   const Vec3 lift_axis{s, 0.0, 0.0};
 
+  const bool compliant = body.joint_compliance > 0.0;
+  // A servo joint, and its coupling when the joints are compliant.
+  const auto servo_joint = [&](int d, Joint joint, const Vec3& axis, const ServoSpec& spec) {
+    const std::string name = n + "_" + std::string(to_string(joint));
+    w.line(d, hinge(name, axis, joint_limits(leg.type, joint), spec));
+    if (compliant) w.line(d, coupling(body, name, axis));
+  };
+
   w.line(depth, capsule(n + "_shoulder", root, tc, seg.shoulder));
   w.line(depth, "<body name=\"" + n + "_coxa\" pos=\"" + vec(tc) + "\">");
-  w.line(depth + 1, hinge(n + "_TC", tc_axis, joint_limits(leg.type, Joint::TC), body.tc_servo));
+  servo_joint(depth + 1, Joint::TC, tc_axis, body.tc_servo);
   w.line(depth + 1, capsule(n + "_coxa", {0, 0, 0}, {0, s * seg.coxa.length, 0}, seg.coxa));
   w.line(depth + 1, "<body name=\"" + n + "_femur\" pos=\"0 " + num(s * seg.coxa.length) + " 0\">");
-  w.line(depth + 2,
-         hinge(n + "_CTr", lift_axis, joint_limits(leg.type, Joint::CTr), body.ctr_servo));
+  servo_joint(depth + 2, Joint::CTr, lift_axis, body.ctr_servo);
   w.line(depth + 2, capsule(n + "_femur", {0, 0, 0}, {0, s * seg.femur.length, 0}, seg.femur));
   w.line(depth + 2,
          "<body name=\"" + n + "_tibia\" pos=\"0 " + num(s * seg.femur.length) + " 0\">");
-  w.line(depth + 3,
-         hinge(n + "_FTi", lift_axis, joint_limits(leg.type, Joint::FTi), body.fti_servo));
+  servo_joint(depth + 3, Joint::FTi, lift_axis, body.fti_servo);
   w.line(depth + 3, capsule(n + "_tibia", {0, 0, 0}, {0, s * seg.tibia.length, 0}, seg.tibia));
 
   // Foot: slides inward along the tibia (positive = compressed), pushed out against its stop
@@ -142,7 +160,11 @@ void write_leg(Writer& w, int depth, const RobotBody& body, std::size_t index, d
   w.line(depth + 1, "</body>");
   w.line(depth, "</body>");
 
-  emitted.qpos.insert(emitted.qpos.end(), {start[0], start[1], start[2], 0.0});
+  for (std::size_t j = 0; j < kJointsPerLeg; ++j) {
+    emitted.qpos.push_back(start[j]);
+    if (compliant) emitted.qpos.push_back(0.0);  // the coupling at rest
+  }
+  emitted.qpos.push_back(0.0);  // the foot spring
   emitted.servos.emplace_back(n + "_TC", &body.tc_servo);
   emitted.servos.emplace_back(n + "_CTr", &body.ctr_servo);
   emitted.servos.emplace_back(n + "_FTi", &body.fti_servo);
@@ -159,10 +181,42 @@ void write_legs_of(Writer& w, int depth, const RobotBody& body, std::size_t part
   }
 }
 
+// The body's torsional and rolling friction, or MuJoCo's defaults when it has none (inert at
+// condim 3).
+double torsional(const RobotBody& body) {
+  return body.torsional_friction > 0.0 ? body.torsional_friction : kTorsionalFriction;
+}
+double rolling(const RobotBody& body) {
+  return body.rolling_friction > 0.0 ? body.rolling_friction : kRollingFriction;
+}
+
+// "mu torsional rolling" of a geom.
+std::string geom_friction(const RobotBody& body, double mu) {
+  return num(mu) + " " + num(torsional(body)) + " " + num(rolling(body));
+}
+
 std::string trunk_box(const RobotBody& body, const TrunkBox& box, double origin_x) {
+  // The trunk's own friction against the walls, where it differs from the legs' (the default).
+  const std::string friction =
+      body.trunk_friction == body.foot_friction
+          ? ""
+          : " friction=\"" + geom_friction(body, body.trunk_friction) + "\"";
   return "<geom name=\"" + box.name + "\" type=\"box\" pos=\"" + num(box.x_centre - origin_x) +
          " 0 0\" size=\"" + num(box.length / 2) + " " + num(body.trunk_width / 2) + " " +
-         num(body.trunk_height / 2) + "\" mass=\"" + num(box.mass) + "\"/>";
+         num(body.trunk_height / 2) + "\" mass=\"" + num(box.mass) + "\"" + friction + "/>";
+}
+
+// Contact dimensions of the ground pairs: torsional and rolling friction act only when set.
+int condim(const RobotBody& body) {
+  if (body.rolling_friction > 0.0) return kCondimRolling;
+  if (body.torsional_friction > 0.0) return kCondimTorsional;
+  return kCondimSliding;
+}
+
+// MuJoCo's tangential creep on a contact is proportional to 1 / impratio (docs/robots.md "Body
+// parameters"); at impratio 1 a foot creeps kMujocoFootSlip m/s per N.
+double impratio(const RobotBody& body) {
+  return kMujocoFootSlip / body.slip;
 }
 
 void write_walls(Writer& w, const Scene& scene) {
@@ -177,6 +231,10 @@ void write_walls(Writer& w, const Scene& scene) {
 }
 
 }  // namespace
+
+std::string coupling_joint(const std::string& servo_joint) {
+  return servo_joint + "_coupling";
+}
 
 double stand_height(const RobotBody& body, const std::vector<LegAngles>& pose) {
   const LegSegments& s = body.segments;
@@ -200,9 +258,11 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   w.line(0, "<mujoco model=\"multicpg-" + morph.name + "\">");
   w.line(1, "<!-- Generated by multicpg from robot/body.cpp (SPEC §7, reference §6). -->");
   w.line(1, "<compiler angle=\"radian\"/>");
+  const double ratio = impratio(body);
   w.line(1, "<option timestep=\"" + num(options.physics_dt) + "\" integrator=\"" + kIntegrator +
                 "\" cone=\"" + kCone + "\" jacobian=\"" + kJacobian + "\" collision=\"" +
-                (options.scene.tunnel ? kTunnelCollision : kFlatCollision) + "\"/>");
+                (options.scene.tunnel ? kTunnelCollision : kFlatCollision) + "\"" +
+                (ratio == 1.0 ? "" : " impratio=\"" + num(ratio) + "\"") + "/>");
   w.line(1, "<asset>");
   w.line(2,
          "<texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\".35 .4 .45\" "
@@ -211,10 +271,9 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   w.line(2, "<material name=\"wall\" rgba=\".6 .55 .5 .5\"/>");
   w.line(1, "</asset>");
   w.line(1, "<default>");
-  const std::string friction =
-      num(body.friction) + " " + num(kTorsionalFriction) + " " + num(kRollingFriction);
   w.line(2, "<geom contype=\"" + std::to_string(kRobotClass) + "\" conaffinity=\"" +
-                std::to_string(kWorldClass) + "\" friction=\"" + friction + "\"/>");
+                std::to_string(kWorldClass) + "\" friction=\"" +
+                geom_friction(body, body.foot_friction) + "\"/>");
   w.line(2, "<joint limited=\"true\"/>");
   w.line(2, "<default class=\"world\">");
   w.line(3, "<geom contype=\"" + std::to_string(kWorldClass) + "\" conaffinity=\"" +
@@ -251,16 +310,17 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   w.line(1, "</worldbody>");
 
   w.line(1, "<contact>");
-  std::vector<std::string> grounded;
-  for (const TrunkBox& box : body.trunk) grounded.push_back(box.name);
+  const int dims = condim(body);
+  const auto pair = [&](const std::string& geom, double mu) {
+    const std::string friction = num(mu) + " " + num(mu) + " " + num(torsional(body)) + " " +
+                                 num(rolling(body)) + " " + num(rolling(body));
+    w.line(2, "<pair geom1=\"ground\" geom2=\"" + geom + "\"" +
+                  (dims == kCondimSliding ? "" : " condim=\"" + std::to_string(dims) + "\"") +
+                  " friction=\"" + friction + "\"/>");
+  };
+  for (const TrunkBox& box : body.trunk) pair(box.name, body.trunk_friction);
   for (const Leg& leg : morph.legs) {
-    for (const char* part : kGroundLegParts) grounded.push_back(leg.name + part);
-  }
-  const std::string pair_friction = num(body.friction) + " " + num(body.friction) + " " +
-                                    num(kTorsionalFriction) + " " + num(kRollingFriction) + " " +
-                                    num(kRollingFriction);
-  for (const std::string& geom : grounded) {
-    w.line(2, "<pair geom1=\"ground\" geom2=\"" + geom + "\" friction=\"" + pair_friction + "\"/>");
+    for (const char* part : kGroundLegParts) pair(leg.name + part, body.foot_friction);
   }
   w.line(1, "</contact>");
 

@@ -3,7 +3,8 @@
 //
 // Names, so that tools can find a leg's parts: bodies and geoms "trunk", "front_trunk",
 // "<leg>_coxa", "<leg>_femur", "<leg>_tibia", "<leg>_foot" (geoms also "<leg>_shoulder");
-// joints "root", "backbone", "<leg>_TC", "<leg>_CTr", "<leg>_FTi", "<leg>_foot_spring";
+// joints "root", "backbone", "<leg>_TC", "<leg>_CTr", "<leg>_FTi", "<leg>_foot_spring" (and with
+// compliant joints "<leg>_TC_coupling", ... after each servo joint, coupling_joint());
 // torque actuators "<joint>" (the servo law is sim/servo.h); sites and touch sensors
 // "<leg>_foot"; orientation sensor "yaw" on the front trunk; keyframe "start".
 #pragma once
@@ -32,6 +33,10 @@ struct MjcfOptions {
   Scene scene;
   std::vector<LegAngles> start_pose;  // one per leg: the "start" keyframe's joint angles
 };
+
+// The passive coupling joint behind a servo joint ("R1_TC" -> "R1_TC_coupling"), present when the
+// body's joint_compliance is above 0. The segment's angle is the servo's plus the coupling's.
+std::string coupling_joint(const std::string& servo_joint);
 
 // Height of the trunk origin that puts the lowest foot of `pose` on the ground (m). The TC axis
 // is vertical and the coxa horizontal, so only CTr and FTi decide how far a foot reaches down.

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "neural/json.h"
+#include "robot/body_json.h"
 #include "sim/course_json.h"
 #include "sim/sim.h"
 
@@ -17,6 +18,6 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Scene, tunnel, tunnel_length, tu
 namespace multicpg::sim {
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SimOptions, control_dt, physics_dt, servo_gain,
-                                                scene, controller)
+                                                scene, controller, model, body)
 
 }  // namespace multicpg::sim

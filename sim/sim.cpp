@@ -112,6 +112,8 @@ JointSlot joint_slot(const mjModel* m, const std::string& joint, robot::ServoSpe
   slot.qpos = m->jnt_qposadr[j];
   slot.dof = m->jnt_dofadr[j];
   slot.actuator = id_of(m, mjOBJ_ACTUATOR, joint);
+  const int coupling = mj_name2id(m, mjOBJ_JOINT, robot::coupling_joint(joint).c_str());
+  if (coupling >= 0) slot.coupling_qpos = m->jnt_qposadr[coupling];
   spec.gain = gain;
   slot.servo = {spec, range.hi - range.lo};
   return slot;
@@ -250,15 +252,21 @@ void validate(const SimOptions& options) {
   require_in("scene.tunnel_length", options.scene.tunnel_length, kTunnelLengthLimits);
   require_in("scene.tunnel_width", options.scene.tunnel_width, kTunnelWidthLimits);
   within("controller", [&] { neural::validate(options.controller); });
+  within("body", [&] { robot::validate(options.body); });
   physics_substeps(options.control_dt, resolved_physics_dt(options));
 }
 
-std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
+void validate(const SimOptions& options, robot::RobotKind kind) {
   validate(options);
+  within("body", [&] { robot::disabled_postures(options.body, robot::morphology(kind)); });
+}
+
+std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
+  validate(options, kind);
   const double physics_dt = resolved_physics_dt(options);
   const neural::ControllerModel controller =
-      neural::make_controller_model(kind, options.controller);
-  return robot::make_mjcf(robot::robot_body(kind),
+      neural::make_controller_model(kind, options.controller, options.body);
+  return robot::make_mjcf(robot::robot_body(kind, options.body),
                           mjcf_options(options, physics_dt, start_pose(controller)));
 }
 
@@ -272,10 +280,10 @@ void install_mujoco_handlers() {
 
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   install_mujoco_handlers();
-  validate(options);
+  validate(options, kind);
   SimModel model{kind,
-                 &robot::robot_body(kind),
-                 neural::make_controller_model(kind, options.controller),
+                 robot::robot_body(kind, options.body),
+                 neural::make_controller_model(kind, options.controller, options.body),
                  {},
                  options.scene,
                  {},
@@ -288,11 +296,11 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   model.substeps = physics_substeps(model.control_dt, model.physics_dt);
   model.start_pose = start_pose(model.controller);
   model.xml =
-      robot::make_mjcf(*model.body, mjcf_options(options, model.physics_dt, model.start_pose));
+      robot::make_mjcf(model.body, mjcf_options(options, model.physics_dt, model.start_pose));
   model.mj = compile_mjcf(model.xml);
   const mjModel* m = model.mj.get();
 
-  const robot::RobotBody& body = *model.body;
+  const robot::RobotBody& body = model.body;
   const auto gain = [&](const robot::ServoSpec& spec) {
     return options.servo_gain > 0.0 ? options.servo_gain
                                     : spec.gain * kReferenceControlDt / model.control_dt;
@@ -402,7 +410,9 @@ double trunk_yaw_deg(const SimModel& model, const SimState& state) {
 }
 
 double joint_angle(const SimModel& model, const SimState& state, std::size_t leg, Joint joint) {
-  return state.data->qpos[model.legs[leg].joints[static_cast<std::size_t>(joint)].qpos];
+  const JointSlot& slot = model.legs[leg].joints[static_cast<std::size_t>(joint)];
+  const double* q = state.data->qpos;
+  return slot.coupling_qpos < 0 ? q[slot.qpos] : q[slot.qpos] + q[slot.coupling_qpos];
 }
 
 double foot_force(const SimModel& model, const SimState& state, std::size_t leg) {

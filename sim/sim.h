@@ -17,6 +17,8 @@
 #include "common/limits.h"
 #include "neural/controller.h"
 #include "robot/body.h"
+#include "robot/body_models.h"
+#include "robot/body_params.h"
 #include "robot/mjcf.h"
 #include "sim/fault_state.h"
 #include "sim/servo.h"
@@ -67,6 +69,10 @@ struct SimOptions {
   double servo_gain = 0.0;
   robot::Scene scene;
   neural::ControllerParams controller;
+  // The physical parameters (robot/body_params.h), and the named model they started from
+  // (robot/body_models.h; recorded, the values are what counts).
+  robot::BodyModel model = robot::kDefaultBodyModel;
+  robot::BodyParams body;
 };
 
 // Where one servo's joint lives in the mjModel.
@@ -75,6 +81,7 @@ struct JointSlot {
   int qpos = -1;
   int dof = -1;
   int actuator = -1;
+  int coupling_qpos = -1;  // the passive coupling behind the servo, if the joints are compliant
   ServoModel servo{};
 };
 
@@ -100,7 +107,7 @@ struct MjDataDeleter {
 
 struct SimModel {
   robot::RobotKind kind;
-  const robot::RobotBody* body;
+  robot::RobotBody body;  // the paper's body with SimOptions::body applied
   neural::ControllerModel controller;
   std::vector<robot::LegAngles> start_pose;  // joint angles of the "start" keyframe
   robot::Scene scene;
@@ -116,10 +123,12 @@ struct SimModel {
   int start_key = -1;
 };
 
-// Throws OptionError (key "control_dt", "controller.cpg.w11", ...) for a value outside its
-// range, a physics step below kMinPhysicsDt or one that does not divide the control step
-// (physics_substeps).
+// Throws OptionError (key "control_dt", "controller.cpg.w11", "body.total_mass", ...) for a value
+// outside its range, a physics step below kMinPhysicsDt or one that does not divide the control
+// step (physics_substeps).
 void validate(const SimOptions& options);
+// The same, and the body's leg postures name legs of `kind` ("body.leg_postures[0].leg").
+void validate(const SimOptions& options, robot::RobotKind kind);
 
 // Compiles MJCF text (through MuJoCo's in-memory file system). Throws RuntimeFailure if MuJoCo
 // rejects it.
@@ -130,8 +139,8 @@ std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml);
 // make_sim_model calls it, the CLI calls it first thing.
 void install_mujoco_handlers();
 
-// Builds the MJCF from robot::robot_body(kind), compiles it and indexes it. Throws BadInput for
-// bad time steps or servo gain, RuntimeFailure if MuJoCo rejects the model.
+// Builds the MJCF from robot::robot_body(kind, options.body), compiles it and indexes it. Throws
+// BadInput for bad options (validate), RuntimeFailure if MuJoCo rejects the model.
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options = {});
 
 // The MJCF make_sim_model compiles (what `multicpg model` prints).
@@ -166,8 +175,9 @@ SimState copy_sim_state(const SimModel& model, const SimState& state);
 // any real robot or bodies deep inside each other).
 void sim_step(const SimModel& model, SimState& state);
 
-// Readings. Positions and joint angles are of the current state; the yaw and touch sensors are
-// as MuJoCo last evaluated them, at the start of the last physics step (one physics step old).
+// Readings. Positions and joint angles are of the current state (a segment's angle: its servo's
+// plus the coupling's give); the yaw and touch sensors are as MuJoCo last evaluated them, at the
+// start of the last physics step (one physics step old).
 struct Position {
   double x, y, z;  // m
 };

@@ -63,6 +63,25 @@ std::vector<BadInput> numeric_cases() {
       {"landscape --disable R1 --out /tmp/multicpg-bad-land", "--jobs", {"0"}},
       {"landscape --disable R1 --out /tmp/multicpg-bad-land", "--threshold", {"0"}},
       {"reproduce --out /tmp/multicpg-bad-rep", "--jobs", {"0"}},
+      // The body (robot/body_params.h): every parameter's range.
+      {"walk", "--lift-body", {"-11", "16"}},
+      {"walk", "--total-mass", {"4", "20"}},
+      {"walk", "--trunk-mass", {"1", "4.5"}},
+      {"walk", "--foot-friction", {"0", "3.5"}},
+      {"walk", "--trunk-friction", {"0.1", "10"}},
+      {"walk", "--slip", {"0", "0.0001", "0.1"}},
+      {"walk", "--joint-compliance", {"-0.01", "0.3"}},
+      {"walk", "--torsional-friction", {"-0.001", "0.02"}},
+      {"walk", "--rolling-friction", {"-1", "0.01"}},
+      {"walk", "--servo-torque", {"1", "31"}},
+      {"walk", "--servo-speed", {"2", "13"}},
+      {"tunnel --disable R1", "--total-mass", {"12"}},
+      {"learn --disable R1", "--slip", {"1"}},
+      {"landscape --disable R1 --out /tmp/multicpg-bad-land", "--servo-torque", {"0"}},
+      {"render --out /tmp/multicpg-bad.png", "--trunk-mass", {"0"}},
+      {"view", "--lift-body", {"90"}},
+      {exp, "--foot-friction", {"-1"}},
+      {"model", "--joint-compliance", {"1"}},
   };
   std::vector<BadInput> cases;
   for (const NumericFlag& f : flags) {
@@ -78,6 +97,8 @@ std::vector<BadInput> numeric_cases() {
            {"render --out /tmp/multicpg-bad.png", "--width"},
            {exp, "--runs"},
            {"cpg", "--period"},
+           {"walk", "--total-mass"},
+           {"tunnel --disable R1", "--slip"},
        }) {
     for (const std::string& v : kNotNumbers)
       cases.push_back({command + " " + flag + " " + v, flag});
@@ -157,6 +178,23 @@ const std::vector<BadInput> kOtherCases{
     {"tunnel --disable R1 --learn --periods 4", "exclude"},
     {"tunnel --disable R1 --video ''", "--video"},
     {"model --out ''", "--out"},
+    // Body models and postures.
+    {"walk --model nosuch", "--model"},
+    {"walk --model ''", "--model"},
+    {"learn --disable R1 --model Real", "--model"},
+    {"walk --disabled-posture 0,0.7", "--disabled-posture"},
+    {"walk --disabled-posture 0,0.7,-0.7,0", "--disabled-posture"},
+    {"walk --disabled-posture 0,,-0.7", "--disabled-posture"},
+    {"walk --disabled-posture 0,1.5,-0.7", "--disabled-posture"},
+    {"walk --disabled-posture 0,x,-0.7", "--disabled-posture"},
+    {"walk --leg-posture R3", "--leg-posture"},
+    {"walk --leg-posture =0,0,0", "--leg-posture"},
+    {"walk --leg-posture R3=,,-2", "--leg-posture"},
+    {"walk --leg-posture R9=,,-0.5", "--leg-posture"},
+    {"walk --leg-posture R3=,,-0.5 --leg-posture R3=0,,", "--leg-posture"},
+    {"tunnel --disable R1 --leg-posture L4=0,0.7,-0.7", "--leg-posture"},
+    {"walk --total-mass 5 --trunk-mass 4", "--trunk-mass"},
+    {"model --list --model nosuch", "--model"},
     // Unknown flags and commands.
     {"walk --speed 3", "--speed"},
     {"fly", "fly"},

@@ -104,6 +104,42 @@ TEST(CliWalk, CsvHasEveryStepAndColumn) {
   std::filesystem::remove_all(dir);
 }
 
+// Every physical parameter of the body (robot/body_params.h) changes the walk; --model paper-sim
+// is the default to the byte.
+TEST(CliWalk, EveryBodyParameterChangesTheWalkAndPaperSimIsTheDefault) {
+  const std::string base = "walk --disable R1,R3 --steps 300 --json";
+  const auto plain = run_cli(base);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const auto paper_sim = run_cli(base + " --model paper-sim");
+  ASSERT_EQ(paper_sim.exit_code, 0) << paper_sim.err;
+  EXPECT_EQ(paper_sim.out, plain.out);
+  for (const char* flags :
+       {"--model real", "--disabled-posture 0,0.9,-0.9", "--leg-posture R3=,,-0.5", "--lift-body 5",
+        "--total-mass 6", "--trunk-mass 2.2", "--foot-friction 1", "--trunk-friction 1",
+        "--slip 0.03", "--joint-compliance 0.05", "--torsional-friction 0.005",
+        "--rolling-friction 0.001", "--servo-torque 10", "--servo-speed 6"}) {
+    const auto r = run_cli(base + " " + flags);
+    ASSERT_EQ(r.exit_code, 0) << flags << ": " << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_NE(j["distance_m"], nlohmann::json::parse(plain.out)["distance_m"]) << flags;
+  }
+}
+
+// The learning and the tunnel too: --model paper-sim is the default to the byte.
+TEST(CliWalk, PaperSimIsTheDefaultBodyOfLearnAndTunnel) {
+  for (const char* command : {"learn --mode paper --disable R1 --max-trials 2 --json",
+                              "tunnel --disable R1,R3 --max-steps 200 --json"}) {
+    const auto plain = run_cli(command);
+    ASSERT_EQ(plain.exit_code, 0) << command << ": " << plain.err;
+    const auto paper_sim = run_cli(std::string(command) + " --model paper-sim");
+    ASSERT_EQ(paper_sim.exit_code, 0) << command << ": " << paper_sim.err;
+    EXPECT_EQ(paper_sim.out, plain.out) << command;
+    const auto real = run_cli(std::string(command) + " --model real");
+    ASSERT_EQ(real.exit_code, 0) << command << ": " << real.err;
+    EXPECT_NE(real.out, plain.out) << command;
+  }
+}
+
 TEST(CliWalk, ExplicitPhysicsStepThatDivides) {
   const auto r = run_cli("walk --steps 20 --physics-dt 0.0037 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;

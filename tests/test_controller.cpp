@@ -4,8 +4,10 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <vector>
 
+#include "common/errors.h"
 #include "experiments/cpg_pair.h"
 #include "experiments/gait.h"
 #include "neural/controller.h"
@@ -186,9 +188,9 @@ TEST(Disabled, LegHoldsItsPostureFromTheStepItIsDisabled) {
   for (long t = 0; t < 500; ++t) {
     neural::controller_step(model, state);
     const auto& cmd = state.legs[1].command;
-    ASSERT_EQ(cmd.tc, neural::kDisabledPosture.tc);
-    ASSERT_EQ(cmd.ctr, neural::kDisabledPosture.ctr);
-    ASSERT_EQ(cmd.fti, neural::kDisabledPosture.fti);
+    ASSERT_EQ(cmd.tc, robot::kReferenceDisabledPosture.tc);
+    ASSERT_EQ(cmd.ctr, robot::kReferenceDisabledPosture.ctr);
+    ASSERT_EQ(cmd.fti, robot::kReferenceDisabledPosture.fti);
   }
   // The other legs keep walking.
   double lo = 1.0, hi = -1.0;
@@ -198,6 +200,39 @@ TEST(Disabled, LegHoldsItsPostureFromTheStepItIsDisabled) {
     hi = std::max(hi, state.legs[0].command.tc);
   }
   EXPECT_GT(hi - lo, 0.3);
+}
+
+// The body's postures (robot/body_params.h): every disabled leg holds the all-legs posture but a
+// leg with its own; the body lift shifts the CTr and FTi windows of reference §4.4 by degrees.
+TEST(Disabled, EachLegHoldsItsBodysPostureAndTheLiftShiftsTheWindows) {
+  robot::BodyParams body;
+  body.disabled_posture = {0.1, 0.9, -0.5};
+  body.leg_postures = {{"R3", std::nullopt, std::nullopt, -0.55}};
+  body.lift_body = 5.0;
+  const auto model = neural::make_controller_model(RobotKind::hexapod, {}, body);
+  auto state = neural::make_controller_state(model, 4);
+  neural::set_disabled(state, 0, true);  // R1
+  neural::set_disabled(state, 2, true);  // R3
+  neural::controller_step(model, state);
+  EXPECT_EQ(state.legs[0].command.ctr, 0.9);
+  EXPECT_EQ(state.legs[0].command.fti, -0.5);
+  EXPECT_EQ(state.legs[2].command.tc, 0.1);
+  EXPECT_EQ(state.legs[2].command.ctr, 0.9);
+  EXPECT_EQ(state.legs[2].command.fti, -0.55);
+  const auto plain = neural::make_controller_model(RobotKind::hexapod);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    EXPECT_NEAR(model.legs[i].map.ctr.to_lo, plain.legs[i].map.ctr.to_lo - 5.0 / 75.0, 1e-12);
+    EXPECT_NEAR(model.legs[i].map.ctr.to_hi, plain.legs[i].map.ctr.to_hi - 5.0 / 75.0, 1e-12);
+    EXPECT_NEAR(model.legs[i].map.fti.to_lo, plain.legs[i].map.fti.to_lo + 5.0 / 55.0, 1e-12);
+    EXPECT_EQ(model.legs[i].map.tc.to_lo, plain.legs[i].map.tc.to_lo);
+  }
+  body.leg_postures = {{"R4", 0.0, std::nullopt, std::nullopt}};
+  try {
+    neural::make_controller_model(RobotKind::hexapod, {}, body);
+    ADD_FAILURE() << "a posture for a leg the hexapod does not have was taken";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.key(), "leg_postures[0].leg");
+  }
 }
 
 TEST(Controller, SameInputsGiveIdenticalCommands) {

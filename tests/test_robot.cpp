@@ -164,7 +164,7 @@ TEST_P(Models, StartsStandingOnItsFeet) {
   // The foot sphere (radius 15 mm) hangs at most the start clearance above the ground.
   EXPECT_NEAR(lowest_foot, 0.015, 0.0015);
   // The trunk clears the ground and faces +x.
-  EXPECT_GT(sim::trunk_position(model, state).z, model.body->trunk_height / 2.0);
+  EXPECT_GT(sim::trunk_position(model, state).z, model.body.trunk_height / 2.0);
   EXPECT_NEAR(sim::trunk_yaw_deg(model, state), 0.0, 1e-9);
 }
 

@@ -143,6 +143,20 @@ TEST(Sweep, BadFilesNameFileLineAndKey) {
       {ok + "[sim]\ncontrol_dt = \"fast\"\n", "3: sim.control_dt must be a number"},
       {ok + "[sim]\ncontrol_dt = -1\n", "3: sim.control_dt"},
       {ok + "[sim.scene]\ntunnel = 1\n", "3: sim.scene.tunnel must be true or false"},
+      // The body (robot/body_params.h) and its models.
+      {ok + "[sim.body]\ntotal_mass = 20\n", "3: sim.body.total_mass must be in 4.5..9"},
+      {ok + "[sim.body]\nslip = 0\n", "3: sim.body.slip must be in"},
+      {ok + "[sim.body]\nmass = 5\n", "3: sim.body.mass is not an option"},
+      {ok + "[sim.body]\nservo_torque = \"max\"\n", "3: sim.body.servo_torque must be a number"},
+      {ok + "[sim.body]\ntotal_mass = 5\ntrunk_mass = 4\n", "4: sim.body.trunk_mass must leave"},
+      {ok + "[sim.body.disabled_posture]\nctr = 2\n", "3: sim.body.disabled_posture.ctr"},
+      {ok + "[[sim.body.leg_postures]]\nleg = \"R9\"\nfti = -0.5\n",
+       "3: sim.body.leg_postures[0].leg"},
+      {ok + "[[sim.body.leg_postures]]\nleg = \"R3\"\nfti = -1.5\n",
+       "4: sim.body.leg_postures[0].fti"},
+      {ok + "[sim]\nmodel = \"nosuch\"\n", "3: sim.model no body model 'nosuch'"},
+      {ok + "[sim]\nmodel = 1\n", "3: sim.model must be a model name"},
+      {ok + "[sim]\nmodel = [\"real\", \"paper-sim\"]\n", "3: sim.model takes one model"},
       {ok + "[record]\ncheck_windows = -1\n", "3: record.check_windows must be in 0..1000"},
       {ok + "[record]\nfilm = true\n", "3: record.film is not a record key"},
       {ok + "[record]\ntrace = 1\n", "3: record.trace must be true or false"},
@@ -265,6 +279,57 @@ TEST(Sweep, PaperPresetsEqualTheirExampleFiles) {
     fs::remove_all(dir + "/a");
     fs::remove_all(dir + "/b");
   }
+  fs::remove_all(dir);
+}
+
+// A body model supplies the body, [sim.body] keys override it, a body key can be a grid axis;
+// the record holds the model and every resolved value, and a resume with another is refused.
+TEST(Sweep, BodyModelAndKeysAreRecordedAndAResumeWithAnotherIsRefused) {
+  const std::string dir = make_temp_dir("sweep-body-");
+  const std::string file = dir + "/body.toml";
+  const std::string text = R"(scenarios = ["R1"]
+runs = 1
+[learning]
+mode = "paper"
+[learning.annealing]
+max_trials = 1
+[sim]
+model = "real"
+[sim.body]
+foot_friction = 1.5
+trunk_friction = [1.0, 2.0]
+[[sim.body.leg_postures]]
+leg = "R3"
+fti = -0.55
+)";
+  write(file, text);
+  const CliResult r = run_cli("run " + file + " --jobs 2 --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("2 runs (2 grid points"), std::string::npos) << r.out;
+  const nlohmann::json sim =
+      nlohmann::json::parse(read_file(dir + "/out/experiment.json"))["arguments"]["sim"];
+  EXPECT_EQ(sim["model"], "real");
+  const nlohmann::json& body = sim["body"];
+  EXPECT_EQ(body["total_mass"], 5.758);  // the model's
+  EXPECT_EQ(body["trunk_mass"], 2.2);
+  EXPECT_EQ(body["lift_body"], 5.0);
+  EXPECT_EQ(body["foot_friction"], 1.5);  // the file's
+  EXPECT_EQ(body["trunk_friction"], nlohmann::json::array({1.0, 2.0}));
+  EXPECT_EQ(body["leg_postures"], nlohmann::json::parse(R"([{"leg": "R3", "fti": -0.55}])"));
+  EXPECT_EQ(body["disabled_posture"]["ctr"], 0.7);
+  EXPECT_EQ(first_line(read_file(dir + "/out/runs.csv"))
+                .rfind("key,scenario,run,seed,sim.body.trunk_friction,", 0),
+            0u);
+  // The same file again resumes; another body value is refused, naming its key.
+  ASSERT_EQ(run_cli("run " + file + " --jobs 2 --out " + dir + "/out").exit_code, 0);
+  std::string changed = text;
+  changed.replace(changed.find("foot_friction = 1.5"), 19, "foot_friction = 1.6");
+  write(file, changed);
+  expect_bad_input("run " + file + " --out " + dir + "/out", "sim.body.foot_friction");
+  changed = text;
+  changed.replace(changed.find("model = \"real\""), 14, "model = \"paper-sim\"");
+  write(file, changed);
+  expect_bad_input("run " + file + " --out " + dir + "/out", "sim.body.total_mass");
   fs::remove_all(dir);
 }
 

@@ -15,8 +15,8 @@ constexpr int kFractionDecimals = 3;
 }  // namespace
 
 Section gaits_stage(const StageContext& ctx) {
-  const neural::ControllerModel controller =
-      neural::make_controller_model(robot::RobotKind::hexapod);
+  const neural::ControllerModel controller = neural::make_controller_model(
+      robot::RobotKind::hexapod, ctx.options.sim.controller, ctx.options.sim.body);
   std::vector<GaitPanel> panels;
   std::string fractions;
   for (int p : kGaitFigurePeriods) {

@@ -46,6 +46,7 @@ Section landscape_stage(const StageContext& ctx) {
   const robot::Morphology& morph = robot::morphology(spec.kind);
   spec.disabled = robot::parse_leg_set(morph, kScenario);
   spec.windows = ctx.sizes.landscape_windows;
+  spec.sim = ctx.options.sim;
   if (!ctx.sizes.landscape_periods.empty()) {
     spec.period_set.assign(ctx.sizes.landscape_periods.begin(), ctx.sizes.landscape_periods.end());
   }

@@ -54,10 +54,11 @@ Table trace_table(const robot::Morphology& morph, const learning::LearningResult
 }  // namespace
 
 Section learning_r1_stage(const StageContext& ctx) {
-  const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod);
+  const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod, ctx.options.sim);
   const robot::Morphology& morph = hexapod.controller.morphology;
   const std::size_t legs = morph.size();
   experiments::RunSpec spec;
+  spec.sim = ctx.options.sim;
   learning::CompensationOptions& options = spec.learning.emplace();
   options.mode = learning::Mode::paper;  // the paper's figures show the paper's algorithm
   options.seed = ctx.options.seed;

@@ -62,6 +62,7 @@ experiments::ExperimentSpec StageContext::experiment(robot::RobotKind kind, cons
   spec.jobs = options.jobs;
   spec.out = dir("experiments/" + name);
   spec.progress = options.progress;
+  spec.sim = options.sim;
   spec.base.mode = learning::Mode::paper;  // the paper's experiments, its algorithm
   return spec;
 }

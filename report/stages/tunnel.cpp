@@ -67,8 +67,9 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   // Issue 8: robust learning (learn --mode robust) in the open field from a walking robot, then
   // its periods and steering reflex through the tunnel.
   {
-    const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod);
+    const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod, ctx.options.sim);
     experiments::RunSpec robust;
+    robust.sim = ctx.options.sim;
     robust.learning.emplace().seed = ctx.options.seed;
     robust.start = experiments::learning_start(robust.learning->mode);
     robust.faults = sim::fail_at(disabled, 0);
@@ -121,7 +122,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
 }  // namespace
 
 Section tunnel_stage(const StageContext& ctx) {
-  sim::SimOptions with_tunnel;
+  sim::SimOptions with_tunnel = ctx.options.sim;
   with_tunnel.scene.tunnel = true;
   const sim::SimModel corridor = sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
   const experiments::ExperimentTable hexapod =

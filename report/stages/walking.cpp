@@ -28,7 +28,7 @@ sim::WalkSpec walk_spec(const sim::SimModel& model, int period, long steps) {
 }  // namespace
 
 Section walking_stage(const StageContext& ctx) {
-  const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod);
+  const sim::SimModel hexapod = sim::make_sim_model(robot::RobotKind::hexapod, ctx.options.sim);
   Table speeds{{{"period"},
                 {"gait", Align::left},
                 {"distance (m)"},

@@ -1,0 +1,41 @@
+// The body parameters and model names as JSON (nlohmann's type macros): keys are the member names,
+// a missing key keeps its default, a model is its name (an unknown name is an error). Recorded
+// with every result (sim.body, sim.model) and read from experiment files.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "robot/body_models.h"
+#include "robot/body_params.h"
+
+namespace multicpg::robot {
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LegPosture, tc, ctr, fti)
+// A leg's posture holds only the joints it sets ({"leg": "R3", "fti": -0.55}).
+inline void to_json(nlohmann::json& j, const LegPostureOverride& o) {
+  j = nlohmann::json{{"leg", o.leg}};
+  if (o.tc) j["tc"] = *o.tc;
+  if (o.ctr) j["ctr"] = *o.ctr;
+  if (o.fti) j["fti"] = *o.fti;
+}
+inline void from_json(const nlohmann::json& j, LegPostureOverride& o) {
+  o = {};
+  o.leg = j.at("leg").get<std::string>();
+  if (j.contains("tc")) o.tc = j.at("tc").get<double>();
+  if (j.contains("ctr")) o.ctr = j.at("ctr").get<double>();
+  if (j.contains("fti")) o.fti = j.at("fti").get<double>();
+}
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(BodyParams, disabled_posture, leg_postures,
+                                                lift_body, total_mass, trunk_mass, foot_friction,
+                                                trunk_friction, slip, joint_compliance,
+                                                torsional_friction, rolling_friction, servo_torque,
+                                                servo_speed)
+inline void to_json(nlohmann::json& j, BodyModel model) {
+  j = std::string(to_string(model));
+}
+inline void from_json(const nlohmann::json& j, BodyModel& model) {
+  model = parse_body_model(j.get<std::string>());
+}
+
+}  // namespace multicpg::robot
