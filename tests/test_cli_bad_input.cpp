@@ -150,6 +150,18 @@ const std::vector<BadInput> kOtherCases{
     {"learn --fault @400", "LEGS@STEP"},
     {"learn --fault R1@0 --fault R2@0 --mode paper", "paper mode"},
     {"walk --fault R1@200000000", "--fault"},
+    // Fault kinds (docs/faults.md).
+    {"walk --fault R2.CTr:melted@0", "melted"},
+    {"walk --fault R2.Knee:locked@0", "Knee"},
+    {"walk --fault L1:weak=0@0", "0.01..1"},
+    {"walk --fault L1:weak=1.5@0", "0.01..1"},
+    {"walk --fault R1:short=2@0", "0.1..1"},
+    {"walk --fault imu:drift=20@0", "-10..10"},
+    {"walk --fault imu:noise@0", "needs a value"},
+    {"walk --fault R2:locked@0", "one joint"},
+    {"walk --fault R1.TC:locked=90@0", "limits"},
+    {"learn --fault L1:weak=0.3@0 --recover L2:weak@400", "is not weak"},
+    {"walk --recover R2.CTr:locked@400", "is not locked"},
     // Choices.
     {"learn --disable R1 --mode fast", "fast"},
     {"learn --disable R1 --steering wheel", "wheel"},
