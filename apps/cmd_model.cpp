@@ -2,6 +2,7 @@
 // named body models with every value and its source.
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -67,11 +68,20 @@ void run_model(const ModelOptions& o) {
   sim::SimOptions options = sim_options(o.sim, o.body, kind);
   options.scene.tunnel = o.tunnel;
   const std::string xml = sim::model_xml(kind, options);
+  const std::vector<robot::ModelFile> files = robot::scene_files(options.scene);
   if (o.out.empty()) {
+    if (!files.empty()) {
+      throw BadInput("--terrain " + robot::terrain_text(options.scene.terrain) +
+                     ": its heightfield is a file beside the model; write both with --out FILE");
+    }
     std::cout << xml;
-  } else {
-    write_file_atomic(o.out, xml);
+    return;
   }
+  // The files first: a model file that exists refers to files that exist.
+  for (const robot::ModelFile& f : files) {
+    write_file_atomic(std::filesystem::path(o.out).parent_path() / f.name, f.bytes);
+  }
+  write_file_atomic(o.out, xml);
 }
 
 }  // namespace

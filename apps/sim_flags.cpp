@@ -119,6 +119,19 @@ CLI::Validator posture_value(bool per_leg) {
       per_leg ? "LEG=TC,CTr,FTi" : "TC,CTr,FTi");
 }
 
+CLI::Validator terrain_value() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          robot::parse_terrain(text);
+        } catch (const BadInput& e) {
+          return e.what();
+        }
+        return {};
+      },
+      "TERRAIN");
+}
+
 CLI::Validator model_name() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
@@ -149,7 +162,6 @@ std::string sim_flag(const std::string& key) {
   return flag;
 }
 
-
 void add_sim_flags(CLI::App& cmd, sim::SimOptions& o, BodyFlags& body, bool with_servo) {
   cmd.add_option("--control-dt", o.control_dt,
                  "simulated seconds per controller step (paper: 0.037 s, 27 Hz)")
@@ -160,6 +172,14 @@ void add_sim_flags(CLI::App& cmd, sim::SimOptions& o, BodyFlags& body, bool with
                  "divides --control-dt, 0.004625 s for 0.037 s); --control-dt must be a whole "
                  "multiple of it (relative tolerance 1e-6)")
       ->check(in(sim::kPhysicsDtLimits));
+  cmd.add_option_function<std::string>(
+         "--terrain",
+         [&o](const std::string& text) { o.scene.terrain = robot::parse_terrain(text); },
+         "the ground: flat, slope:DEG[:HEADING_DEG] (0..30 deg, heading 0 = uphill ahead), "
+         "rough:HEIGHT_M[:SEED] (bumps up to 0.001..0.05 m), steps:HEIGHT_M:DEPTH_M; the tunnel "
+         "stands on it (docs/faults.md)")
+      ->check(terrain_value())
+      ->default_str("flat");
   if (with_servo) {
     cmd.add_option("--servo-gain", o.servo_gain,
                    "servo gain K in 1/s (0, the default: the reference's 5.24 1/s at its 0.1 s "

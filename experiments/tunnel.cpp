@@ -45,12 +45,12 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
                        /*record_joints=*/false);
   const sim::Pose2 start = stepper.pose();
   if (spec.steering) {
-    stepper.set_before_step([params = *spec.steering,
-                             reflex = learning::start_steering(stepper.sensed_pose())](
-                                sim::Stepper& s) mutable {
-      neural::ControllerState& c = s.state().controller;
-      c.drive = learning::steer(params, reflex, s.sensed_pose(), c.drive);
-    });
+    stepper.set_before_step(
+        [params = *spec.steering,
+         reflex = learning::start_steering(stepper.sensed_pose())](sim::Stepper& s) mutable {
+          neural::ControllerState& c = s.state().controller;
+          c.drive = learning::steer(params, reflex, s.sensed_pose(), c.drive);
+        });
   }
   while (run.steps < spec.max_steps) {
     stepper.step();
@@ -59,7 +59,9 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
       run.touched_wall = true;
       break;
     }
-    if (stepper.pose().x >= length) {
+    // The tunnel's end, along the ground (on a slope its walls are tilted with it).
+    const sim::Position p = sim::trunk_position(model, stepper.state());
+    if (robot::to_ground_frame(model.scene.terrain, {p.x, p.y, p.z})[0] >= length) {
       run.passed = true;
       break;
     }

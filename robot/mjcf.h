@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "robot/body.h"
+#include "robot/terrain.h"
 
 namespace multicpg::robot {
 
@@ -23,7 +24,17 @@ struct Scene {
   bool tunnel = false;
   double tunnel_length = 3.0;  // m
   double tunnel_width = 1.2;   // m
+  Terrain terrain;             // the ground (robot/terrain.h); the walls stand on it
 };
+
+// A file the MJCF refers to, beside it (rough ground's heightfield): its name and bytes.
+struct ModelFile {
+  std::string name;
+  std::string bytes;
+};
+
+// The files make_mjcf's document refers to for `scene` (none for most).
+std::vector<ModelFile> scene_files(const Scene& scene);
 
 // TC, CTr, FTi angles of one leg (rad, joint_map.h convention).
 using LegAngles = std::array<double, kJointsPerLeg>;

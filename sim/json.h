@@ -11,7 +11,16 @@
 
 namespace multicpg::robot {
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Scene, tunnel, tunnel_length, tunnel_width)
+// A terrain is recorded as its spec text ("slope:5:0", robot/terrain.h), so experiment files
+// write it as they would on the command line; an unreadable one throws BadInput.
+inline void to_json(nlohmann::json& j, const Terrain& terrain) {
+  j = terrain_text(terrain);
+}
+inline void from_json(const nlohmann::json& j, Terrain& terrain) {
+  terrain = parse_terrain(j.get<std::string>());
+}
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Scene, tunnel, tunnel_length, tunnel_width, terrain)
 
 }  // namespace multicpg::robot
 

@@ -194,19 +194,39 @@ void check_physics(const SimModel& model, const SimState& state, double previous
   }
 }
 
+// Rough ground and steps cover a square around the start (robot/terrain.h): a robot past its edge
+// walks on what it was not asked to walk on.
+void check_on_terrain(const SimModel& model, const SimState& state) {
+  if (!robot::bounded(model.scene.terrain)) return;
+  const Position p = trunk_position(model, state);
+  const double half = robot::kTerrainSide / 2.0;
+  if (std::abs(p.x) > half || std::abs(p.y) > half) {
+    throw RuntimeFailure(fmt::format(
+        "the robot walked off the {} terrain at step {} (x = {:.2f} m, y = {:.2f} m; it covers "
+        "{} m around the start)",
+        robot::terrain_text(model.scene.terrain), state.step, p.x, p.y, half));
+  }
+}
+
 }  // namespace
 
 // The XML parser is not documented as thread-safe, so loads are serialised.
-std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml) {
+std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml,
+                                                      const std::vector<robot::ModelFile>& files) {
   static std::mutex mutex;
   const std::lock_guard<std::mutex> lock(mutex);
   constexpr const char* kFile = "multicpg.xml";
   auto vfs = std::make_unique<mjVFS>();
   mj_defaultVFS(vfs.get());
-  if (mj_makeEmptyFileVFS(vfs.get(), kFile, static_cast<int>(xml.size())) != 0) {
-    throw RuntimeFailure("MuJoCo: cannot make the in-memory model file");
-  }
-  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), kFile)], xml.data(), xml.size());
+  const auto add = [&](const std::string& name, const std::string& bytes) {
+    if (mj_makeEmptyFileVFS(vfs.get(), name.c_str(), static_cast<int>(bytes.size())) != 0) {
+      mj_deleteVFS(vfs.get());
+      throw RuntimeFailure("MuJoCo: cannot make the in-memory model file " + name);
+    }
+    std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), name.c_str())], bytes.data(), bytes.size());
+  };
+  add(kFile, xml);
+  for (const robot::ModelFile& f : files) add(f.name, f.bytes);
   std::array<char, 1000> error{};
   mjModel* m = mj_loadXML(kFile, vfs.get(), error.data(), static_cast<int>(error.size()));
   mj_deleteVFS(vfs.get());
@@ -251,6 +271,7 @@ void validate(const SimOptions& options) {
   require_in("servo_gain", options.servo_gain, kServoGainLimits);
   require_in("scene.tunnel_length", options.scene.tunnel_length, kTunnelLengthLimits);
   require_in("scene.tunnel_width", options.scene.tunnel_width, kTunnelWidthLimits);
+  within("scene.terrain", [&] { robot::validate(options.scene.terrain); });
   within("controller", [&] { neural::validate(options.controller); });
   within("body", [&] { robot::validate(options.body); });
   physics_substeps(options.control_dt, resolved_physics_dt(options));
@@ -297,7 +318,8 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   model.start_pose = start_pose(model.controller);
   model.xml =
       robot::make_mjcf(model.body, mjcf_options(options, model.physics_dt, model.start_pose));
-  model.mj = compile_mjcf(model.xml);
+  model.files = robot::scene_files(options.scene);
+  model.mj = compile_mjcf(model.xml, model.files);
   const mjModel* m = model.mj.get();
 
   const robot::RobotBody& body = model.body;
@@ -393,6 +415,7 @@ void sim_step(const SimModel& model, SimState& state) {
     mj_step(m, d);
     check_physics(model, state, previous_time, previous);
   }
+  check_on_terrain(model, state);
   ++state.step;
 }
 

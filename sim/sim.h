@@ -121,6 +121,7 @@ struct SimModel {
   int root_qpos = -1;               // free joint: x y z, then quaternion
   int yaw_sensor = -1;              // sensordata address of the front trunk's quaternion
   int start_key = -1;
+  std::vector<robot::ModelFile> files{};  // the files beside the MJCF (robot::scene_files)
 };
 
 // Throws OptionError (key "control_dt", "controller.cpg.w11", "body.total_mass", ...) for a value
@@ -132,7 +133,8 @@ void validate(const SimOptions& options, robot::RobotKind kind);
 
 // Compiles MJCF text (through MuJoCo's in-memory file system). Throws RuntimeFailure if MuJoCo
 // rejects it.
-std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml);
+std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(
+    const std::string& xml, const std::vector<robot::ModelFile>& files = {});
 
 // Routes MuJoCo's warnings (kept for sim_step's error) and fatal errors (one line on stderr,
 // exit 1) away from stdout, MUJOCO_LOG.TXT and its "Press Enter" prompt. Idempotent;

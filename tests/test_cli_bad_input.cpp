@@ -162,6 +162,12 @@ const std::vector<BadInput> kOtherCases{
     {"walk --fault R1.TC:locked=90@0", "limits"},
     {"learn --fault L1:weak=0.3@0 --recover L2:weak@400", "is not weak"},
     {"walk --recover R2.CTr:locked@400", "is not locked"},
+    // Terrains.
+    {"walk --terrain slope:31", "0..30"},
+    {"walk --terrain bumpy", "--terrain"},
+    {"tunnel --terrain rough:x", "not a number"},
+    {"learn --disable R1 --terrain steps:0.02", "steps:HEIGHT_M:DEPTH_M"},
+    {"model --terrain rough:0.01", "--out"},
     // Choices.
     {"learn --disable R1 --mode fast", "fast"},
     {"learn --disable R1 --steering wheel", "wheel"},

@@ -3,12 +3,15 @@
 // the timeline's refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "common/errors.h"
+#include "robot/terrain.h"
 #include "sim/course_json.h"
 #include "sim/fault_effects.h"
 #include "sim/fault_spec.h"
@@ -250,6 +253,108 @@ TEST(FaultText, BadSpecsAreOneLineNamingWhatIsWrong) {
   EXPECT_THROW(sim::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1.TC:weak@10", true)}),
                BadInput);  // a recovery names what it ends
   EXPECT_NO_THROW(sim::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1:weak@10", true)}));
+}
+
+}  // namespace
+
+namespace {
+
+using namespace multicpg;
+
+TEST(Terrain, SpecsReadBackAndBadOnesAreNamed) {
+  for (const std::string text :
+       {"flat", "slope:5:0", "slope:30:-90", "rough:0.01:1", "rough:0.05:7", "steps:0.02:0.2"}) {
+    EXPECT_EQ(robot::terrain_text(robot::parse_terrain(text)), text);
+  }
+  EXPECT_EQ(robot::terrain_text(robot::parse_terrain("slope:5")), "slope:5:0");
+  const auto refused = [](const std::string& text, const std::string& mention) {
+    try {
+      robot::parse_terrain(text);
+      ADD_FAILURE() << text << " accepted";
+    } catch (const BadInput& e) {
+      EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
+    }
+  };
+  refused("slope:31", "0..30");
+  refused("slope:-1", "0..30");
+  refused("slope:5:200", "-180..180");
+  refused("rough:0.2", "0.001..0.05");
+  refused("rough:0.01:x", "seed");
+  refused("steps:0.02", "steps:HEIGHT_M:DEPTH_M");
+  refused("steps:0.02:2", "0.05..1");
+  refused("bumpy", "flat, slope");
+  refused("", "flat, slope");
+  refused("slope:nan", "not a number");
+}
+
+sim::SimModel terrain_model(const std::string& terrain, bool tunnel = false) {
+  sim::SimOptions options;
+  options.scene.terrain = robot::parse_terrain(terrain);
+  options.scene.tunnel = tunnel;
+  return sim::make_sim_model(robot::RobotKind::hexapod, options);
+}
+
+TEST(Terrain, ASlopeTiltsTheGroundTheRobotAndTheWalls) {
+  const sim::SimModel m = terrain_model("slope:10", /*tunnel=*/true);
+  const mjModel* mj = m.mj.get();
+  sim::Stepper s(m, {}, {});
+  // The robot starts standing on the slope, its trunk pitched up with it.
+  const double* q = s.state().data->qpos + m.root_qpos + 3;
+  const double pitch = 2.0 * std::asin(-q[2]) * kDeg;  // about y; up = negative about +y
+  EXPECT_NEAR(std::abs(pitch), 10.0, 1e-9);
+  // The walls stand on the ground: their centres 0.15 m above the plane, along its normal.
+  const int wall = mj_name2id(mj, mjOBJ_GEOM, "wall_left");
+  const double* p = mj->geom_pos + 3 * wall;
+  const std::array<double, 3> in_ground =
+      robot::to_ground_frame(m.scene.terrain, {p[0], p[1], p[2]});
+  EXPECT_NEAR(in_ground[2], 0.15, 1e-9);
+  // Uphill is slower than flat, and the yaw is still measured in the horizontal plane.
+  s.steps(1200);
+  sim::Stepper flat(hexapod(), {}, {});
+  flat.steps(1200);
+  EXPECT_LT(s.pose().x, flat.pose().x);
+  EXPECT_GT(s.pose().x, 0.5) << "it still climbs";
+  EXPECT_LT(std::abs(s.pose().yaw_deg), 10.0);
+}
+
+TEST(Terrain, RoughGroundIsAHeightfieldAndStepsAreBoxes) {
+  const sim::SimModel rough = terrain_model("rough:0.02:3");
+  ASSERT_EQ(rough.mj->nhfield, 1);
+  const int n = robot::rough_samples_per_side();
+  EXPECT_EQ(rough.mj->hfield_nrow[0], n);
+  EXPECT_NEAR(rough.mj->hfield_size[2], 0.02, 1e-12);
+  float lo = 1.0F;
+  float hi = 0.0F;
+  for (int i = 0; i < n * n; ++i) {
+    lo = std::min(lo, rough.mj->hfield_data[i]);
+    hi = std::max(hi, rough.mj->hfield_data[i]);
+  }
+  EXPECT_EQ(lo, 0.0F);
+  EXPECT_EQ(hi, 1.0F);
+  EXPECT_EQ(robot::rough_samples(robot::parse_terrain("rough:0.02:3")),
+            robot::rough_samples(robot::parse_terrain("rough:0.01:3")))
+      << "the seed, not the height, draws the bumps";
+  EXPECT_NE(robot::rough_samples(robot::parse_terrain("rough:0.02:3")),
+            robot::rough_samples(robot::parse_terrain("rough:0.02:4")));
+  sim::Stepper walker(rough, {}, {});
+  walker.steps(600);
+  EXPECT_GT(walker.pose().x, 0.3) << "it walks over 2 cm bumps";
+
+  const sim::SimModel steps = terrain_model("steps:0.02:0.25");
+  EXPECT_GE(mj_name2id(steps.mj.get(), mjOBJ_GEOM, "step_0"), 0);
+  sim::Stepper climber(steps, {}, {});
+  double highest = 0.0;
+  for (int i = 0; i < 1500; ++i) {
+    climber.step();
+    highest = std::max(highest, sim::trunk_position(steps, climber.state()).z);
+  }
+  sim::Stepper level(hexapod(), {}, {});
+  double level_highest = 0.0;
+  for (int i = 0; i < 1500; ++i) {
+    level.step();
+    level_highest = std::max(level_highest, sim::trunk_position(hexapod(), level.state()).z);
+  }
+  EXPECT_GT(highest, level_highest + 0.01) << "the trunk rides up onto the steps";
 }
 
 }  // namespace
