@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/errors.h"
+#include "common/interrupt.h"
 #include "sim/walk.h"
 
 namespace multicpg::sim {
@@ -40,6 +41,7 @@ void Stepper::tell_faults(std::size_t first) {
 }
 
 void Stepper::step() {
+  check_interrupted();
   apply_due_faults();
   if (before_step_) before_step_(*this);
   sim_step(model_, state_);

@@ -54,7 +54,8 @@ class Stepper {
           Observer* observer = nullptr, WalkRecord* record = nullptr, bool record_joints = true);
 
   // Applies the faults due before this step, then one controller step with its physics
-  // (sim_step), records it and shows it to the observer.
+  // (sim_step), records it and shows it to the observer. Throws Interrupted when SIGINT or
+  // SIGTERM asked the process to stop (common/interrupt.h): every run stops within a step.
   void step();
   void steps(long n);
   // Tells the observer (the learner's detections, trials and episodes).

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/errors.h"
+#include "common/interrupt.h"
 
 namespace multicpg::sim {
 namespace {
@@ -61,7 +62,10 @@ SimState start_walk_state(const SimModel& model, const std::vector<int>& periods
 }
 
 void warm_up_controller(const SimModel& model, SimState& state, long steps) {
-  for (long t = 0; t < steps; ++t) neural::controller_step(model.controller, state.controller);
+  for (long t = 0; t < steps; ++t) {
+    check_interrupted();  // a warm-up may be long (up to kMaxSteps)
+    neural::controller_step(model.controller, state.controller);
+  }
 }
 
 void append_record(const SimModel& model, const SimState& state, bool joints, WalkRecord& r) {
