@@ -107,21 +107,27 @@ void run_learn(const LearnOptions& o) {
   const learning::CompensationOptions options =
       compensation_options(o.learning, morph, parse_faults(morph, o.faults));
   const std::vector<std::size_t> failing = learning::failing_legs(options);
-  if (!o.out.empty()) ensure_writable_dir(o.out);
+  const std::filesystem::path dir(o.out);
+  // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
+  // only when the run has ended well (common/atomic_file.h).
+  std::optional<AtomicFile> steps;
+  std::optional<sim::RecordCsvWriter> rows;
+  if (!o.out.empty()) {
+    ensure_writable_dir(o.out);
+    steps.emplace(dir / "steps.csv");
+    rows.emplace(steps->stream(), morph, (dir / "steps.csv").string());
+  }
   const sim::SimModel model = sim::make_sim_model(kind, sim_options(o.sim));
 
   const experiments::LearningRun run =
-      experiments::run_learning(model, options, /*record=*/!o.out.empty());
+      experiments::run_learning(model, options, /*record=*/false, 0, rows ? &*rows : nullptr);
   const learning::LearningResult& r = run.result;
   const nlohmann::json json = learn_json(morph, options, r, o.faults.disable_at);
 
   if (!o.out.empty()) {
-    const std::filesystem::path dir(o.out);
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
     write_file_atomic(dir / "trace.csv", trace_csv(morph, r));
-    AtomicFile steps(dir / "steps.csv");
-    sim::write_record_csv(steps.stream(), morph, run.record);
-    steps.commit();
+    steps->commit();
   }
   if (o.json) {
     std::cout << json.dump(2) << "\n";

@@ -61,10 +61,10 @@ void run_render(const RenderOptions& o) {
   walk.start = {choice.periods, choice.warmup};
   walk.faults = choice.faults;
   walk.steps = o.steps;
-  walk.record = false;
+  walk.keep_record = false;  // the film sees every step; nothing kept per step
   report::FilmObserver observer(film, "walking");
   walk.observer = &observer;
-  const sim::WalkResult r = sim::walk(model, walk);
+  const sim::WalkResult r = walk_with_flags(model, walk);
   if (film.format() == report::FilmFormat::picture) {
     film.picture(r.final_state, observer.caption());
   }

@@ -26,12 +26,7 @@ void run_view(const ViewOptions& o, bool steps_given) {
   spec.start = {choice.periods, choice.warmup};
   spec.faults = choice.faults;
   if (steps_given) {
-    for (const sim::Fault& f : spec.faults) {
-      if (f.step >= o.steps) {
-        throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +
-                       std::to_string(o.steps - 1) + ", got " + std::to_string(f.step));
-      }
-    }
+    require_faults_within(spec.faults, o.steps);
     spec.steps = o.steps;
   }
 

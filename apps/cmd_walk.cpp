@@ -118,19 +118,23 @@ void run_walk(const WalkOptions& o) {
   spec.settle = o.settle;
   spec.steps = o.steps;
   spec.window = o.window;
-  spec.record = !o.csv.empty();
+  // Every step streams to the CSV as it is made (README: memory flat in the walk's length); the
+  // file takes its name only when the walk has ended well (common/atomic_file.h).
+  spec.keep_record = false;
   const sim::SimOptions sim_opts = sim_options(o.sim);
   std::optional<AtomicFile> csv;
-  if (!o.csv.empty()) csv.emplace(o.csv);
+  std::optional<sim::RecordCsvWriter> rows;
+  if (!o.csv.empty()) {
+    csv.emplace(o.csv);
+    rows.emplace(csv->stream(), morph, o.csv);
+    spec.observer = &*rows;
+  }
 
   const sim::SimModel model = sim::make_sim_model(kind, sim_opts);
   run.control_dt = model.control_dt;
   run.physics_dt = model.physics_dt;
-  const sim::WalkResult result = sim::walk(model, spec);
-  if (csv) {
-    sim::write_record_csv(csv->stream(), *run.morph, result.record);
-    csv->commit();
-  }
+  const sim::WalkResult result = walk_with_flags(model, spec);
+  if (csv) csv->commit();
   if (o.json) {
     std::cout << to_json(run, result).dump(2) << "\n";
   } else {

@@ -69,6 +69,26 @@ sim::FaultTimeline parse_faults(const robot::Morphology& morph, const WalkFlags&
   return faults;
 }
 
+void require_faults_within(const sim::FaultTimeline& faults, long steps) {
+  for (const sim::Fault& f : faults) {
+    if (f.step >= steps) {
+      throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +
+                     std::to_string(steps - 1) + ", got " + std::to_string(f.step));
+    }
+  }
+}
+
+sim::WalkResult walk_with_flags(const sim::SimModel& model, const sim::WalkSpec& spec) {
+  require_faults_within(spec.faults, spec.settle + spec.steps);
+  try {
+    return sim::walk(model, spec);
+  } catch (const OptionError& e) {
+    const std::string flag =
+        e.key() == "faults" ? "--disable-at, --fault or --recover" : "--" + e.key();
+    throw BadInput(flag + ": " + e.what());
+  }
+}
+
 void require_working_leg(const robot::Morphology& morph, const std::vector<std::size_t>& disabled) {
   if (disabled.size() == morph.size()) {
     throw BadInput("--disable: cannot disable every leg of the " + morph.name);

@@ -8,6 +8,7 @@
 
 #include "robot/morphology.h"
 #include "sim/stepper.h"
+#include "sim/walk.h"
 
 namespace multicpg::apps {
 
@@ -42,6 +43,14 @@ WalkChoice parse_walk_flags(const WalkFlags& flags);
 // recovery before a failure at the same step); throws BadInput (sim::validate) when it cannot
 // happen.
 sim::FaultTimeline parse_faults(const robot::Morphology& morph, const WalkFlags& flags);
+
+// Throws BadInput naming --disable-at (or --recover) unless every fault comes before step
+// `steps` of a run.
+void require_faults_within(const sim::FaultTimeline& faults, long steps);
+
+// sim::walk, a bad spec named by the flags that set it (--steps, --settle, --window, --warmup,
+// --periods; --disable-at, --fault or --recover for a fault) instead of the spec's keys.
+sim::WalkResult walk_with_flags(const sim::SimModel& model, const sim::WalkSpec& spec);
 
 // Throws unless some leg of `morph` stays working.
 void require_working_leg(const robot::Morphology& morph, const std::vector<std::size_t>& disabled);

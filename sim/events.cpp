@@ -30,10 +30,11 @@ void validate(const robot::Morphology& morph, const FaultTimeline& faults) {
   std::vector<bool> failed(morph.size(), false);
   long previous = 0;
   for (const Fault& f : faults) {
-    const char* what = f.recover ? "--recover" : "--fault";
+    // Named as a fault or a recovery: callers say where it came from (a flag, a file's key).
+    const char* what = f.recover ? "a recovery" : "a fault";
     if (f.step < 0 || f.step > kMaxSteps) {
-      throw BadInput(std::string(what) + " step must be in 0.." + std::to_string(kMaxSteps) +
-                     ", got " + std::to_string(f.step));
+      throw BadInput(std::string(what) + " at step " + std::to_string(f.step) +
+                     ": steps must be in 0.." + std::to_string(kMaxSteps));
     }
     if (f.step < previous) throw BadInput("faults must be listed in step order");
     previous = f.step;

@@ -5,6 +5,7 @@
 
 #include "common/errors.h"
 #include "common/interrupt.h"
+#include "common/limits.h"
 #include "sim/walk.h"
 
 namespace multicpg::sim {
@@ -17,15 +18,14 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
       observer_(observer),
       record_(record),
       record_joints_(record_joints) {
-  if (start.warmup < 0) {
-    throw BadInput("--warmup must not be negative, got " + std::to_string(start.warmup));
-  }
+  require_in("warmup", start.warmup, kStepLimits);
   apply_due_faults();
   warm_up_controller(model_, state_, start.warmup);
   if (record_ != nullptr) {
     record_->legs = model.legs.size();
     append_record(model_, state_, record_joints_, *record_);
   }
+  if (observer_ != nullptr) observer_->on_start(model_, state_);
 }
 
 void Stepper::apply_due_faults() {

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "sim/deviation.h"
@@ -33,9 +34,32 @@ struct StartSpec {
 class Observer {
  public:
   virtual ~Observer() = default;
+  // The start state, after the warm-up (row 0 of a record), before the first step.
+  virtual void on_start(const SimModel& /*model*/, const SimState& /*state*/) {}
   virtual void on_step(const SimModel& /*model*/, const SimState& /*state*/) {}
   virtual void on_event(const SimModel& /*model*/, const SimState& /*state*/,
                         const Event& /*event*/) {}
+};
+
+// Several observers as one, told in order (null ones are skipped).
+class Observers final : public Observer {
+ public:
+  explicit Observers(std::vector<Observer*> all) : all_(std::move(all)) {}
+  void on_start(const SimModel& model, const SimState& state) override {
+    for (Observer* o : all_)
+      if (o != nullptr) o->on_start(model, state);
+  }
+  void on_step(const SimModel& model, const SimState& state) override {
+    for (Observer* o : all_)
+      if (o != nullptr) o->on_step(model, state);
+  }
+  void on_event(const SimModel& model, const SimState& state, const Event& event) override {
+    for (Observer* o : all_)
+      if (o != nullptr) o->on_event(model, state, event);
+  }
+
+ private:
+  std::vector<Observer*> all_;
 };
 
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
