@@ -26,6 +26,7 @@ struct ExperimentOptions {
   LearningFlags learning;
   long check_windows = 0;
   sim::SimOptions sim;
+  std::int64_t max_runs = experiments::kDefaultMaxRuns;
 };
 
 experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
@@ -40,6 +41,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
       compensation_options(o.learning, robot::morphology(kind), {sim::Fault{0, {0}, false}});
   spec.check_windows = o.check_windows;
   spec.sim = sim_options(o.sim);
+  spec.limits.max_runs = o.max_runs;
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
 }
@@ -72,6 +74,7 @@ void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with
       ->check(in(experiments::kCheckWindowsLimits))
       ->capture_default_str();
   add_sim_flags(cmd, o.sim);
+  add_max_runs_flag(cmd, o.max_runs);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 // lists form a grid, and each grid point x scenario x run is one task.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -29,6 +30,7 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/experiment_limits.h"
 #include "experiments/landscape.h"
 #include "experiments/learning_experiments.h"
 #include "experiments/runner.h"
@@ -70,8 +72,11 @@ struct Sweep {
 
 // Resolves a document; throws OptionError whose key is the dotted path of the first bad value
 // ("learning.annealing.beta", "scenarios[2]") for a wrong type, an unknown key, an empty list,
-// a bad leg name or an out-of-range value (learning::validate and sim checks, before any run).
-Sweep resolve_sweep(const nlohmann::json& document);
+// a bad leg name or an out-of-range value (learning::validate and sim checks, before any run),
+// a list longer than kMaxListValues or nesting deeper than kMaxExperimentDepth (checked first,
+// without recursion). Throws BadInput naming the grid's axes and their product when the runs
+// (or a landscape's combinations) are more than `limits` allow, before any run is made.
+Sweep resolve_sweep(const nlohmann::json& document, const SweepLimits& limits = {});
 
 // The document of a landscape (what examples/landscape-*.toml hold; `multicpg landscape`).
 nlohmann::json landscape_document(const LandscapeSpec& spec);
@@ -104,7 +109,8 @@ sim::SimModel make_task_model(const Task& task);
 // The result of one task, computed as run_sweep does; `observer` (may be null) sees every step.
 nlohmann::json run_sweep_task(const Task& task, sim::Observer* observer = nullptr);
 
-// The experiment recorded in DIR/experiment.json, and its shard.
+// The experiment recorded in DIR/experiment.json, and its shard. Throws BadInput for a
+// directory without one, and for a landscape's (which is resumed, never rerun or merged).
 struct RecordedSweep {
   Sweep sweep;
   Shard shard;

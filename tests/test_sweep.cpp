@@ -120,7 +120,7 @@ TEST(Sweep, BadFilesNameFileLineAndKey) {
       {ok + "runs = 0\n", "2: runs must be in 1.."},
       {ok + "runs = \"ten\"\n", "2: runs must be a whole number"},
       {ok + "runs = 2.5\n", "2: runs must be a whole number"},
-      {ok + "seed = -1\n", "2: seed must be a whole number >= 0"},
+      {ok + "seed = -1\n", "2: seed must be in 0..4294967295, got -1"},
       {ok + "kind = \"tunnel\"\n", "2: kind must be"},
       {ok + "[learning]\nbeta = 1\n", "3: learning.beta is not an option"},
       {ok + "[learning.annealing]\nbeta = -1\n", "3: learning.annealing.beta"},
@@ -175,7 +175,7 @@ TEST(Sweep, BadFilesNameFileLineAndKey) {
   for (const char* shard : {"2/2", "1/0", "a/b", "1", "-1/2"}) {
     expect_bad_input("run " + file + " --check --shard " + shard, "--shard must be i/N");
   }
-  expect_bad_input("run " + file + " --check --runs 0", "--runs must be at least 1");
+  expect_bad_input("run " + file + " --check --runs 0", "--runs: must be in 1..100000, got 0");
   expect_bad_input("run " + file, "--out");
   fs::remove_all(dir);
 }
