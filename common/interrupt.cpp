@@ -38,8 +38,4 @@ void check_interrupted() {
   if (const int s = pending.load(std::memory_order_relaxed); s != 0) throw Interrupted(s);
 }
 
-void request_interrupt(int signal) {
-  on_signal(signal);
-}
-
 }  // namespace multicpg

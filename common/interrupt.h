@@ -19,7 +19,4 @@ int interrupt_signal();
 // called every controller step.
 void check_interrupted();
 
-// Records `signal` as the handler does; for tests and for forwarding a stop from elsewhere.
-void request_interrupt(int signal);
-
 }  // namespace multicpg
