@@ -290,6 +290,9 @@ windows = 1
     EXPECT_FALSE(comparable(dir + "/a/" + name).empty()) << name;
     EXPECT_EQ(comparable(dir + "/a/" + name), comparable(dir + "/b/" + name)) << name;
   }
+  // A landscape is resumed by running it again, never rerun or merged like a sweep's runs.
+  expect_bad_input("rerun " + dir + "/b R1-4_R2-4_L1-4", "holds a landscape, which is not rerun");
+  expect_bad_input("merge " + dir + "/m " + dir + "/a", "holds a landscape, which is not rerun");
   write(dir + "/bad.toml", "kind = \"landscape\"\nscenarios = [\"R1\", \"R2\"]\n");
   expect_bad_input("run " + dir + "/bad.toml --check", dir + "/bad.toml:2: scenarios");
   write(dir + "/bad.toml",
