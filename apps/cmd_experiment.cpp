@@ -27,6 +27,7 @@ struct ExperimentOptions {
   long check_windows = 0;
   sim::SimOptions sim;
   BodyFlags body;
+  std::int64_t max_runs = experiments::kDefaultMaxRuns;
 };
 
 experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
@@ -39,6 +40,7 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind
   spec.base = learning_options(o.learning);  // checked with each run (resolve_sweep)
   spec.check_windows = o.check_windows;
   spec.sim = sim_options(o.sim, o.body, kind);
+  spec.limits.max_runs = o.max_runs;
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
 }
@@ -71,6 +73,7 @@ void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with
       ->check(in(experiments::kCheckWindowsLimits))
       ->capture_default_str();
   add_sim_flags(cmd, o.sim, o.body);
+  add_max_runs_flag(cmd, o.max_runs);
 }
 
 }  // namespace

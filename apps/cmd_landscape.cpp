@@ -34,6 +34,7 @@ struct LandscapeOptions {
   std::string learned;
   sim::SimOptions sim;
   BodyFlags body;
+  std::int64_t max_runs = experiments::kDefaultMaxRuns;
 };
 
 std::vector<learning::Periods> read_learned(const std::string& path,
@@ -63,10 +64,10 @@ void run(const LandscapeOptions& o) {
     throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
   }
   const std::vector<learning::Periods> learned = read_learned(o.learned, spec);
-  if (experiments::is_primary_process()) ensure_writable_dir(o.out);
   // The same document an experiment file of kind "landscape" holds, resolved the same way.
   const experiments::Sweep sweep =
-      experiments::resolve_sweep(experiments::landscape_document(spec));
+      experiments::resolve_sweep(experiments::landscape_document(spec), {o.max_runs, "--max-runs"});
+  if (experiments::is_primary_process()) ensure_writable_dir(o.out);
   run_landscape_and_report(*sweep.landscape, o.out, o.jobs.value_or(experiments::default_jobs()),
                            learned);
 }
@@ -125,6 +126,7 @@ void register_landscape(CLI::App& app) {
   cmd->add_option("--learned", o->learned,
                   "JSON array of learned combinations ({leg: period} objects) to mark");
   add_sim_flags(*cmd, o->sim, o->body);
+  add_max_runs_flag(*cmd, o->max_runs);
   cmd->callback([o] { run(*o); });
 }
 

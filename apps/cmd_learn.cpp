@@ -100,25 +100,31 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearningRe
 }
 
 void run_learn(const LearnOptions& o) {
-  experiments::RunSpec spec = run_spec(o.run, /*learn=*/true);
-  spec.record.steps = !o.out.empty();
+  const experiments::RunSpec spec = run_spec(o.run, /*learn=*/true);
   const robot::Morphology& morph = experiments::morphology(spec);
   const learning::CompensationOptions& options = *spec.learning;
   const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
-  if (!o.out.empty()) ensure_writable_dir(o.out);
+  const std::filesystem::path dir(o.out);
+  // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
+  // only when the run has ended well (common/atomic_file.h).
+  std::optional<AtomicFile> steps;
+  std::optional<sim::RecordCsvWriter> rows;
+  if (!o.out.empty()) {
+    ensure_writable_dir(o.out);
+    steps.emplace(dir / "steps.csv");
+    rows.emplace(steps->stream(), morph, (dir / "steps.csv").string());
+  }
   const sim::SimModel model = experiments::make_run_model(spec);
 
-  const experiments::LearningRun run = experiments::run_learning(model, spec);
+  const experiments::LearningRun run =
+      experiments::run_learning(model, spec, 0, rows ? &*rows : nullptr);
   const learning::LearningResult& r = run.result;
   const nlohmann::json json = experiments::learn_json(spec, r);
 
   if (!o.out.empty()) {
-    const std::filesystem::path dir(o.out);
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
     write_file_atomic(dir / "trace.csv", trace_csv(morph, r));
-    AtomicFile steps(dir / "steps.csv");
-    sim::write_record_csv(steps.stream(), morph, run.record);
-    steps.commit();
+    steps->commit();
   }
   if (o.json) {
     std::cout << json.dump(2) << "\n";

@@ -52,10 +52,15 @@ void run_render(const RenderOptions& o) {
   walk.start = run.start;
   walk.faults = run.faults;
   walk.steps = o.steps;
-  walk.record = false;
+  walk.keep_record = false;  // the film sees every step; nothing kept per step
   report::FilmObserver observer(film, "walking");
   walk.observer = &observer;
-  const sim::WalkResult r = sim::walk(model, walk);
+  sim::WalkResult r;
+  try {
+    r = sim::walk(model, walk);
+  } catch (const OptionError& e) {
+    throw BadInput(flag_of(e.key(), o.run) + ": " + e.what());
+  }
   if (film.format() == report::FilmFormat::picture) {
     film.picture(r.final_state, observer.caption());
   }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/provenance.h"
@@ -26,12 +27,8 @@ struct RunOptions {
   std::optional<int> runs;
   std::string shard = "0/1";
   bool check = false;
+  std::int64_t max_runs = experiments::kDefaultMaxRuns;
 };
-
-int checked_jobs(const std::optional<int>& jobs) {
-  if (jobs && *jobs < 1) throw BadInput("--jobs must be at least 1, got " + std::to_string(*jobs));
-  return jobs.value_or(experiments::default_jobs());
-}
 
 void print_table(const experiments::ExperimentTable& t) {
   std::cout << (t.experiment == experiments::ExperimentKind::beta
@@ -42,12 +39,10 @@ void print_table(const experiments::ExperimentTable& t) {
 }
 
 void run(const RunOptions& o) {
-  if (o.runs && *o.runs < 1) {
-    throw BadInput("--runs must be at least 1, got " + std::to_string(*o.runs));
-  }
   const experiments::Shard shard = experiments::parse_shard(o.shard);
-  const int jobs = checked_jobs(o.jobs);
-  const experiments::Sweep sweep = experiments::load_experiment_file(o.file, o.runs);
+  const int jobs = o.jobs.value_or(experiments::default_jobs());
+  const experiments::Sweep sweep =
+      experiments::load_experiment_file(o.file, o.runs, {o.max_runs, "--max-runs"});
   if (o.out.empty() && !o.check) {
     throw BadInput("--out: name the directory for the runs (or use --check)");
   }
@@ -167,8 +162,11 @@ void register_run(CLI::App& app) {
       "run", "run an experiment file (TOML: scenarios, a grid of options, runs; README)");
   cmd->add_option("FILE", o->file, "the experiment file (examples/*.toml)")->required();
   cmd->add_option("--out", o->out, "directory for the runs, tables and CSVs (resumes)");
-  cmd->add_option("--jobs", o->jobs, "parallel runs (default: every core)");
-  cmd->add_option("--runs", o->runs, "runs per grid point and scenario (replaces the file's)");
+  cmd->add_option("--jobs", o->jobs, "parallel runs (default: every core)")
+      ->check(in(experiments::kJobsLimits));
+  cmd->add_option("--runs", o->runs, "runs per grid point and scenario (replaces the file's)")
+      ->check(in(experiments::kRunsLimits));
+  add_max_runs_flag(*cmd, o->max_runs);
   cmd->add_option("--shard", o->shard,
                   "i/N: run only the runs whose index % N == i (a job array; join with merge)")
       ->capture_default_str();

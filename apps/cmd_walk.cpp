@@ -121,9 +121,16 @@ void run_walk(const WalkOptions& o) {
   spec.settle = o.settle;
   spec.steps = o.steps;
   spec.window = o.window;
-  spec.record = !o.csv.empty();
+  // Every step streams to the CSV as it is made (README: memory flat in the walk's length); the
+  // file takes its name only when the walk has ended well (common/atomic_file.h).
+  spec.keep_record = false;
   std::optional<AtomicFile> csv;
-  if (!o.csv.empty()) csv.emplace(o.csv);
+  std::optional<sim::RecordCsvWriter> rows;
+  if (!o.csv.empty()) {
+    csv.emplace(o.csv);
+    rows.emplace(csv->stream(), morph, o.csv);
+    spec.observer = &*rows;
+  }
 
   const sim::SimModel model = experiments::make_run_model(run_spec);
   run.control_dt = model.control_dt;
@@ -134,10 +141,7 @@ void run_walk(const WalkOptions& o) {
   } catch (const OptionError& e) {
     throw BadInput(flag_of(e.key(), o.run) + ": " + e.what());
   }
-  if (csv) {
-    sim::write_record_csv(csv->stream(), *run.morph, result.record);
-    csv->commit();
-  }
+  if (csv) csv->commit();
   if (o.json) {
     std::cout << to_json(run, result).dump(2) << "\n";
   } else {

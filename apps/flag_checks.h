@@ -28,25 +28,33 @@ CLI::Validator in(const Limits<T>& limits) {
       "in " + limits.text());
 }
 
-// A seed: a whole number 0..2^64-1 written in digits only (no sign, so -1 cannot wrap).
+// A seed in kSeedLimits written in digits only (no sign, so -1 cannot wrap).
 inline CLI::Validator seed_value() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         std::uint64_t value = 0;
         const char* end = text.data() + text.size();
         const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-        if (text.empty() || ec != std::errc() || ptr != end) {
-          return "'" + text + "' is not a seed (a whole number 0..18446744073709551615)";
+        if (text.empty() || ptr != end ||
+            (ec != std::errc() && ec != std::errc::result_out_of_range)) {
+          return "'" + text + "' is not a seed (a whole number in " + kSeedLimits.text() + ")";
+        }
+        if (ec == std::errc::result_out_of_range || !kSeedLimits.contains(value)) {
+          return "must be in " + kSeedLimits.text() + ", got " + text;
         }
         return {};
       },
-      "0..2^64-1");
+      "in " + kSeedLimits.text());
 }
 
 // A path or name that is not the empty string.
 inline const CLI::Validator kNotEmpty(
     [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; },
     "not empty");
+
+// --max-runs: the most runs (grid points x scenarios x runs, or a landscape's combinations) an
+// experiment may have (experiments/experiment_limits.h).
+void add_max_runs_flag(CLI::App& cmd, std::int64_t& max_runs);
 
 // Adds kNotEmpty to every option of `app` and its subcommands that takes a value: no flag of
 // multicpg has a meaning for the empty string (a number, path, name or list).

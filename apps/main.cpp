@@ -1,5 +1,6 @@
 // multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
-// Exit codes: 0 success, 2 bad input, 1 runtime failure (under mpirun: the job's, printed once).
+// Exit codes: 0 success, 2 bad input, 1 runtime failure, 130 / 143 stopped by SIGINT / SIGTERM
+// (under mpirun: the job's, printed once).
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "common/errors.h"
+#include "common/interrupt.h"
 #include "common/provenance.h"
 #include "experiments/processes.h"
 #include "sim/sim.h"
@@ -73,6 +75,7 @@ experiments::Ending run(int argc, char** argv) {
   const auto failed = [](int code, const char* what) {
     return experiments::Ending{code, std::string("multicpg: ") + what};
   };
+  const auto stopped = [&failed](const Interrupted& e) { return failed(e.exit_code(), e.what()); };
   try {
     if (argc > 1 && argv[1][0] != '-') {
       try {
@@ -93,15 +96,22 @@ experiments::Ending run(int argc, char** argv) {
     return failed(2, e.what());
   } catch (const experiments::FailedElsewhere& e) {
     return {e.code(), ""};  // the failing process reports it
+  } catch (const Interrupted& e) {
+    return stopped(e);
   } catch (const std::exception& e) {
+    // A failure a signal caused (a child process killed by the same Ctrl-C) is the signal's.
+    if (interrupt_signal() != 0) return stopped(Interrupted(interrupt_signal()));
     return failed(1, e.what());
   }
+  // Stopped after the work was done: the files are whole, but the user asked to stop.
+  if (interrupt_signal() != 0) return stopped(Interrupted(interrupt_signal()));
   return {};
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  multicpg::install_interrupt_handlers();
   multicpg::sim::install_mujoco_handlers();
   multicpg::set_command_line(argc, argv);
   // Under mpirun, one of the job's processes (experiments/processes.h).

@@ -42,17 +42,6 @@ bool sync_path(const fs::path& path, int flags) {
   return ok;
 }
 
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 // The pid in a temporary sibling's name "<file>.tmp<pid>", if it is one.
 std::optional<pid_t> temp_owner(const fs::path& path) {
   const std::string name = path.filename().string();
@@ -85,9 +74,10 @@ AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
       throw BadInput(cannot_write(
           path_, errno == ENXIO ? "FIFO has no reader" : std::string(std::strerror(errno))));
     }
-    const int flags = ::fcntl(special_fd_, F_GETFL);
-    ::fcntl(special_fd_, F_SETFL, flags & ~O_NONBLOCK);  // then block like any other write
-    out_ = &special_;
+    // It has a reader now, so this open does not wait; writes block like any other.
+    file_.open(target_, std::ios::out | std::ios::binary);
+    if (!file_) throw BadInput(cannot_write(path_, std::strerror(errno)));
+    out_ = &file_;
     return;
   }
   if (fs::exists(status) && !fs::is_regular_file(status)) {
@@ -110,12 +100,15 @@ AtomicFile::~AtomicFile() {
 
 void AtomicFile::commit(const Verify& verify) {
   if (special_fd_ >= 0) {
-    const bool ok = write_all(special_fd_, special_.str());
+    file_.flush();
+    const bool ok = static_cast<bool>(file_);
     const int error = errno;
+    file_.close();
     ::close(special_fd_);
     special_fd_ = -1;
-    if (!ok)
+    if (!ok || file_.fail()) {
       throw RuntimeFailure("writing '" + path_.string() + "' failed: " + std::strerror(error));
+    }
     committed_ = true;
     return;
   }

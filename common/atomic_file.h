@@ -1,13 +1,13 @@
 // Output files that appear whole or not at all: written to a temporary sibling, flushed to disk
 // (fsync) and renamed on commit(), so a failed, interrupted or power-cut run never leaves a
 // half-written file. A symlink is followed (the file it names is replaced, the link stays); a
-// FIFO or character device (/dev/null, /dev/stdout) is written in place, never replaced.
+// FIFO or character device (/dev/null, /dev/stdout) is written in place as the text comes (so a
+// streamed record keeps no copy in memory), never replaced.
 #pragma once
 
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 
 namespace multicpg {
@@ -32,9 +32,8 @@ class AtomicFile {
   std::filesystem::path path_;    // as given, for messages
   std::filesystem::path target_;  // path_ with symlinks followed: the file replaced
   std::filesystem::path tmp_;
-  int special_fd_ = -1;         // an open FIFO or character device, written in place
-  std::ofstream file_;          // the temporary file...
-  std::ostringstream special_;  // ...or what goes to the FIFO or device on commit()
+  int special_fd_ = -1;  // a FIFO or character device, held open while file_ writes it in place
+  std::ofstream file_;   // the temporary file, or the FIFO or device
   std::ostream* out_ = nullptr;
   bool committed_ = false;
 };

@@ -1,4 +1,5 @@
-// Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1.
+// Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1, Interrupted ->
+// 128 + the signal (130 for SIGINT, 143 for SIGTERM; README "Exit codes").
 #pragma once
 
 #include <stdexcept>
@@ -29,6 +30,28 @@ class OptionError : public BadInput {
 class RuntimeFailure : public std::runtime_error {
  public:
   explicit RuntimeFailure(const std::string& what) : std::runtime_error(what) {}
+};
+
+// The user stopped the run (SIGINT or SIGTERM, common/interrupt.h). Thrown where the work checks
+// for it and unwinds like any error, so temporary files are removed by their owners.
+class Interrupted : public std::runtime_error {
+ public:
+  explicit Interrupted(int signal) : std::runtime_error(message(signal)), signal_(signal) {}
+  int signal() const { return signal_; }
+  int exit_code() const { return kSignalExitBase + signal_; }
+  // The shell's convention for a process ended by a signal.
+  static constexpr int kSignalExitBase = 128;
+
+ private:
+  static std::string message(int signal) {
+    constexpr int kSigint = 2;  // POSIX fixes both numbers
+    constexpr int kSigterm = 15;
+    return signal == kSigint    ? "interrupted by SIGINT"
+           : signal == kSigterm ? "interrupted by SIGTERM"
+                                : "interrupted by signal " + std::to_string(signal);
+  }
+
+  int signal_;
 };
 
 }  // namespace multicpg

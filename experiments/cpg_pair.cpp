@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "common/interrupt.h"
+
 namespace multicpg::experiments {
 
 std::vector<CpgPairSample> run_cpg_pair(const neural::CpgParams& params,
@@ -15,6 +17,7 @@ std::vector<CpgPairSample> run_cpg_pair(const neural::CpgParams& params,
   std::vector<CpgPairSample> out;
   out.reserve(options.steps);
   for (long t = 0; t < options.steps; ++t) {
+    check_interrupted();
     neural::cpg_step(params, master);
     neural::cpg_step(params, client, neural::SyncInput{alpha, master.x1});
     out.push_back({master.x1, master.x2, client.x1, client.x2});

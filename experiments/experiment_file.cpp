@@ -1,15 +1,17 @@
 #include "experiments/experiment_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <toml++/toml.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "common/errors.h"
+#include "experiments/experiment_limits.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -24,26 +26,35 @@ std::string child(const std::string& path, std::string_view key) {
   return path.empty() ? std::string(key) : path + "." + std::string(key);
 }
 
-json to_json(const toml::node& node, const std::string& path, Lines& lines,
+// The document of a parsed file; `depth` counts levels as line_nested_deeper does, a second
+// guard of the bound the text was scanned for.
+json to_json(const toml::node& node, const std::string& path, int depth, Lines& lines,
              const std::string& file) {
   lines.emplace(path, static_cast<long>(node.source().begin.line));
   const auto bad = [&](const std::string& what) {
     return BadInput(file + ":" + std::to_string(node.source().begin.line) + ": " + path + " " +
                     what);
   };
+  if (depth > kMaxExperimentDepth) {
+    throw bad("is nested more than " + std::to_string(kMaxExperimentDepth) + " levels deep");
+  }
   if (const toml::table* t = node.as_table()) {
     json out = json::object();
     for (const auto& [key, value] : *t) {
       const std::string p = child(path, key.str());
       lines.emplace(p, static_cast<long>(key.source().begin.line));
-      out[std::string(key.str())] = to_json(value, p, lines, file);
+      out[std::string(key.str())] = to_json(value, p, depth + 1, lines, file);
     }
     return out;
   }
   if (const toml::array* a = node.as_array()) {
+    if (a->size() > kMaxListValues) {
+      throw bad("has " + std::to_string(a->size()) + " values, more than the " +
+                std::to_string(kMaxListValues) + " a list may have");
+    }
     json out = json::array();
     for (std::size_t i = 0; i < a->size(); ++i) {
-      out.push_back(to_json((*a)[i], path + "[" + std::to_string(i) + "]", lines, file));
+      out.push_back(to_json((*a)[i], path + "[" + std::to_string(i) + "]", depth + 1, lines, file));
     }
     return out;
   }
@@ -67,33 +78,284 @@ std::optional<long> line_of(const Lines& lines, std::string key) {
   }
 }
 
+// The nesting of TOML text, from its structure alone (line_nested_deeper). Written by hand
+// because toml++ has no bound on tables and dotted keys and builds the whole tree before it
+// could be measured (experiment_limits.h). It follows TOML 1.0: statements line by line (a table
+// header or key = value), keys of bare or quoted parts joined by dots, values that are strings,
+// lists, inline tables or anything else up to the next delimiter. What it cannot follow (a
+// syntax error, which toml++ then reports) it skips to the next line, so it never stops early.
+class NestingScan {
+ public:
+  NestingScan(std::string_view text, int limit) : t_(text), limit_(limit) {}
+
+  std::optional<long> run() {
+    int table = 0;  // the level of the current [table] or [[array of tables]]
+    for (;;) {
+      skip_blank_lines();
+      if (at_end()) return std::nullopt;
+      if (peek() == '[') {
+        i_ += peek(1) == '[' ? 2 : 1;  // [table] or [[array of tables]]
+        const int parts = key();
+        if (parts < 0) {
+          next_line();
+          continue;
+        }
+        // Any part may name an array of tables, whose last element is one level more.
+        table = 2 * parts;
+        if (too_deep(table)) return line_;
+        next_line();
+        continue;
+      }
+      const int parts = key();
+      skip_blank();
+      if (parts < 0 || peek() != '=') {
+        next_line();
+        continue;
+      }
+      ++i_;
+      const Result r = value(table + parts);
+      if (r == Result::deep) return line_;
+      if (r == Result::bad) next_line();
+    }
+  }
+
+ private:
+  enum class Result { ok, bad, deep };
+
+  bool at_end() const { return i_ >= t_.size(); }
+  char peek(std::size_t ahead = 0) const { return i_ + ahead < t_.size() ? t_[i_ + ahead] : '\0'; }
+  bool too_deep(int depth) const { return depth > limit_; }
+
+  void skip_blank() {
+    while (peek() == ' ' || peek() == '\t' || peek() == '\r') ++i_;
+  }
+  // Blanks, comments and newlines: what may separate values in a list.
+  void skip_blank_lines() {
+    for (;;) {
+      skip_blank();
+      if (peek() == '#') {
+        while (!at_end() && peek() != '\n') ++i_;
+      }
+      if (at_end() || peek() != '\n') return;
+      ++i_;
+      ++line_;
+    }
+  }
+  // To the end of the line (its newline is left for skip_blank_lines to count).
+  void next_line() {
+    while (!at_end() && peek() != '\n') ++i_;
+  }
+
+  // At a quote: skips a basic or literal string, one line or multi-line; false when it does not
+  // end (an end of line in a one-line string, the end of the text).
+  bool string() {
+    const char quote = peek();
+    const bool escapes = quote == '"';
+    if (peek(1) == quote && peek(2) == quote) {
+      i_ += 3;
+      while (!at_end()) {
+        const char c = peek();
+        if (c == '\n') ++line_;
+        if (escapes && c == '\\') {
+          ++i_;
+          if (peek() == '\n') ++line_;
+          if (!at_end()) ++i_;
+          continue;
+        }
+        if (c == quote && peek(1) == quote && peek(2) == quote) {
+          i_ += 3;
+          // Up to two more quotes belong to the string ("""a""""" is a"").
+          for (int extra = 0; extra < 2 && peek() == quote; ++extra) ++i_;
+          return true;
+        }
+        ++i_;
+      }
+      return false;
+    }
+    ++i_;
+    while (!at_end() && peek() != '\n') {
+      const char c = peek();
+      ++i_;
+      if (c == quote) return true;
+      if (escapes && c == '\\' && !at_end() && peek() != '\n') ++i_;
+    }
+    return false;
+  }
+
+  static bool bare(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  }
+
+  // A key: how many dot-separated parts it has, or -1 when none starts here.
+  int key() {
+    int parts = 0;
+    for (;;) {
+      skip_blank();
+      const char c = peek();
+      if (c == '"' || c == '\'') {
+        if (peek(1) == c && peek(2) == c) return -1;  // multi-line strings are no keys
+        if (!string()) return -1;
+      } else if (bare(c)) {
+        while (bare(peek())) ++i_;
+      } else {
+        return -1;
+      }
+      ++parts;
+      skip_blank();
+      if (peek() != '.') return parts;
+      ++i_;
+    }
+  }
+
+  // A value whose node is at level `depth`.
+  Result value(int depth) {
+    if (too_deep(depth)) return Result::deep;
+    skip_blank();
+    const char c = peek();
+    if (c == '"' || c == '\'') return string() ? Result::ok : Result::bad;
+    if (c == '[') return list(depth);
+    if (c == '{') return inline_table(depth);
+    // A number, true/false, date or time: up to the next delimiter.
+    const std::size_t start = i_;
+    while (!at_end() && std::strchr(",]}\n#", peek()) == nullptr) ++i_;
+    return i_ > start ? Result::ok : Result::bad;
+  }
+
+  Result list(int depth) {
+    ++i_;
+    for (;;) {
+      skip_blank_lines();
+      if (peek() == ']') {
+        ++i_;
+        return Result::ok;
+      }
+      if (at_end()) return Result::bad;
+      if (const Result r = value(depth + 1); r != Result::ok) return r;
+      skip_blank_lines();
+      if (peek() == ',') {
+        ++i_;
+        continue;
+      }
+      if (peek() != ']') return Result::bad;
+    }
+  }
+
+  Result inline_table(int depth) {
+    ++i_;
+    skip_blank();
+    if (peek() == '}') {
+      ++i_;
+      return Result::ok;
+    }
+    for (;;) {
+      const int parts = key();
+      skip_blank();
+      if (parts < 0 || peek() != '=') return Result::bad;
+      ++i_;
+      if (const Result r = value(depth + parts); r != Result::ok) return r;
+      skip_blank();
+      if (peek() == ',') {
+        ++i_;
+        continue;
+      }
+      if (peek() != '}') return Result::bad;
+      ++i_;
+      return Result::ok;
+    }
+  }
+
+  std::string_view t_;
+  int limit_;
+  std::size_t i_ = 0;
+  long line_ = 1;
+};
+
+std::string file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "no regular file";
+}
+
+std::string too_large(const std::string& name, const std::string& size) {
+  return name + ": is " + size + ", more than the " + std::string(kMaxExperimentFileText) +
+         " an experiment file may have";
+}
+
 }  // namespace
 
-Sweep load_experiment_file(const std::filesystem::path& file, std::optional<int> runs) {
+std::optional<long> line_nested_deeper(std::string_view text, int limit) {
+  return NestingScan(text, limit).run();
+}
+
+std::string read_experiment_file(const std::filesystem::path& file) {
   const std::string name = file.string();
-  if (std::filesystem::is_directory(file)) throw BadInput(name + ": is a directory, not a file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw BadInput(name + ": cannot read");
+  // O_NONBLOCK: opening a FIFO never waits for a writer; the kind is checked on the open file,
+  // so nothing can be swapped in between.
+  const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
+  if (S_ISDIR(st.st_mode)) throw BadInput(name + ": is a directory, not a file");
+  if (!S_ISREG(st.st_mode)) throw BadInput(name + ": is " + file_kind(st.st_mode) + ", not a file");
+  if (static_cast<std::uintmax_t>(st.st_size) > kMaxExperimentFileBytes) {
+    throw BadInput(too_large(name, std::to_string(st.st_size) + " bytes"));
+  }
+  // Read to the end, but never past the limit (a file may grow, /proc files say size 0).
+  std::string text(kMaxExperimentFileBytes + 1, '\0');
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  if (done > kMaxExperimentFileBytes) throw BadInput(too_large(name, "larger"));
+  text.resize(done);
+  return text;
+}
+
+Sweep parse_experiment_text(std::string_view text, const std::string& name, std::optional<int> runs,
+                            const SweepLimits& limits) {
+  if (text.size() > kMaxExperimentFileBytes) {
+    throw BadInput(too_large(name, std::to_string(text.size()) + " bytes"));
+  }
+  if (const std::optional<long> line = line_nested_deeper(text, kMaxExperimentDepth)) {
+    throw BadInput(name + ":" + std::to_string(*line) + ": nested more than " +
+                   std::to_string(kMaxExperimentDepth) +
+                   " levels deep (each table, dotted-key part, list and inline table is a level)");
+  }
   toml::table table;
   try {
-    table = toml::parse(text.str(), name);
+    table = toml::parse(text, name);
   } catch (const toml::parse_error& e) {
     throw BadInput(name + ":" + std::to_string(e.source().begin.line) + ": " +
                    std::string(e.description()));
   }
   Lines lines;
-  json document = to_json(table, "", lines, name);
+  json document = to_json(table, "", 0, lines, name);
   if (runs) document["runs"] = *runs;
   try {
-    return resolve_sweep(document);
+    return resolve_sweep(document, limits);
   } catch (const OptionError& e) {
     const std::optional<long> line = line_of(lines, e.key());
     throw BadInput(name + (line ? ":" + std::to_string(*line) : std::string()) + ": " + e.key() +
                    " " + e.what());
+  } catch (const BadInput& e) {
+    throw BadInput(name + ": " + e.what());
   }
+}
+
+Sweep load_experiment_file(const std::filesystem::path& file, std::optional<int> runs,
+                           const SweepLimits& limits) {
+  return parse_experiment_text(read_experiment_file(file), file.string(), runs, limits);
 }
 
 }  // namespace multicpg::experiments

@@ -1,14 +1,20 @@
 #include "experiments/gait.h"
 
+#include "common/interrupt.h"
+
 namespace multicpg::experiments {
 
 GaitRecord record_gait(const neural::ControllerModel& model, neural::ControllerState& state,
                        long warmup, long steps) {
-  for (long t = 0; t < warmup; ++t) neural::controller_step(model, state);
+  for (long t = 0; t < warmup; ++t) {
+    check_interrupted();
+    neural::controller_step(model, state);
+  }
   GaitRecord record;
   record.swing.reserve(steps);
   record.motor.reserve(steps);
   for (long t = 0; t < steps; ++t) {
+    check_interrupted();
     neural::controller_step(model, state);
     std::vector<bool> swing;
     std::vector<std::array<double, 3>> motor;

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/experiment_limits.h"
 #include "experiments/run_spec.h"
 #include "experiments/tables.h"
 #include "learning/compensation.h"
@@ -29,6 +30,7 @@ struct ExperimentSpec {
   long check_windows = 0;
   sim::SimOptions sim;
   bool progress = true;
+  SweepLimits limits{kDefaultMaxRuns, "--max-runs"};  // more runs are refused (sweep.h)
 };
 
 // The tables of learning experiments: the paper's two, and a grid of options (sweep.h).

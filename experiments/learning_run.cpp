@@ -10,6 +10,9 @@ namespace {
 class TrialEnds final : public sim::Observer {
  public:
   explicit TrialEnds(sim::Observer* next) : next_(next) {}
+  void on_start(const sim::SimModel& model, const sim::SimState& state) override {
+    if (next_ != nullptr) next_->on_start(model, state);
+  }
   void on_step(const sim::SimModel& model, const sim::SimState& state) override {
     if (next_ != nullptr) next_->on_step(model, state);
   }

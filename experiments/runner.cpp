@@ -25,6 +25,7 @@
 #include "common/checksum.h"
 #include "common/dir_lock.h"
 #include "common/errors.h"
+#include "common/interrupt.h"
 #include "common/json_diff.h"
 #include "experiments/processes.h"
 
@@ -233,9 +234,11 @@ class Session {
     progress_.emplace(options.progress, tasks.size(), static_cast<std::size_t>(outcome_.loaded));
   }
 
-  // The index of the next task to compute; none once every task is handed out or one failed.
+  // The index of the next task to compute; none once every task is handed out, one failed or
+  // a signal asked the process to stop (common/interrupt.h: the runs in flight stop too, the
+  // saved ones stay for a resume).
   std::optional<std::size_t> next() {
-    if (stop_) return std::nullopt;
+    if (stop_ || interrupt_signal() != 0) return std::nullopt;
     const std::size_t n = next_++;
     if (n >= todo_.size()) return std::nullopt;
     return todo_[n];
@@ -279,10 +282,11 @@ class Session {
     for (std::thread& t : pool) t.join();
   }
 
-  // Every result, or the first failure rethrown.
+  // Every result, or the first failure rethrown (Interrupted when a signal stopped the runs).
   RunnerOutcome end() {
     progress_->close();
     if (failure_) std::rethrow_exception(failure_);
+    check_interrupted();  // tasks were left undone
     return std::move(outcome_);
   }
 
@@ -320,6 +324,8 @@ enum Tag : int { kAsk = 1, kResult, kFailed, kTask, kStop };
 nlohmann::json describe(const std::exception_ptr& error) {
   try {
     std::rethrow_exception(error);
+  } catch (const Interrupted& e) {
+    return {{"kind", "interrupted"}, {"signal", e.signal()}, {"message", e.what()}};
   } catch (const BadInput& e) {
     return {{"kind", "bad_input"}, {"message", e.what()}};
   } catch (const RuntimeFailure& e) {
@@ -334,6 +340,9 @@ nlohmann::json describe(const std::exception_ptr& error) {
 std::exception_ptr exception_from(const nlohmann::json& described) {
   const std::string kind = described.at("kind");
   const std::string message = described.at("message");
+  if (kind == "interrupted") {
+    return std::make_exception_ptr(Interrupted(described.at("signal").get<int>()));
+  }
   if (kind == "bad_input") return std::make_exception_ptr(BadInput(message));
   if (kind == "runtime_failure") return std::make_exception_ptr(RuntimeFailure(message));
   return std::make_exception_ptr(std::runtime_error(message));

@@ -9,6 +9,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/interrupt.h"
 #include "common/json_diff.h"
 #include "common/limits.h"
 #include "common/provenance.h"
@@ -225,6 +226,7 @@ struct ScenarioSpec {
   std::vector<std::size_t> disabled;    // a leg set that fails at the document's fail_step
   std::optional<sim::Fault> malfunction;  // another fault that comes at the fail_step
   sim::FaultTimeline faults;            // a timeline
+  std::string path = "scenarios";  // where the document gives it ("scenarios[2]")
 };
 
 // A leg set given as "R1+R3" or ["R1", "R3"] (robot/leg_sets.h), at least one leg.
@@ -257,10 +259,14 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
       throw OptionError(child(path, item.key()),
                         "is not a fault key (known: step, legs, recover, kind, joint, value)");
     }
-    check_type(item.value(), defaults.at(item.key()), child(path, item.key()));
+    // legs may be a leg set's text or a list; parse_legs names either kind of mistake
+    if (item.key() != "legs") {
+      check_type(item.value(), defaults.at(item.key()), child(path, item.key()));
+    }
   }
   sim::Fault fault;
   fault.step = f.value("step", 0L);
+  require_in(child(path, "step"), fault.step, Limits<long>{0, sim::kMaxSteps});
   fault.recover = f.value("recover", false);
   try {
     std::optional<double> value;
@@ -387,8 +393,10 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
       const std::string path = indexed("scenarios", i);
       if (s[i].is_object()) {
         out.push_back(timeline_scenario(morph, s[i], path));
+        out.back().path = path;
       } else if (s[i].is_string()) {
         out.push_back(fault_scenario(morph, s[i], path));
+        out.back().path = path;
       } else {
         throw OptionError(path,
                           "must be a leg set (\"R1+R3\"), a fault (\"R2.CTr:locked\") or a "
@@ -449,6 +457,86 @@ std::vector<std::string> axis_names(const std::vector<GridAxis>& grid) {
   return names;
 }
 
+// Refuses a document nested deeper than kMaxExperimentDepth or with a list longer than
+// kMaxListValues, naming the key, before anything else looks at it (a document from Python is
+// not bounded by a file's size). Iterative: the depth is what is being checked.
+void check_bounds(const json& doc) {
+  struct Item {
+    const json* value;
+    std::string path;
+    int depth;
+  };
+  std::vector<Item> todo{{&doc, "", 0}};
+  while (!todo.empty()) {
+    const Item item = std::move(todo.back());
+    todo.pop_back();
+    if (item.depth > kMaxExperimentDepth) {
+      throw OptionError(
+          item.path, "is nested more than " + std::to_string(kMaxExperimentDepth) + " levels deep");
+    }
+    if (item.value->is_array()) {
+      if (item.value->size() > kMaxListValues) {
+        throw OptionError(item.path, "has " + std::to_string(item.value->size()) +
+                                         " values, more than the " +
+                                         std::to_string(kMaxListValues) + " a list may have");
+      }
+      for (std::size_t i = 0; i < item.value->size(); ++i) {
+        todo.push_back({&(*item.value)[i], indexed(item.path, i), item.depth + 1});
+      }
+    } else if (item.value->is_object()) {
+      for (const auto& entry : item.value->items()) {
+        todo.push_back({&entry.value(), child(item.path, entry.key()), item.depth + 1});
+      }
+    }
+  }
+}
+
+// `factors` multiplied, and whether the product fits 64 bits.
+struct Product {
+  std::uint64_t value = 1;
+  bool overflow = false;
+  long double approximate = 1;  // for the message when it does not fit
+};
+Product multiply(const std::vector<std::uint64_t>& factors) {
+  Product p;
+  for (std::uint64_t f : factors) {
+    p.overflow = p.overflow || __builtin_mul_overflow(p.value, f, &p.value);
+    p.approximate *= static_cast<long double>(f);
+  }
+  return p;
+}
+
+// Refuses `product` (of `parts`, "learning.annealing.beta: 10 values x 2 scenarios x 5 runs")
+// when it exceeds the limit, before a single run is made.
+void check_count(const Product& product, const std::string& what, const std::string& parts,
+                 const SweepLimits& limits) {
+  if (!product.overflow && product.value <= static_cast<std::uint64_t>(limits.max_runs)) return;
+  const std::string count =
+      product.overflow ? fmt::format("about {:.2e}", static_cast<double>(product.approximate))
+                       : std::to_string(product.value);
+  throw BadInput(count + " " + what + " (" + parts + "), more than the " +
+                 std::to_string(limits.max_runs) + " allowed (" + limits.max_runs_name + ")");
+}
+
+// The runs a learning sweep will make: every grid point x scenario x run.
+void check_run_count(const std::vector<GridAxis>& grid, std::size_t scenarios, int runs,
+                     const SweepLimits& limits) {
+  std::vector<std::uint64_t> factors;
+  std::vector<std::string> parts;
+  for (const GridAxis& axis : grid) {
+    factors.push_back(axis.values.size());
+    parts.push_back(axis.key + ": " + std::to_string(axis.values.size()) + " values");
+  }
+  const auto counted = [](std::uint64_t n, const std::string& what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  factors.push_back(scenarios);
+  parts.push_back(counted(scenarios, "scenario"));
+  factors.push_back(static_cast<std::uint64_t>(runs));
+  parts.push_back(counted(static_cast<std::uint64_t>(runs), "run"));
+  check_count(multiply(factors), "runs", join(parts, " x "), limits);
+}
+
 void check_sim(const sim::SimOptions& options, robot::RobotKind kind) {
   within("sim", [&] { sim::validate(options, kind); });
 }
@@ -477,7 +565,8 @@ json sim_defaults(const json& doc) {
   return defaults;
 }
 
-// OUT/experiment.json's arguments, if OUT holds an experiment.
+// OUT/experiment.json's arguments, if OUT holds an experiment. A landscape's directory is
+// refused: its runs are combinations, not runs of a sweep, and it resumes by running again.
 std::optional<json> stored_arguments(const fs::path& out) {
   const fs::path path = out / "experiment.json";
   const std::optional<json> sealed = read_sealed(path);
@@ -485,6 +574,11 @@ std::optional<json> stored_arguments(const fs::path& out) {
   const json& record = *sealed;
   if (!record.contains("arguments")) {
     throw BadInput("'" + path.string() + "' records no experiment arguments");
+  }
+  if (record.at("arguments").value("experiment", json()) == "landscape") {
+    throw BadInput("'" + out.string() +
+                   "' holds a landscape, which is not rerun or merged: run the same landscape "
+                   "again into it to resume it");
   }
   std::optional<json> arguments;
   arguments.emplace(record.at("arguments"));
@@ -608,7 +702,7 @@ void refuse_grid(const std::vector<GridAxis>& grid) {
   }
 }
 
-Sweep resolve_landscape(const json& doc, robot::RobotKind kind) {
+Sweep resolve_landscape(const json& doc, robot::RobotKind kind, const SweepLimits& limits) {
   for (const auto& item : doc.items()) {
     if (!kLandscapeKeys.count(item.key())) {
       throw OptionError(item.key(), "is not a landscape key (known: " +
@@ -645,6 +739,11 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind) {
     throw OptionError("landscape", e.what());
   }
   check_sim(spec.sim, kind);
+  const std::size_t working = robot::morphology(kind).size() - spec.disabled.size();
+  check_count(multiply(std::vector<std::uint64_t>(working, spec.period_set.size())), "combinations",
+              std::to_string(spec.period_set.size()) + " periods ^ " + std::to_string(working) +
+                  " working legs",
+              limits);
   Sweep sweep;
   sweep.robot = kind;
   sweep.resolved = {{"kind", "landscape"},
@@ -694,8 +793,9 @@ nlohmann::json learning_document(const learning::CompensationOptions& options, l
   return j;
 }
 
-Sweep resolve_sweep(const json& doc) {
+Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
   if (!doc.is_object()) throw OptionError("", "an experiment must be a table of keys");
+  check_bounds(doc);
   for (const auto& item : doc.items()) {
     if (!kDocumentKeys.count(item.key())) {
       throw OptionError(item.key(), "is not an experiment key (known: " +
@@ -718,7 +818,7 @@ Sweep resolve_sweep(const json& doc) {
   } catch (const BadInput& e) {
     throw OptionError("robot", e.what());
   }
-  if (kind == "landscape") return resolve_landscape(doc, sweep.robot);
+  if (kind == "landscape") return resolve_landscape(doc, sweep.robot, limits);
   if (doc.contains("landscape")) {
     throw OptionError("landscape", "belongs to kind = \"landscape\" files");
   }
@@ -728,10 +828,15 @@ Sweep resolve_sweep(const json& doc) {
   std::uint64_t seed = 1;
   if (doc.contains("seed")) {
     const json& s = doc.at("seed");
-    if (!s.is_number_integer() || (!s.is_number_unsigned() && s.get<std::int64_t>() < 0)) {
-      throw OptionError("seed", "must be a whole number >= 0, got " + s.dump());
+    if (!s.is_number_integer()) {
+      throw OptionError("seed",
+                        "must be a whole number in " + kSeedLimits.text() + ", got " + s.dump());
+    }
+    if (!s.is_number_unsigned() && s.get<std::int64_t>() < 0) {
+      throw OptionError("seed", "must be in " + kSeedLimits.text() + ", got " + s.dump());
     }
     seed = s.get<std::uint64_t>();
+    require_in("seed", seed, kSeedLimits);
   }
 
   // Learning and sim: defaults, the document's values, the grid.
@@ -755,6 +860,8 @@ Sweep resolve_sweep(const json& doc) {
   const json trace = record_in.value("trace", json(true));
   if (!trace.is_boolean()) throw OptionError("record.trace", "must be true or false");
   const json record{{"check_windows", check_windows}, {"trace", trace}};
+
+  check_run_count(sweep.grid, scenarios.size(), runs, limits);
 
   json resolved_scenarios = json::array();
   for (const ScenarioSpec& s : scenarios) resolved_scenarios.push_back(s.resolved);
@@ -795,6 +902,7 @@ Sweep resolve_sweep(const json& doc) {
     const long fail_step = learning_point.at(kFailStepKey).get<long>();
     require_in(std::string("learning.") + kFailStepKey, fail_step, sim::kStepLimits);
     learning_point.erase(kFailStepKey);
+    check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(sim_point, "sim");
     if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options, sweep.robot);
@@ -817,7 +925,7 @@ Sweep resolve_sweep(const json& doc) {
         validate(spec);
       } catch (const OptionError& e) {
         if (e.key() != "faults") throw;
-        throw OptionError("scenarios", e.what() + std::string(" (scenario ") + s.name + ")");
+        throw OptionError(s.path, std::string("cannot happen: ") + e.what() + " (scenario " + s.name + ")");
       }
       std::vector<std::string> kp = key_parts;
       std::vector<std::string> gp = group_parts;
@@ -915,8 +1023,10 @@ RecordedSweep read_sweep(const fs::path& dir) {
     out.shard = parse_shard(arguments->at("shard").get<std::string>());
     arguments->erase("shard");
   }
+  // It ran, so it was within some --max-runs: the most that flag allows.
+  const SweepLimits recorded{kMaxRunsLimits.hi, "--max-runs"};
   try {
-    out.sweep = resolve_sweep(*arguments);
+    out.sweep = resolve_sweep(*arguments, recorded);
   } catch (const OptionError& e) {
     throw BadInput("'" + (dir / "experiment.json").string() + "': " + e.key() + " " + e.what());
   }

@@ -22,6 +22,7 @@
 // lists form a grid, and each grid point x scenario x run is one task.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -29,6 +30,7 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/experiment_limits.h"
 #include "experiments/landscape.h"
 #include "experiments/learning_experiments.h"
 #include "experiments/run_spec.h"
@@ -72,8 +74,11 @@ struct Sweep {
 
 // Resolves a document; throws OptionError whose key is the dotted path of the first bad value
 // ("learning.annealing.beta", "scenarios[2]") for a wrong type, an unknown key, an empty list,
-// a bad leg name or an out-of-range value (learning::validate and sim checks, before any run).
-Sweep resolve_sweep(const nlohmann::json& document);
+// a bad leg name or an out-of-range value (learning::validate and sim checks, before any run),
+// a list longer than kMaxListValues or nesting deeper than kMaxExperimentDepth (checked first,
+// without recursion). Throws BadInput naming the grid's axes and their product when the runs
+// (or a landscape's combinations) are more than `limits` allow, before any run is made.
+Sweep resolve_sweep(const nlohmann::json& document, const SweepLimits& limits = {});
 
 // The document of a landscape (what examples/landscape-*.toml hold; `multicpg landscape`).
 nlohmann::json landscape_document(const LandscapeSpec& spec);
@@ -109,7 +114,8 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options);
 // every step.
 nlohmann::json run_sweep_task(const RunSpec& spec, sim::Observer* observer = nullptr);
 
-// The experiment recorded in DIR/experiment.json, and its shard.
+// The experiment recorded in DIR/experiment.json, and its shard. Throws BadInput for a
+// directory without one, and for a landscape's (which is resumed, never rerun or merged).
 struct RecordedSweep {
   Sweep sweep;
   Shard shard;

@@ -8,6 +8,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/interrupt.h"
 #include "common/table.h"
 #include "report/fault_colours.h"
 #include "robot/leg_sets.h"
@@ -62,6 +63,11 @@ Film::Film(const sim::SimModel& model, FilmSpec spec)
       {
         std::unique_lock lock(mutex_);
         wake_.wait(lock, [this] { return closing_ || !queue_.empty(); });
+        if (const int signal = interrupt_signal(); signal != 0 && !queue_.empty()) {
+          // Stopped by SIGINT or SIGTERM: the frames left are not drawn (common/interrupt.h).
+          failure_ = std::make_exception_ptr(Interrupted(signal));
+          queue_.clear();
+        }
         if (queue_.empty()) return;
         next = std::move(queue_.front());
         queue_.pop_front();
@@ -85,6 +91,10 @@ Film::Film(const sim::SimModel& model, FilmSpec spec)
 }
 
 Film::~Film() {
+  {
+    const std::lock_guard lock(mutex_);
+    queue_.clear();  // without finish() the video is not written: no frame left to draw
+  }
   stop_worker();
 }
 

@@ -7,11 +7,16 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <thread>
+#include <utility>
 
 #include "common/errors.h"
+#include "common/interrupt.h"
 
 extern char** environ;
 
@@ -67,12 +72,36 @@ pid_t spawn(const std::vector<std::string>& argv, int stdin_fd, int out_fd) {
   return pid;
 }
 
-int wait_exit_code(pid_t pid) {
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
-  }
+int exit_code(int status) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Kills the child and reaps it: a tool whose work is abandoned must not outlive us.
+void kill_and_reap(pid_t pid) {
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+}
+
+// How often a wait looks whether a signal asked this process to stop: well under the second
+// within which SIGINT and SIGTERM must end a command (README "Exit codes").
+constexpr auto kWaitPoll = std::chrono::milliseconds(10);
+
+// The child's exit code; when SIGINT or SIGTERM asks this process to stop while it waits, the
+// child is killed and reaped and Interrupted thrown (common/interrupt.h).
+int wait_exit_code(pid_t pid) {
+  for (;;) {
+    int status = 0;
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) return exit_code(status);
+    if (done < 0 && errno != EINTR) return -1;
+    if (const int signal = interrupt_signal(); signal != 0) {
+      kill_and_reap(pid);
+      throw Interrupted(signal);
+    }
+    std::this_thread::sleep_for(kWaitPoll);
+  }
 }
 
 }  // namespace
@@ -112,7 +141,10 @@ ChildWithInput::ChildWithInput(const std::vector<std::string>& argv) {
 }
 
 ChildWithInput::~ChildWithInput() {
-  if (pid_ > 0) finish();
+  if (pid_ <= 0) return;
+  ::close(input_fd_);
+  kill_and_reap(pid_);
+  ::close(output_fd_);
 }
 
 bool ChildWithInput::write(std::span<const unsigned char> bytes) {
@@ -132,11 +164,16 @@ ProcessResult ChildWithInput::finish() {
   if (pid_ <= 0) return result;
   ::close(input_fd_);
   input_fd_ = -1;
-  result.exit_code = wait_exit_code(pid_);
-  pid_ = -1;
-  result.output = read_all(output_fd_);
-  ::close(output_fd_);
-  output_fd_ = -1;
+  const pid_t pid = std::exchange(pid_, -1);
+  const int output_fd = std::exchange(output_fd_, -1);
+  try {
+    result.exit_code = wait_exit_code(pid);
+  } catch (...) {
+    ::close(output_fd);
+    throw;
+  }
+  result.output = read_all(output_fd);
+  ::close(output_fd);
   return result;
 }
 

@@ -16,7 +16,8 @@ struct ProcessResult {
 };
 
 // Runs argv[0] (looked up in PATH) with standard input closed, waits for it and captures what
-// it printed. Throws RuntimeFailure when the program cannot be started.
+// it printed. Throws RuntimeFailure when the program cannot be started; Interrupted (after
+// killing it) when SIGINT or SIGTERM asks this process to stop meanwhile (common/interrupt.h).
 ProcessResult run_process(const std::vector<std::string>& argv);
 
 // A child process fed through its standard input (ffmpeg reading raw frames). Writing never
@@ -26,11 +27,13 @@ class ChildWithInput {
   explicit ChildWithInput(const std::vector<std::string>& argv);
   ChildWithInput(const ChildWithInput&) = delete;
   ChildWithInput& operator=(const ChildWithInput&) = delete;
-  ~ChildWithInput();  // closes the input and waits, if finish() was not called
+  // Without finish(): the work is abandoned, the child killed and reaped (none outlives us).
+  ~ChildWithInput();
 
   // Sends all bytes; false when the child stopped reading.
   bool write(std::span<const unsigned char> bytes);
-  // Closes the input, waits for the child and returns how it ended.
+  // Closes the input, waits for the child and returns how it ended (Interrupted as
+  // run_process).
   ProcessResult finish();
 
  private:

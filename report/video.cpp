@@ -74,7 +74,7 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int 
 
 VideoWriter::~VideoWriter() {
   if (ffmpeg_) {
-    ffmpeg_->finish();
+    ffmpeg_.reset();  // an unfinished video is abandoned: ffmpeg is killed (subprocess.h)
     std::error_code ec;
     std::filesystem::remove(tmp_, ec);
   }

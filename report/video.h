@@ -18,7 +18,7 @@ class VideoWriter {
   VideoWriter(std::filesystem::path path, int width, int height, int fps);
   VideoWriter(const VideoWriter&) = delete;
   VideoWriter& operator=(const VideoWriter&) = delete;
-  // Without finish(): stops ffmpeg and removes the temporary file.
+  // Without finish(): kills ffmpeg and removes the temporary file.
   ~VideoWriter();
 
   // Throws BadInput for a frame of another size, RuntimeFailure when ffmpeg has stopped.

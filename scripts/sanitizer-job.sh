@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The sanitizer job (.ci/run runs it after the README's test command): the fast tests (ctest label
-# "fast": no rendering, video, windows or browser) and the parser fuzzer under AddressSanitizer +
-# UBSan, built by clang into build-asan (CMake option MULTICPG_SANITIZE). Needs scripts/setup.sh.
+# "fast": no rendering, video, windows or browser) and the fuzz targets of fuzz/ (parsers,
+# experiment files; each a ctest of label fast, 30 s at most) under AddressSanitizer + UBSan,
+# built by clang into build-asan (CMake option MULTICPG_SANITIZE). Needs scripts/setup.sh.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"

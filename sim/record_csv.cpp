@@ -2,10 +2,17 @@
 
 #include <iomanip>
 #include <string>
+#include <utility>
+
+#include "common/errors.h"
 
 namespace multicpg::sim {
+namespace {
 
-void write_record_csv(std::ostream& out, const robot::Morphology& morph, const WalkRecord& r) {
+// Significant digits of every number of the CSV.
+constexpr int kCsvDigits = 9;
+
+void write_header(std::ostream& out, const robot::Morphology& morph) {
   out << "step,time_s,x_m,y_m,z_m,yaw_deg";
   for (const robot::Leg& leg : morph.legs) {
     for (robot::Joint j : robot::kJoints) {
@@ -14,20 +21,55 @@ void write_record_csv(std::ostream& out, const robot::Morphology& morph, const W
     }
     out << "," << leg.name << "_contact";
   }
-  out << "\n" << std::setprecision(9);
-  const std::size_t legs = morph.size();
-  for (std::size_t row = 0; row < r.rows(); ++row) {
-    out << row << "," << r.time[row] << "," << r.x[row] << "," << r.y[row] << "," << r.z[row] << ","
-        << r.yaw_deg[row];
-    for (std::size_t leg = 0; leg < legs; ++leg) {
-      for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-        const std::size_t k = (row * legs + leg) * robot::kJointsPerLeg + j;
-        out << "," << r.command[k] << "," << r.target[k] << "," << r.actual[k];
-      }
-      out << "," << static_cast<int>(r.contact[row * legs + leg]);
+  out << "\n" << std::setprecision(kCsvDigits);
+}
+
+// Row `row` of `r` as the line of step `step`.
+void write_row(std::ostream& out, std::size_t legs, const WalkRecord& r, std::size_t row,
+               std::size_t step) {
+  out << step << "," << r.time[row] << "," << r.x[row] << "," << r.y[row] << "," << r.z[row] << ","
+      << r.yaw_deg[row];
+  for (std::size_t leg = 0; leg < legs; ++leg) {
+    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
+      const std::size_t k = (row * legs + leg) * robot::kJointsPerLeg + j;
+      out << "," << r.command[k] << "," << r.target[k] << "," << r.actual[k];
     }
-    out << "\n";
+    out << "," << static_cast<int>(r.contact[row * legs + leg]);
   }
+  out << "\n";
+}
+
+}  // namespace
+
+void write_record_csv(std::ostream& out, const robot::Morphology& morph, const WalkRecord& r) {
+  write_header(out, morph);
+  for (std::size_t row = 0; row < r.rows(); ++row) write_row(out, morph.size(), r, row, row);
+}
+
+RecordCsvWriter::RecordCsvWriter(std::ostream& out, const robot::Morphology& morph,
+                                 std::string name)
+    : out_(out), morph_(morph), name_(std::move(name)) {
+  row_.legs = morph.size();
+}
+
+void RecordCsvWriter::on_start(const SimModel& model, const SimState& state) {
+  write_header(out_, morph_);
+  write(model, state);
+}
+
+void RecordCsvWriter::on_step(const SimModel& model, const SimState& state) {
+  write(model, state);
+}
+
+void RecordCsvWriter::write(const SimModel& model, const SimState& state) {
+  for (auto* v : {&row_.time, &row_.x, &row_.y, &row_.z, &row_.yaw_deg, &row_.command, &row_.target,
+                  &row_.actual}) {
+    v->clear();
+  }
+  row_.contact.clear();
+  append_record(model, state, /*joints=*/true, row_);
+  write_row(out_, morph_.size(), row_, 0, step_++);
+  if (!out_) throw RuntimeFailure("writing '" + name_ + "' failed");
 }
 
 }  // namespace multicpg::sim

@@ -235,7 +235,7 @@ std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml,
 }
 
 double default_physics_dt(double control_dt) {
-  if (!(control_dt > 0.0)) throw BadInput("--control-dt must be positive");
+  if (!(control_dt > 0.0)) throw OptionError("control_dt", "must be positive");
   // Tolerance so that 0.037 / 0.004625 = 8 exactly is not rounded up to 9.
   const double n = std::ceil(control_dt / kMaxDefaultPhysicsDt - kStepRatioTolerance);
   return control_dt / n;

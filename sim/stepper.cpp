@@ -5,6 +5,8 @@
 
 #include "common/errors.h"
 #include "sim/fault_effects.h"
+#include "common/interrupt.h"
+#include "common/limits.h"
 #include "sim/walk.h"
 
 namespace multicpg::sim {
@@ -17,9 +19,7 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
       observer_(observer),
       record_(record),
       record_joints_(record_joints) {
-  if (start.warmup < 0) {
-    throw OptionError("start.warmup", "must not be negative, got " + std::to_string(start.warmup));
-  }
+  require_in("start.warmup", start.warmup, kStepLimits);
   state_.faults.sensor.random.seed(start.seed);
   apply_due_faults();
   warm_up_controller(model_, state_, start.warmup);
@@ -27,6 +27,7 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
     record_->legs = model.legs.size();
     append_record(model_, state_, record_joints_, *record_);
   }
+  if (observer_ != nullptr) observer_->on_start(model_, state_);
 }
 
 void Stepper::apply_due_faults() {
@@ -44,6 +45,7 @@ void Stepper::take_faults(std::size_t first) {
 }
 
 void Stepper::step() {
+  check_interrupted();
   apply_due_faults();
   if (before_step_) before_step_(*this);
   sim_step(model_, state_);

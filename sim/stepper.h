@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "sim/deviation.h"
@@ -36,9 +37,32 @@ struct StartSpec {
 class Observer {
  public:
   virtual ~Observer() = default;
+  // The start state, after the warm-up (row 0 of a record), before the first step.
+  virtual void on_start(const SimModel& /*model*/, const SimState& /*state*/) {}
   virtual void on_step(const SimModel& /*model*/, const SimState& /*state*/) {}
   virtual void on_event(const SimModel& /*model*/, const SimState& /*state*/,
                         const Event& /*event*/) {}
+};
+
+// Several observers as one, told in order (null ones are skipped).
+class Observers final : public Observer {
+ public:
+  explicit Observers(std::vector<Observer*> all) : all_(std::move(all)) {}
+  void on_start(const SimModel& model, const SimState& state) override {
+    for (Observer* o : all_)
+      if (o != nullptr) o->on_start(model, state);
+  }
+  void on_step(const SimModel& model, const SimState& state) override {
+    for (Observer* o : all_)
+      if (o != nullptr) o->on_step(model, state);
+  }
+  void on_event(const SimModel& model, const SimState& state, const Event& event) override {
+    for (Observer* o : all_)
+      if (o != nullptr) o->on_event(model, state, event);
+  }
+
+ private:
+  std::vector<Observer*> all_;
 };
 
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
@@ -57,7 +81,8 @@ class Stepper {
           Observer* observer = nullptr, WalkRecord* record = nullptr, bool record_joints = true);
 
   // Applies the faults due before this step, then one controller step with its physics
-  // (sim_step), records it and shows it to the observer.
+  // (sim_step), records it and shows it to the observer. Throws Interrupted when SIGINT or
+  // SIGTERM asked the process to stop (common/interrupt.h): every run stops within a step.
   void step();
   void steps(long n);
   // Tells the observer (the learner's detections, trials and episodes).

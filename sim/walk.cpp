@@ -7,10 +7,12 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
+#include "common/interrupt.h"
 
 namespace multicpg::sim {
 namespace {
 
+// Named by the spec's keys (OptionError): the CLI and Python name their flags and arguments.
 void check_spec(const SimModel& model, const WalkSpec& spec) {
   require_in("steps", spec.steps, kRunStepsLimits);
   require_in("window", spec.window, kRunStepsLimits);
@@ -21,16 +23,66 @@ void check_spec(const SimModel& model, const WalkSpec& spec) {
                                            " periods, got " +
                                            std::to_string(spec.start.periods.size()));
   }
-  validate(model.controller.morphology, spec.faults);
+  try {
+    validate(model.controller.morphology, spec.faults);
+  } catch (const OptionError&) {
+    throw;
+  } catch (const BadInput& e) {
+    throw OptionError("faults", e.what());
+  }
   const long total = spec.settle + spec.steps;
   for (const Fault& f : spec.faults) {
     if (f.step >= total) {
       throw OptionError("faults", std::string(f.recover ? "a recovery" : "a fault") + " at step " +
                                       std::to_string(f.step) +
-                                      " comes after the walk's last step " +
+                                      " comes after the last step of the walk, " +
                                       std::to_string(total - 1));
     }
   }
+}
+
+// Trunk poses at the rows a walk's measures need (rows settle, settle + window, ... and the
+// last), taken as the steps come: what measure_walk reads from a full record, in memory that
+// grows by one pose per window instead of one row per step.
+class WindowPoses final : public Observer {
+ public:
+  WindowPoses(long settle, long window) : settle_(settle), window_(window) {}
+  void on_start(const SimModel& model, const SimState& state) override { take(model, state); }
+  void on_step(const SimModel& model, const SimState& state) override { take(model, state); }
+
+  std::vector<Pose2> boundaries;  // rows settle + k * window
+  Pose2 last;                     // the last row
+
+ private:
+  void take(const SimModel& model, const SimState& state) {
+    const Position p = trunk_position(model, state);
+    last = {p.x, p.y, trunk_yaw_deg(model, state)};
+    if (row_ >= settle_ && (row_ - settle_) % window_ == 0) boundaries.push_back(last);
+    ++row_;
+  }
+
+  long settle_;
+  long window_;
+  long row_ = 0;
+};
+
+// The measures of a walk of `steps` measured steps from its window boundary poses and its last.
+void measure_poses(const SimModel& model, long steps, const std::vector<Pose2>& boundaries,
+                   const Pose2& last, WalkResult& result) {
+  result.duration_s = static_cast<double>(steps) * model.control_dt;
+  const WindowMeasure whole = measure_window(boundaries.front(), last);
+  result.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
+  result.forward_m = whole.forward_m;
+  result.lateral_m = whole.lateral_m;
+  result.speed_m_s = result.distance_m / result.duration_s;
+  result.window_deviations_deg.clear();
+  result.windows.clear();
+  for (std::size_t k = 1; k < boundaries.size(); ++k) {
+    result.window_deviations_deg.push_back(
+        wrap_degrees(boundaries[k].yaw_deg - boundaries[k - 1].yaw_deg));
+    result.windows.push_back(measure_window(boundaries[k - 1], boundaries[k]));
+  }
+  result.final_yaw_deg = last.yaw_deg;
 }
 
 }  // namespace
@@ -48,7 +100,10 @@ SimState start_walk_state(const SimModel& model, const std::vector<int>& periods
 }
 
 void warm_up_controller(const SimModel& model, SimState& state, long steps) {
-  for (long t = 0; t < steps; ++t) neural::controller_step(model.controller, state.controller);
+  for (long t = 0; t < steps; ++t) {
+    check_interrupted();  // a warm-up may be long (up to kMaxSteps)
+    neural::controller_step(model.controller, state.controller);
+  }
 }
 
 void append_record(const SimModel& model, const SimState& state, bool joints, WalkRecord& r) {
@@ -96,6 +151,15 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec) {
   WalkResult result;
   WalkRecord& r = result.record;
   const long total = spec.settle + spec.steps;
+  if (!spec.keep_record) {
+    WindowPoses poses(spec.settle, spec.window);
+    Observers observers({&poses, spec.observer});
+    Stepper stepper(model, spec.start, spec.faults, &observers);
+    stepper.steps(total);
+    measure_poses(model, spec.steps, poses.boundaries, poses.last, result);
+    result.final_state = std::move(stepper.state());
+    return result;
+  }
   const auto rows = static_cast<std::size_t>(total) + 1;
   for (auto* v : {&r.time, &r.x, &r.y, &r.z, &r.yaw_deg}) v->reserve(rows);
   if (spec.record) {
@@ -114,17 +178,12 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec) {
 
 void measure_walk(const SimModel& model, long settle, long steps, long window, WalkResult& result) {
   const WalkRecord& r = result.record;
-  const auto first = static_cast<std::size_t>(settle);
-  result.duration_s = static_cast<double>(steps) * model.control_dt;
-  const WindowMeasure whole = measure_window({r.x[first], r.y[first], r.yaw_deg[first]},
-                                             {r.x.back(), r.y.back(), r.yaw_deg.back()});
-  result.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
-  result.forward_m = whole.forward_m;
-  result.lateral_m = whole.lateral_m;
-  result.speed_m_s = result.distance_m / result.duration_s;
-  result.window_deviations_deg = window_deviations(r.yaw_deg, first, window);
-  result.windows = window_measures(r, first, window);
-  result.final_yaw_deg = r.yaw_deg.back();
+  std::vector<Pose2> boundaries;
+  const auto w = static_cast<std::size_t>(window);
+  for (auto row = static_cast<std::size_t>(settle); row < r.rows(); row += w) {
+    boundaries.push_back({r.x[row], r.y[row], r.yaw_deg[row]});
+  }
+  measure_poses(model, steps, boundaries, {r.x.back(), r.y.back(), r.yaw_deg.back()}, result);
 }
 
 }  // namespace multicpg::sim

@@ -30,12 +30,16 @@ struct WalkSpec {
   long steps = 1200;             // measured steps, after the settling ones
   long window = kDefaultWindow;  // steps per deviation window
   bool record = true;            // keep joint angles and contacts of every step
+  // Keep every step in WalkResult::record. false: the walk is measured as it goes and keeps
+  // nothing per step, so its memory does not grow with its length; a per-step record can still
+  // stream to a file through `observer` (walk --csv: sim/record_csv.h).
+  bool keep_record = true;
   Observer* observer = nullptr;  // sees every step and fault
 };
 
 // Measurements over the measured steps (from step `settle` to the end).
 struct WalkResult {
-  WalkRecord record;
+  WalkRecord record;        // empty unless WalkSpec::keep_record
   double duration_s = 0.0;  // simulated time measured
   double distance_m = 0.0;  // horizontal displacement of the trunk
   double forward_m = 0.0;   // its component along the heading at the start of measuring
@@ -53,10 +57,11 @@ struct WalkResult {
 // speed and windows from row `settle` on, over `steps` measured steps.
 void measure_walk(const SimModel& model, long settle, long steps, long window, WalkResult& result);
 
-// Runs spec.settle + spec.steps controller steps through a Stepper. Throws BadInput for a spec
-// that cannot run (wrong number of periods, a bad fault timeline, steps or window <= 0, settle
-// < 0, a fault outside the run, more than kMaxSteps); RuntimeFailure if the physics becomes
-// unstable.
+// Runs spec.settle + spec.steps controller steps through a Stepper. Throws OptionError naming
+// the spec's key ("steps", "window", "settle", "start.warmup", "start.periods", "faults") for a
+// spec that cannot run (wrong number of periods, a bad fault timeline, steps or window <= 0,
+// settle < 0, a fault outside the run, more than kMaxSteps); RuntimeFailure if the physics
+// becomes unstable; Interrupted when SIGINT or SIGTERM stops it (common/interrupt.h).
 WalkResult walk(const SimModel& model, const WalkSpec& spec);
 
 // The state a run starts from before its warm-up: make_sim_state, then `periods` (one per leg;

@@ -107,9 +107,10 @@ std::vector<BadInput> numeric_cases() {
 }
 
 const std::vector<BadInput> kOtherCases{
-    // Seeds: no sign, nothing past 2^64 - 1, no junk.
+    // Seeds: no sign, nothing outside 0..4294967295 (common/limits.h), no junk.
     {"learn --disable R1 --seed -1", "--seed"},
-    {"learn --disable R1 --seed 18446744073709551616", "--seed"},
+    {"learn --disable R1 --seed 18446744073709551616", "--seed: must be in 0..4294967295"},
+    {"learn --disable R1 --seed 4294967296", "--seed: must be in 0..4294967295, got 4294967296"},
     {"learn --disable R1 --seed 1.5", "--seed"},
     {"learn --disable R1 --seed ''", "--seed"},
     {"reproduce --out /tmp/multicpg-bad-rep --seed -7", "--seed"},

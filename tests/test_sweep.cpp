@@ -120,7 +120,7 @@ TEST(Sweep, BadFilesNameFileLineAndKey) {
       {ok + "runs = 0\n", "2: runs must be in 1.."},
       {ok + "runs = \"ten\"\n", "2: runs must be a whole number"},
       {ok + "runs = 2.5\n", "2: runs must be a whole number"},
-      {ok + "seed = -1\n", "2: seed must be a whole number >= 0"},
+      {ok + "seed = -1\n", "2: seed must be in 0..4294967295, got -1"},
       {ok + "kind = \"tunnel\"\n", "2: kind must be"},
       {ok + "[learning]\nbeta = 1\n", "3: learning.beta is not an option"},
       {ok + "[learning.annealing]\nbeta = -1\n", "3: learning.annealing.beta"},
@@ -189,7 +189,7 @@ TEST(Sweep, BadFilesNameFileLineAndKey) {
   for (const char* shard : {"2/2", "1/0", "a/b", "1", "-1/2"}) {
     expect_bad_input("run " + file + " --check --shard " + shard, "--shard must be i/N");
   }
-  expect_bad_input("run " + file + " --check --runs 0", "--runs must be at least 1");
+  expect_bad_input("run " + file + " --check --runs 0", "--runs: must be in 1..100000, got 0");
   expect_bad_input("run " + file, "--out");
   fs::remove_all(dir);
 }
@@ -355,6 +355,9 @@ windows = 1
     EXPECT_FALSE(comparable(dir + "/a/" + name).empty()) << name;
     EXPECT_EQ(comparable(dir + "/a/" + name), comparable(dir + "/b/" + name)) << name;
   }
+  // A landscape is resumed by running it again, never rerun or merged like a sweep's runs.
+  expect_bad_input("rerun " + dir + "/b R1-4_R2-4_L1-4", "holds a landscape, which is not rerun");
+  expect_bad_input("merge " + dir + "/m " + dir + "/a", "holds a landscape, which is not rerun");
   write(dir + "/bad.toml", "kind = \"landscape\"\nscenarios = [\"R1\", \"R2\"]\n");
   expect_bad_input("run " + dir + "/bad.toml --check", dir + "/bad.toml:2: scenarios");
   write(dir + "/bad.toml",
