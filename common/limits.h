@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <type_traits>
 
@@ -27,6 +28,11 @@ struct Limits {
   // "0..100", as --help and error messages show it.
   std::string text() const { return fmt::format("{}..{}", lo, hi); }
 };
+
+// Seeds a user gives (--seed, an experiment's `seed`): the 32-bit range NumPy's seeds have, written
+// out the same in --help, errors and README. The seed each run of an experiment derives from it
+// and its name (experiments/runner.h) uses all 64 bits.
+inline constexpr Limits<std::uint64_t> kSeedLimits{0, 4'294'967'295};
 
 // Throws OptionError(key, "must be in lo..hi, got value") unless `limits` contains `value`
 // (NaN and infinities never are).

@@ -10,6 +10,7 @@
 namespace multicpg::sim {
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(Fault, step, legs, recover)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Pose2, x, y, yaw_deg)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(WindowMeasure, yaw_deg, path_deg, forward_m,
                                                 lateral_m, steering_effort)
 
