@@ -996,6 +996,7 @@ PYBIND11_MODULE(_multicpg, m) {
   m.attr("DEFAULT_BETA") = learning::kDefaultBeta;
   m.attr("DEFAULT_HOLD_WINDOWS") = learning::kDefaultHoldWindows;
   m.attr("DETECTION_WINDOWS") = learning::kDefaultDetectionWindows;
+  m.attr("STEERING_MAX_EFFORT") = learning::SteeringParams{}.max_effort;
   m.attr("PERIOD_SET") = py::tuple(py::cast(learning::AnnealingParams{}.period_set));
   m.attr("GAIT_PERIODS") = py::tuple(py::cast(std::vector<int>(
       multicpg::robot::kGaitPeriods.begin(), multicpg::robot::kGaitPeriods.end())));

@@ -20,7 +20,7 @@ import numpy as np
 
 from ._multicpg import (DEFAULT_BETA, DEFAULT_HOLD_WINDOWS, DEFAULT_MAX_TRIALS,
                         DEFAULT_THRESHOLD_DEG, DEFAULT_WINDOW_STEPS, DETECTION_WINDOWS,
-                        PERIOD_SET, Annealer, Robot, Simulation, render)
+                        PERIOD_SET, STEERING_MAX_EFFORT, Annealer, Robot, Simulation, render)
 
 try:  # gymnasium is not in Debian 12; its spaces and Env are used where it is installed
     import gymnasium as _gymnasium
@@ -79,8 +79,6 @@ STEERING_OFF, STEERING_ON = 0, 1
 _ANGLE_DEG = 180.0
 _MAX_EFFORT = 1.0
 _MIN_PERIOD, _MAX_PERIOD = 1.0, 9.0
-# The steering reflex's effort share that reads as the threshold (learning/steering.h).
-_REFLEX_MAX_EFFORT = 0.75
 # Frames play at the controller's rate: 27 Hz (SPEC §0).
 _RENDER_FPS = 27
 
@@ -220,7 +218,7 @@ class CompensationEnv(_EnvBase):
             return abs(m["yaw_deg"])
         error = max(abs(m["yaw_deg"]), abs(m["path_deg"]))
         if self.sim.steering:
-            error = max(error, self.threshold * m["steering_effort"] / _REFLEX_MAX_EFFORT)
+            error = max(error, self.threshold * m["steering_effort"] / STEERING_MAX_EFFORT)
         return error
 
     def _observation(self, m: Dict[str, float]) -> np.ndarray:
