@@ -35,8 +35,9 @@ LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long a
   const learning::CompensationOptions& options = *spec.learning;
   LearningRun run;
   TrialEnds ends(observer);
-  sim::Stepper stepper(model, spec.start, spec.faults, &ends,
-                       spec.record.steps ? &run.record : nullptr);
+  sim::StartSpec start = spec.start;
+  start.seed = options.seed;  // a noisy sensor's draws follow the learning run's seed
+  sim::Stepper stepper(model, start, spec.faults, &ends, spec.record.steps ? &run.record : nullptr);
   SimWalker walker(stepper);
   run.result = learning::compensate(walker, options);
   run.learning_end_step = stepper.step_count();

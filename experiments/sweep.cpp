@@ -223,10 +223,10 @@ std::string value_text(const json& v) {
 struct ScenarioSpec {
   std::string name;
   json resolved;  // the name of a leg set or fault, or {name, faults} of a timeline
-  std::vector<std::size_t> disabled;    // a leg set that fails at the document's fail_step
+  std::vector<std::size_t> disabled;      // a leg set that fails at the document's fail_step
   std::optional<sim::Fault> malfunction;  // another fault that comes at the fail_step
-  sim::FaultTimeline faults;            // a timeline
-  std::string path = "scenarios";  // where the document gives it ("scenarios[2]")
+  sim::FaultTimeline faults;              // a timeline
+  std::string path = "scenarios";         // where the document gives it ("scenarios[2]")
 };
 
 // A leg set given as "R1+R3" or ["R1", "R3"] (robot/leg_sets.h), at least one leg.
@@ -252,8 +252,8 @@ robot::LegSet parse_legs(const robot::Morphology& morph, const json& legs,
 // {kind, joint, value} (sim/faults.h; the yaw sensor's kinds name no legs).
 sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const std::string& path) {
   if (!f.is_object()) throw OptionError(path, "must be a table {step, legs, recover, kind, ...}");
-  const json defaults{{"step", 0},   {"legs", json::array()}, {"recover", false},
-                      {"kind", ""},  {"joint", ""},           {"value", 0.0}};
+  const json defaults{{"step", 0},  {"legs", json::array()}, {"recover", false},
+                      {"kind", ""}, {"joint", ""},           {"value", 0.0}};
   for (const auto& item : f.items()) {
     if (!defaults.contains(item.key())) {
       throw OptionError(child(path, item.key()),
@@ -271,8 +271,8 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
   try {
     std::optional<double> value;
     if (f.contains("value")) value = f.at("value").get<double>();
-    fault.kind = sim::make_kind(f.value("kind", std::string(sim::LegFault::kName)), value,
-                                fault.recover);
+    fault.kind =
+        sim::make_kind(f.value("kind", std::string(sim::LegFault::kName)), value, fault.recover);
   } catch (const BadInput& e) {
     throw OptionError(child(path, f.contains("value") ? "value" : "kind"), e.what());
   }
@@ -292,7 +292,8 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
 // A timeline fault as the resolved document records it: leg names, and kind, joint and value
 // only for kinds other than a whole leg.
 json timeline_fault_json(const robot::Morphology& morph, const sim::Fault& fault) {
-  json j{{"step", fault.step}, {"legs", robot::leg_set_json(morph, fault.legs)},
+  json j{{"step", fault.step},
+         {"legs", robot::leg_set_json(morph, fault.legs)},
          {"recover", fault.recover}};
   if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) return j;
   j["kind"] = sim::kind_name(fault.kind);
@@ -925,7 +926,8 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
         validate(spec);
       } catch (const OptionError& e) {
         if (e.key() != "faults") throw;
-        throw OptionError(s.path, std::string("cannot happen: ") + e.what() + " (scenario " + s.name + ")");
+        throw OptionError(s.path,
+                          std::string("cannot happen: ") + e.what() + " (scenario " + s.name + ")");
       }
       std::vector<std::string> kp = key_parts;
       std::vector<std::string> gp = group_parts;

@@ -30,6 +30,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(AnnealingParams, beta, threshold
                                                 period_set)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SteeringParams, heading_gain, lateral_gain,
                                                 integral_gain, max_heading_offset_deg, max_effort)
+// The reflex as a run left it (a checkpoint of a steering simulation), every key required.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SteeringState, course, offset_integral_m_steps, last_cut)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(CompensationOptions, mode, annealing, window_steps,
                                                 settle_steps, detection_windows, hold_windows,
                                                 monitor_windows, max_episodes, learn_periods,

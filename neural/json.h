@@ -1,5 +1,6 @@
 // The controller's parameters as JSON (nlohmann's type macros): keys are the member names, a
 // missing key keeps its default. Recorded with every result and read from experiment files.
+// Its states too, every key required: a run's checkpoint (sim/checkpoint.h).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -22,5 +23,19 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(MotorNeuronParams, tc_weight, in
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(DelayParams, tau, tau_l)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ControllerParams, cpg, post, psn, vrn, motor,
                                                 delays)
+
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(CpgState, x1, x2, mu, period, counter, chaotic, buffer)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PostProcessingState, window_counter, h1, h2, y1, y2)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PsnState, o)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(VrnState, u, h, v)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MotorNeuronOutputs, tc, ctr, fti)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(MotorCommands, tc, ctr, fti)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DelayLine, ring, head)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DelayedSignals, pre, swing)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LegState, cpg, post, psn, vrn, pre, delay, delayed, command,
+                                   alpha, disabled)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DriveInputs, inhibition, lateral, phase_switch, turn_left,
+                                   turn_right)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ControllerState, legs, drive, step)
 
 }  // namespace multicpg::neural

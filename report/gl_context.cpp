@@ -5,6 +5,7 @@
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <sstream>
@@ -58,11 +59,16 @@ struct Egl {
 using OsMesaCreate = OSMesaContext (*)(GLenum, GLint, GLint, GLint, OSMesaContext);
 using OsMesaMakeCurrent = GLboolean (*)(OSMesaContext, void*, GLenum, GLsizei, GLsizei);
 using OsMesaDestroy = void (*)(OSMesaContext);
+using OsMesaGetProcAddress = void* (*)(const char*);
+using GlGetIntegerv = void (*)(GLenum, GLint*);
+// GL 3.0 / ARB_framebuffer_object (GL/glext.h, which gl.h does not include).
+constexpr GLenum kGlMaxRenderbufferSize = 0x84E8;
 
 struct OsMesa {
   OsMesaCreate create = nullptr;
   OsMesaMakeCurrent make_current = nullptr;
   OsMesaDestroy destroy = nullptr;
+  OsMesaGetProcAddress get_proc_address = nullptr;
 };
 
 struct Platform {
@@ -155,8 +161,11 @@ OsMesa load_osmesa() {
   osmesa.create = symbol<OsMesaCreate>(library, "OSMesaCreateContextExt");
   osmesa.make_current = symbol<OsMesaMakeCurrent>(library, "OSMesaMakeCurrent");
   osmesa.destroy = symbol<OsMesaDestroy>(library, "OSMesaDestroyContext");
-  if (osmesa.create == nullptr || osmesa.make_current == nullptr || osmesa.destroy == nullptr) {
-    throw RuntimeFailure("libOSMesa lacks OSMesaCreateContextExt/MakeCurrent/DestroyContext");
+  osmesa.get_proc_address = symbol<OsMesaGetProcAddress>(library, "OSMesaGetProcAddress");
+  if (osmesa.create == nullptr || osmesa.make_current == nullptr || osmesa.destroy == nullptr ||
+      osmesa.get_proc_address == nullptr) {
+    throw RuntimeFailure(
+        "libOSMesa lacks OSMesaCreateContextExt/MakeCurrent/DestroyContext/GetProcAddress");
   }
   return osmesa;
 }
@@ -296,6 +305,21 @@ void GlContext::make_current() {
                                    GL_UNSIGNED_BYTE, impl_->width, impl_->height) != GL_TRUE) {
     throw RuntimeFailure("OSMesa: cannot make the context current");
   }
+}
+
+int GlContext::max_framebuffer_side() {
+  make_current();
+  const Platform& p = platform();
+  const auto get = reinterpret_cast<GlGetIntegerv>(
+      impl_->backend == GlBackend::egl
+          ? reinterpret_cast<void*>(p.egl.get_proc_address("glGetIntegerv"))
+          : p.osmesa.get_proc_address("glGetIntegerv"));
+  if (get == nullptr) throw RuntimeFailure("OpenGL: no glGetIntegerv");
+  GLint renderbuffer = 0;
+  std::array<GLint, 2> viewport{};
+  get(kGlMaxRenderbufferSize, &renderbuffer);
+  get(GL_MAX_VIEWPORT_DIMS, viewport.data());
+  return std::min({renderbuffer, viewport[0], viewport[1]});
 }
 
 GlBackend GlContext::backend() const {

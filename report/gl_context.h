@@ -30,6 +30,10 @@ class GlContext {
 
   // Makes this context current on the calling thread (several renderers may coexist).
   void make_current();
+  // The largest framebuffer side this context's OpenGL can render into (the smaller of its
+  // largest renderbuffer and viewport), asked before MuJoCo makes its buffers: MuJoCo's answer to
+  // a larger one is a fatal error.
+  int max_framebuffer_side();
   GlBackend backend() const;
 
  private:

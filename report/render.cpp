@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "common/errors.h"
+#include "sim/mujoco_guard.h"
 
 namespace multicpg::report {
 namespace {
@@ -50,27 +51,52 @@ const mjModel* require_model(const mjModel* model) {
   return model;
 }
 
+// Checked before the GL context is made (its buffer has the frame's size).
+int frame_side(const char* key, int side) {
+  require_in(key, side, kFrameSideLimits);
+  return side;
+}
+
 }  // namespace
 
 Renderer::Renderer(const mjModel* model, int width, int height)
-    : model_(require_model(model)), width_(width), height_(height), gl_(width, height) {
+    : model_(require_model(model)),
+      width_(frame_side("width", width)),
+      height_(frame_side("height", height)),
+      gl_(width, height) {
+  // MuJoCo ends the process for a buffer larger than OpenGL allows: ask OpenGL first.
+  const int largest = gl_.max_framebuffer_side();
+  if (width > largest || height > largest) {
+    throw BadInput("a " + std::to_string(width) + "x" + std::to_string(height) +
+                   " frame is larger than this OpenGL renders (" + std::to_string(largest) +
+                   " px a side)");
+  }
   mjv_defaultScene(&scene_);
   mjr_defaultContext(&context_);
   mjv_defaultOption(&option_);
   mjv_defaultCamera(&camera_);
-  mjv_makeScene(model, &scene_, kMaxSceneGeoms);
   // The offscreen buffer size and quality come from the model: set them on a copy.
-  mjModel* sized = mj_copyModel(nullptr, model);
-  sized->vis.global.offwidth = std::max(width, model->vis.global.offwidth);
-  sized->vis.global.offheight = std::max(height, model->vis.global.offheight);
-  sized->vis.quality.offsamples = kOffscreenSamples;
-  sized->vis.quality.shadowsize = kShadowMapSize;
-  {
-    const std::lock_guard lock(context_mutex());
-    mjr_makeContext(sized, &context_, mjFONTSCALE_100);
+  mjModel* sized = nullptr;
+  try {
+    sim::mujoco_call([&] { mjv_makeScene(model, &scene_, kMaxSceneGeoms); });
+    sim::mujoco_call([&] { sized = mj_copyModel(nullptr, model); });
+    sized->vis.global.offwidth = std::max(width, model->vis.global.offwidth);
+    sized->vis.global.offheight = std::max(height, model->vis.global.offheight);
+    sized->vis.quality.offsamples = kOffscreenSamples;
+    sized->vis.quality.shadowsize = kShadowMapSize;
+    {
+      const std::lock_guard lock(context_mutex());
+      sim::mujoco_call([&] { mjr_makeContext(sized, &context_, mjFONTSCALE_100); });
+    }
+    mj_deleteModel(sized);
+    sized = nullptr;
+    sim::mujoco_call([&] { mjr_setBuffer(mjFB_OFFSCREEN, &context_); });
+  } catch (const RuntimeFailure&) {
+    if (sized != nullptr) mj_deleteModel(sized);
+    mjr_freeContext(&context_);
+    mjv_freeScene(&scene_);
+    throw;
   }
-  mj_deleteModel(sized);
-  mjr_setBuffer(mjFB_OFFSCREEN, &context_);
   if (context_.currentBuffer != mjFB_OFFSCREEN) {
     mjr_freeContext(&context_);
     mjv_freeScene(&scene_);
@@ -111,17 +137,23 @@ Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const
   paint(renderer.scene_, colours);
 
   const mjrRect viewport{0, 0, renderer.width_, renderer.height_};
-  mjr_setBuffer(mjFB_OFFSCREEN, &renderer.context_);
-  mjr_render(viewport, &renderer.scene_, &renderer.context_);
+  sim::mujoco_call([&] {
+    mjr_setBuffer(mjFB_OFFSCREEN, &renderer.context_);
+    mjr_render(viewport, &renderer.scene_, &renderer.context_);
+  });
   if (!overlay.titles.empty()) {
-    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, overlay.titles.c_str(),
-                overlay.values.c_str(), &renderer.context_);
+    const char* titles = overlay.titles.c_str();
+    const char* values = overlay.values.c_str();
+    sim::mujoco_call([&] {
+      mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, titles, values, &renderer.context_);
+    });
   }
 
   Image image{renderer.width_, renderer.height_, {}};
   const std::size_t row = 3 * static_cast<std::size_t>(image.width);
   std::vector<unsigned char> bottom_up(row * static_cast<std::size_t>(image.height));
-  mjr_readPixels(bottom_up.data(), nullptr, viewport, &renderer.context_);
+  unsigned char* pixels = bottom_up.data();
+  sim::mujoco_call([&] { mjr_readPixels(pixels, nullptr, viewport, &renderer.context_); });
   // OpenGL rows run bottom to top; images run top to bottom.
   image.rgb.resize(bottom_up.size());
   for (int y = 0; y < image.height; ++y) {

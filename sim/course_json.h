@@ -15,6 +15,7 @@ void to_json(nlohmann::json& j, const Fault& fault);
 // Throws BadInput for an unknown kind or joint, or a value its kind does not take.
 void from_json(const nlohmann::json& j, Fault& fault);
 
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Pose2, x, y, yaw_deg)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(WindowMeasure, yaw_deg, path_deg, forward_m,
                                                 lateral_m, steering_effort)
 

@@ -190,6 +190,28 @@ FaultSchedule::FaultSchedule(const robot::Morphology& morph, FaultTimeline timel
   validate(morph_, timeline_);
 }
 
+FaultSchedule::FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline,
+                             std::size_t come, const std::vector<Fault>& applied)
+    : FaultSchedule(morph, std::move(timeline)) {
+  if (come > timeline_.size()) {
+    throw BadInput(std::to_string(come) + " faults have come of a timeline of " +
+                   std::to_string(timeline_.size()));
+  }
+  // Replayed on a scratch controller: each fault checked as apply_now checks it.
+  neural::ControllerState scratch;
+  scratch.legs.resize(morph.size());
+  std::size_t from_timeline = 0;
+  for (const Fault& f : applied) {
+    if (from_timeline < come && f == timeline_[from_timeline]) ++from_timeline;
+    apply_now(f, scratch);
+  }
+  if (from_timeline != come) {
+    throw BadInput("the faults that came do not hold the first " + std::to_string(come) +
+                   " of the timeline");
+  }
+  next_ = come;
+}
+
 std::size_t FaultSchedule::apply_due(long step, neural::ControllerState& controller) {
   std::size_t came = 0;
   for (; next_ < timeline_.size() && timeline_[next_].step <= step; ++next_, ++came) {

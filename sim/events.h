@@ -75,6 +75,12 @@ class FaultSchedule {
  public:
   // Throws BadInput (validate's message) for a bad timeline.
   FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline);
+  // A schedule part-way through its timeline (a checkpoint read back, sim/checkpoint.h): the
+  // first `come` faults of the timeline have come, and `applied` is every fault that has, in
+  // order. Throws BadInput for a bad timeline, `come` past its end, or an `applied` list that
+  // does not hold those faults in order or could not have happened (validate's message).
+  FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline, std::size_t come,
+                const std::vector<Fault>& applied);
 
   // Applies to `controller`, in order, the faults due before step `step` (whose step is at most
   // `step`); returns how many came.
@@ -93,6 +99,8 @@ class FaultSchedule {
   std::vector<std::size_t> failed_legs() const;
   // Faults of the timeline still to come.
   bool pending() const { return next_ < timeline_.size(); }
+  // How many faults of the timeline have come.
+  std::size_t come() const { return next_; }
 
  private:
   void apply(const Fault& fault, neural::ControllerState& controller);

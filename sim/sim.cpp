@@ -1,6 +1,7 @@
 #include "sim/sim.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 #include "common/errors.h"
 #include "common/limits.h"
 #include "robot/joint_map.h"
+#include "sim/mujoco_guard.h"
 
 namespace multicpg::sim {
 namespace {
@@ -30,14 +32,21 @@ void keep_warning(const char* message) {
 
 // MuJoCo's fatal errors (e.g. an offscreen buffer larger than OpenGL allows). The default handler
 // prints to stdout, appends to MUJOCO_LOG.TXT and waits for Enter. mju_error must not return to
-// MuJoCo (2.2.2 carries on with the broken state if the handler returns), and the ways to leave
-// it early are unsound here: a C++ exception would unwind through MuJoCo's C frames (undefined
+// MuJoCo (2.2.2 carries on with the broken state if the handler returns). Inside mujoco_call of a
+// process that recovers (sim/mujoco_guard.h) it jumps back there. Otherwise the ways to leave it
+// early are unsound here: a C++ exception would unwind through MuJoCo's C frames (undefined
 // behaviour, and its mjData stack would stay half-allocated); longjmp would skip the destructors
-// of our C++ frames and needs a setjmp around every MuJoCo call. The process cannot continue
-// with MuJoCo's state undefined anyway, so: one line on stderr, then _Exit(1). _Exit, not exit:
-// other runner threads may still be simulating and must not see static destructors run. A
-// temporary output file it leaves (*.tmp<pid>) is removed by the next experiment in that folder.
+// of our C++ frames. So: one line on stderr, then _Exit(1). _Exit, not exit: other runner threads
+// may still be simulating and must not see static destructors run. A temporary output file it
+// leaves (*.tmp<pid>) is removed by the next experiment in that folder.
+std::atomic<bool> recovering{false};
+
 [[noreturn]] void fatal_error(const char* message) {
+  if (MujocoJump* jump = armed_mujoco_jump(); jump != nullptr) {
+    // Nothing with a destructor is made on this path (it is skipped by the jump).
+    std::snprintf(jump->message.data(), jump->message.size(), "%s", message);
+    std::longjmp(jump->buffer, 1);
+  }
   std::string line = std::string("multicpg: MuJoCo error: ") + message;
   std::replace(line.begin(), line.end(), '\n', ' ');
   line += '\n';
@@ -291,6 +300,20 @@ std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
                           mjcf_options(options, physics_dt, start_pose(controller)));
 }
 
+void recover_mujoco_errors() {
+  install_mujoco_handlers();
+  recovering = true;
+}
+
+bool recovering_mujoco_errors() {
+  return recovering;
+}
+
+MujocoJump*& armed_mujoco_jump() {
+  thread_local MujocoJump* jump = nullptr;
+  return jump;
+}
+
 void install_mujoco_handlers() {
   static std::once_flag once;
   std::call_once(once, [] {
@@ -412,7 +435,12 @@ void sim_step(const SimModel& model, SimState& state) {
     for (const JointSlot& slot : model.backbone) drive(model, d, slot, 0.0);  // held at 0
     const double previous_time = d->time;
     const Position previous = trunk_position(model, state);
-    mj_step(m, d);
+    try {
+      mujoco_call([m, d] { mj_step(m, d); });
+    } catch (const RuntimeFailure&) {
+      d->pstack = 0;  // the failed step's stack allocations; nothing else holds the stack now
+      throw;
+    }
     check_physics(model, state, previous_time, previous);
   }
   check_on_terrain(model, state);

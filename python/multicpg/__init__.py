@@ -1,55 +1,80 @@
 """multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
 
 Robots walk in MuJoCo under one chaotic CPG per leg; when legs fail, simulated annealing finds
-leg periods that walk straight again. The classes and functions mirror the `multicpg` CLI:
+leg periods that walk straight again. The classes and functions mirror the ``multicpg`` CLI:
 
-- Robot("hexapod" | "quadruped" | "octopod"): leg and joint names, mjcf().
-- Simulation(robot, periods=..., disable=..., faults=[...], ...): step(n), set_periods,
-  fail/recover, synchronise, state()/restore(), record() (NumPy arrays), measure().
-- learn(...), tunnel(...): the CLI's JSON results as dicts, plus the trace as arrays.
-- render(sim, width, height) -> H x W x 3 uint8 array; film(sim, "out.mp4", steps).
-- experiment(file_or_dict, jobs=...): a sweep as `multicpg run` runs it; its tidy table.
-- Annealer: the annealing search one step at a time; env.CompensationEnv: a Gymnasium-shaped
-  environment of the learning task (one step = one trial).
+- ``Robot("hexapod" | "quadruped" | "octopod", terrain=..., model="paper-sim" | "real",
+  body={...})``: legs, joints, ``mjcf()``; equal robots are interchangeable (``==``, ``hash``,
+  pickle).
+- ``Terrain.flat()``, ``.slope(deg)``, ``.rough(height_m, seed)``, ``.steps(height_m, depth_m)``:
+  the ground (the CLI's ``"slope:5"`` text is accepted too).
+- ``Simulation(robot, periods=..., disable=..., faults=[...], ...)``: ``step(n)``,
+  ``set_periods``, ``fail``/``recover``, ``synchronise``, ``steer`` (the reflex),
+  ``walk_window``, ``state()``/``restore()``, ``record()`` (NumPy arrays), ``measure()``.
+- ``Fault(legs, step, kind=..., joint=..., value=...)``, ``Recovery(...)``: a run's fault
+  timeline as objects: whole legs (the paper's), locked, passive and weak joints, a short tibia,
+  a slippery foot, a drifting or noisy yaw sensor (the CLI's ``"R2.CTr:locked@600"`` text is
+  accepted too).
+- ``State``: a complete, immutable, picklable copy of a simulation; restores bit for bit.
+- ``learn(...)``, ``tunnel(...)``: the CLI's JSON results as dicts, plus the trace as arrays.
+- ``render(sim, width, height)`` -> H x W x 3 uint8 array; ``film(sim, "out.mp4", steps)``.
+- ``experiment(file_or_dict, jobs=...)``: a sweep as ``multicpg run`` runs it; its tidy table.
+- ``Annealer``: the annealing search one step at a time; ``env.CompensationEnv``: the learning
+  task as a Gymnasium environment (one step = one trial) with its action and observation spaces.
 
-Bad arguments raise ValueError with the CLI's message; a failed run raises RuntimeError.
+Arguments are Python values: periods as an int, a dict ``{"R1": 5}`` or one per leg in leg
+order; legs as a list of names. A wrong type raises TypeError and a wrong value ValueError, each
+naming the parameter (``periods: period 7 gives no gait ...``); a failed run raises
+RuntimeError. ``__version__`` is the project's version, ``build_info()`` says what was built.
 """
 
 import csv
 import json
 import os
 import tempfile
+from typing import Any, Dict, List, Optional, Union
 
 from ._multicpg import (
+    __version__,
     _run_experiment,
     Annealer,
+    Fault,
+    Recovery,
     Robot,
     Simulation,
     State,
+    Terrain,
+    build_info,
     film,
     learn,
     measure_window,
     render,
     tunnel,
 )
-from . import env
+from . import env, spaces
 
 __all__ = [
     "Annealer",
+    "Fault",
+    "Recovery",
     "Robot",
     "Simulation",
     "State",
+    "Terrain",
+    "__version__",
+    "build_info",
     "env",
     "experiment",
     "film",
     "learn",
     "measure_window",
     "render",
+    "spaces",
     "tunnel",
 ]
 
 
-def _cell(text):
+def _cell(text: str) -> Union[int, float, str]:
     """A runs.csv cell as the number it holds, or the text."""
     for kind in (int, float):
         try:
@@ -59,14 +84,16 @@ def _cell(text):
     return text
 
 
-def experiment(file_or_dict, jobs=None, out=None):
-    """Runs an experiment the way `multicpg run FILE.toml` does and returns its tidy table.
+def experiment(file_or_dict: Union[str, "os.PathLike[str]", Dict[str, Any]],
+               jobs: Optional[int] = None,
+               out: Union[None, str, "os.PathLike[str]"] = None) -> Any:
+    """Runs an experiment the way ``multicpg run FILE.toml`` does and returns its tidy table.
 
     file_or_dict: the path of an experiment file (README "Experiment files"), or its document as
     a dict with the file's keys ({"robot": "hexapod", "scenarios": ["R1"], "learning":
-    {"annealing": {"beta": [0.5, 10]}}, ...}); lists form a grid. jobs: threads (default: every
-    core). out: a directory that keeps the run files, tables and CSVs (resumable, as with the
-    CLI); without it they go to a temporary directory that is removed.
+    {"annealing": {"beta": [0.5, 10]}}, ...}); lists form a grid. jobs: threads, 1..4096
+    (default: every core). out: a directory that keeps the run files, tables and CSVs
+    (resumable, as with the CLI); without it they go to a temporary directory that is removed.
 
     Returns runs.csv, one row per run (scenario, run, seed, each swept option, converged,
     status, trials, deviations, final periods, ...): a pandas DataFrame when pandas is
@@ -74,14 +101,22 @@ def experiment(file_or_dict, jobs=None, out=None):
     ValueError with the CLI's message (naming the key); a failed run raises RuntimeError.
     """
     is_document = isinstance(file_or_dict, dict)
-    source = json.dumps(file_or_dict) if is_document else os.fspath(file_or_dict)
+    if is_document:
+        try:
+            source = json.dumps(file_or_dict, allow_nan=False)
+        except (TypeError, ValueError) as e:
+            raise TypeError(f"file_or_dict: the document is not plain data: {e}") from None
+    else:
+        source = file_or_dict
     with tempfile.TemporaryDirectory(prefix="multicpg-experiment-") as scratch:
-        directory = os.fspath(out) if out is not None else os.path.join(scratch, "out")
-        _run_experiment(source, is_document, 0 if jobs is None else int(jobs), directory)
-        table = os.path.join(directory, "runs.csv")
+        directory = os.path.join(scratch, "out") if out is None else out
+        _run_experiment(source, is_document, jobs, directory)
+        table = os.path.join(os.fspath(directory), "runs.csv")
         try:
             import pandas
         except ImportError:
             with open(table, newline="") as f:
-                return [{k: _cell(v) for k, v in row.items()} for row in csv.DictReader(f)]
+                rows: List[Dict[str, Any]] = [{k: _cell(v) for k, v in row.items()}
+                                              for row in csv.DictReader(f)]
+            return rows
         return pandas.read_csv(table)

@@ -1,13 +1,16 @@
-"""The Python API (issue 11): shapes, equality with the CLI, exact continuations, threads,
-errors, rendering."""
+"""The Python API: shapes, equality with the CLI, Pythonic arguments, exact continuations,
+threads, errors, rendering."""
 
+import copy
+import pickle
+import re
 import threading
 
 import numpy as np
 import pytest
 
 import multicpg
-from conftest import cli_json, run_cli
+from conftest import SOURCE_DIR, cli_json, run_cli
 
 STEPS = 120
 
@@ -152,7 +155,7 @@ def test_bad_arguments_raise_value_error_naming_the_argument(hexapod):
         (lambda: multicpg.Simulation(hexapod, periods=7), "periods: "),
         (lambda: multicpg.Simulation(hexapod, disable="R1,R2,R3,L1,L2,L3"), "every leg"),
         (lambda: multicpg.learn(disable="R1", mode="greedy"), "greedy"),
-        (lambda: multicpg.Simulation(hexapod, faults=["R1@x"]), "faults: "),
+        (lambda: multicpg.Simulation(hexapod, faults=["R1@x"]), "faults[0]: "),
         (lambda: multicpg.Simulation(hexapod, warmup=-1), "warmup: "),
     ]
     for call, mention in cases:
@@ -251,3 +254,162 @@ def test_experiment_bad_values_raise_value_error_naming_the_key(tmp_path):
         multicpg.experiment({"robot": "hexapod"})
     with pytest.raises(ValueError, match="missing.toml"):
         multicpg.experiment(tmp_path / "missing.toml")
+
+
+def test_periods_as_int_dict_sequence_array_or_text_are_the_same_run(hexapod):
+    expected = [5, 4, 4, 4, 6, 4]
+    forms = [{"R1": 5, "L2": 6}, expected, tuple(expected), np.array(expected), "R1=5,L2=6"]
+    positions = []
+    for periods in forms:
+        sim = multicpg.Simulation(hexapod, periods=periods, warmup=0)
+        assert sim.periods == expected, periods
+        sim.step(40)
+        positions.append(sim.record()["position"])
+    for p in positions[1:]:
+        np.testing.assert_array_equal(positions[0], p)
+    assert multicpg.Simulation(hexapod, periods=np.int64(5), warmup=0).periods == [5] * 6
+    # set_periods: legs a dict or text does not name keep their period.
+    sim = multicpg.Simulation(hexapod, periods=expected, warmup=0)
+    sim.set_periods({"R2": 8})
+    assert sim.periods == [5, 8, 4, 4, 6, 4]
+    sim.set_periods("L3=9")
+    assert sim.periods == [5, 8, 4, 4, 6, 9]
+    sim.set_periods(4)
+    assert sim.periods == [4] * 6
+
+
+def test_faults_as_objects_or_text_give_the_same_timeline(hexapod):
+    from_text = multicpg.Simulation(hexapod, faults=["R2,L1@30"], recoveries=["R2@60"], warmup=0)
+    from_objects = multicpg.Simulation(hexapod, faults=[multicpg.Fault(["R2", "L1"], 30),
+                                                        multicpg.Recovery(["R2"], 60)],
+                                       warmup=0)
+    mixed = multicpg.Simulation(hexapod, disable=("R2", "L1"), disable_at=30,
+                                recoveries=multicpg.Recovery("R2", step=60), warmup=0)
+    for sim in (from_text, from_objects, mixed):
+        sim.step(45)
+        assert sim.failed == ["R2", "L1"]
+        sim.step(45)
+        assert sim.failed == ["L1"]
+    np.testing.assert_array_equal(from_text.record()["actual"], from_objects.record()["actual"])
+    np.testing.assert_array_equal(from_text.record()["actual"], mixed.record()["actual"])
+
+
+def test_faults_are_values():
+    fault = multicpg.Fault(["R1", "R3"], 600)
+    assert fault == multicpg.Fault("R1,R3", step=600) == multicpg.Fault(("R1", "R3"), 600)
+    assert hash(fault) == hash(multicpg.Fault("R1+R3", 600))
+    assert fault != multicpg.Recovery(["R1", "R3"], 600)
+    assert isinstance(multicpg.Recovery("R1"), multicpg.Fault)
+    assert (fault.kind, fault.legs, fault.step, fault.recover) == ("leg", ("R1", "R3"), 600, False)
+    assert str(fault) == "R1,R3@600"
+    assert repr(multicpg.Recovery("R1", 5)) == "multicpg.Recovery(legs=['R1'], step=5)"
+    for f in (fault, multicpg.Recovery("L2", 7)):
+        again = pickle.loads(pickle.dumps(f))
+        assert again == f and type(again) is type(f)
+
+
+def test_robots_are_equal_by_what_they_are():
+    a, b = multicpg.Robot("hexapod"), multicpg.Robot("hexapod")
+    assert a == b and hash(a) == hash(b) and len({a, b}) == 1
+    assert a != multicpg.Robot("quadruped")
+    assert a != multicpg.Robot("hexapod", control_dt=0.05)
+    assert a != multicpg.Robot("hexapod", tunnel=True)
+    assert pickle.loads(pickle.dumps(a)) == a
+    assert copy.deepcopy(a) == a
+    assert repr(multicpg.Robot("quadruped", servo_gain=20)) == \
+        "multicpg.Robot('quadruped', servo_gain=20.0)"
+    # A state of one restores into a simulation of the other.
+    sim = multicpg.Simulation(a, warmup=0)
+    sim.step(10)
+    other = multicpg.Simulation(b, warmup=0)
+    other.restore(sim.state())
+    assert other.step_count == 10 and other.pose() == sim.pose()
+
+
+def test_version_and_build_info_name_the_project_and_commit():
+    text = (SOURCE_DIR / "CMakeLists.txt").read_text()
+    version = re.search(r"project\(multicpg VERSION ([0-9.]+)", text).group(1)
+    assert multicpg.__version__ == version
+    info = multicpg.build_info()
+    assert info["version"] == version
+    assert re.fullmatch(r"[0-9a-f]{40}(\+dirty)?|unknown", info["git_commit"])
+    assert info["mujoco_version"] == "2.2.2"
+
+
+def test_every_public_name_has_a_docstring():
+    names = [getattr(multicpg, n) for n in multicpg.__all__ if not n.startswith("__")]
+    for obj in names + [multicpg.env.CompensationEnv, multicpg.env.AnnealingAgent,
+                        multicpg.spaces.Box, multicpg.spaces.MultiDiscrete]:
+        assert obj.__doc__ and obj.__doc__.strip(), obj
+        for attr, member in vars(obj).items() if isinstance(obj, type) else []:
+            if attr.startswith("_") or not callable(member) and not isinstance(member, property):
+                continue
+            assert getattr(obj, attr).__doc__, f"{obj.__name__}.{attr}"
+
+
+def test_every_fault_kind_and_terrain_as_objects_equal_the_cli():
+    faults = ["R2.CTr:locked@100", "L1:weak=0.3@100", "R1:short=0.5@200", "L2:slip=0.2@200",
+              "R3.FTi:passive@300", "imu:drift=0.5@300", "imu:noise=1@300"]
+    flags = [a for f in faults for a in ("--fault", f)]
+    cli = cli_json("walk", "--steps", "800", "--settle", "0", "--window", "400",
+                   "--terrain", "slope:5", "--model", "real", *flags)
+    objects = [multicpg.Fault("R2", 100, kind="locked", joint="CTr"),
+               multicpg.Fault(["L1"], 100, kind="weak", value=0.3),
+               multicpg.Fault("R1", 200, kind="short", value=0.5),
+               multicpg.Fault("L2", 200, kind="slip", value=0.2),
+               multicpg.Fault("R3", 300, kind="passive", joint="FTi"),
+               multicpg.Fault(step=300, kind="drift", value=0.5),
+               multicpg.Fault(step=300, kind="noise", value=1)]
+    assert [str(f) for f in objects] == faults
+    robot = multicpg.Robot(terrain=multicpg.Terrain.slope(5), model="real")
+    assert robot.terrain == multicpg.Terrain("slope:5") and robot.model == "real"
+    assert robot == multicpg.Robot(terrain="slope:5", model="real")
+    sim = multicpg.Simulation(robot, faults=objects)
+    sim.step(800)
+    m = sim.measure(settle=0, window=400)
+    assert m["distance_m"] == cli["distance_m"]
+    assert m["window_deviations_deg"] == cli["window_deviations_deg"]
+    for f in objects + [multicpg.Recovery("R2", 5, kind="locked", joint="CTr")]:
+        again = pickle.loads(pickle.dumps(f))
+        assert again == f and hash(again) == hash(f) and type(again) is type(f)
+    assert repr(objects[0]) == "multicpg.Fault(legs=['R2'], step=100, kind='locked', joint='CTr')"
+    # A state holding every kind in force restores bit for bit (its own model, the sensor).
+    state = sim.state()
+    sim.step(50)
+    again = multicpg.Simulation(robot)
+    again.restore(pickle.loads(pickle.dumps(state)))
+    again.step(50)
+    np.testing.assert_array_equal(again.record()["actual"][-50:], sim.record()["actual"][-50:])
+
+
+def test_fault_terrain_and_body_misuse_names_the_parameter():
+    cases = [(lambda: multicpg.Fault("R1", kind="locked"), ValueError, "joint"),
+             (lambda: multicpg.Fault("R1", kind="weak", value=2), ValueError, "kind"),
+             (lambda: multicpg.Fault("R1", kind="noise", value=1), ValueError, "legs"),
+             (lambda: multicpg.Fault("R1", kind="leg", joint="XX"), ValueError, "joint"),
+             (lambda: multicpg.Fault("R1", kind="weak", value="a"), TypeError, "value"),
+             (lambda: multicpg.Terrain("slope:90"), ValueError, "text"),
+             (lambda: multicpg.Terrain.rough(1.0), ValueError, "height_m"),
+             (lambda: multicpg.Robot(terrain=3), TypeError, "terrain"),
+             (lambda: multicpg.Robot(model="marble"), ValueError, "model"),
+             (lambda: multicpg.Robot(body={"slip": 5.0}), ValueError, "body['slip']"),
+             (lambda: multicpg.Robot(body={"colour": 1}), ValueError, "body['colour']"),
+             (lambda: multicpg.Robot(body=[1]), TypeError, "body"),
+             (lambda: multicpg.Simulation(seed=-1), ValueError, "seed")]
+    for make, error, name in cases:
+        with pytest.raises(error) as raised:
+            make()
+        assert str(raised.value).startswith(name), (name, str(raised.value))
+
+
+def test_a_robot_carries_its_body():
+    real = multicpg.Robot(model="real", body={"slip": 0.01, "disabled_posture": (0, 1, -1)})
+    assert real.body["slip"] == 0.01
+    assert real.body["disabled_posture"] == {"tc": 0.0, "ctr": 1.0, "fti": -1.0}
+    assert real != multicpg.Robot(model="real")
+    assert pickle.loads(pickle.dumps(real)) == real
+    cli = cli_json("walk", "--model", "real", "--slip", "0.01", "--disabled-posture", "0,1,-1",
+                   "--disable", "R1", "--steps", "400", "--settle", "0")
+    sim = multicpg.Simulation(real, disable="R1")
+    sim.step(400)
+    assert sim.measure(settle=0, window=400)["distance_m"] == cli["distance_m"]
