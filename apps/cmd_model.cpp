@@ -1,7 +1,5 @@
 // multicpg model: print the MJCF of a robot, as the simulation compiles it (SPEC §7), or the
 // named body models with every value and its source.
-#include <fmt/format.h>
-
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -25,33 +23,16 @@ struct ModelOptions {
   std::string out;
 };
 
-std::string number(const nlohmann::json& v) {
-  return fmt::format("{:.6g}", v.get<double>());
-}
-
-// A parameter's value as the listing shows it: numbers to 6 digits, postures as TC,CTr,FTi.
-std::string value_text(const nlohmann::json& v) {
-  if (v.is_array()) {
-    if (v.empty()) return "none";
-    std::string out;
-    for (const nlohmann::json& e : v) out += (out.empty() ? "" : "; ") + e.dump();
-    return out;
-  }
-  if (v.is_object())
-    return number(v.at("tc")) + "," + number(v.at("ctr")) + "," + number(v.at("fti"));
-  return number(v);
-}
-
 // Every model, every value, its unit and its source (robot/body_models.h).
 void print_models(std::ostream& out) {
   for (robot::BodyModel m : robot::kBodyModels) {
     out << robot::to_string(m) << (m == robot::kDefaultBodyModel ? " (default)" : "") << ": "
         << robot::describe(m) << "\n";
-    const nlohmann::json values = robot::body_params(m);
+    const robot::BodyParams values = robot::body_params(m);
     for (std::string_view key : robot::parameter_keys()) {
       const std::string k(key);
       const std::string shown =
-          value_text(values.at(k)) + " " + std::string(robot::value_unit(key));
+          robot::value_text(values, key) + " " + std::string(robot::value_unit(key));
       out << "  " << std::left << std::setw(20) << k << std::setw(22) << shown << "  "
           << robot::value_source(m, key) << "\n";
     }

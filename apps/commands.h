@@ -22,6 +22,7 @@ void register_tunnel(CLI::App& app);
 void register_reproduce(CLI::App& app);
 void register_figure(CLI::App& app);
 void register_landscape(CLI::App& app);
+void register_calibrate(CLI::App& app);
 void register_run(CLI::App& app);  // run, rerun, merge
 
 // Walks a landscape in OUT (resumable), draws its map and prints what holds: `landscape` and

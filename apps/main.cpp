@@ -34,7 +34,7 @@ int finish_stdout(int code) {
 // would only run again in each process (and `reproduce` runs experiments side by side, which
 // the processes could not follow in step), so under mpirun with -np > 1 they are refused.
 constexpr std::string_view kSharedCommands[] = {"experiment table", "experiment beta", "landscape",
-                                                "run"};
+                                                "run", "calibrate"};
 
 // BadInput unless the command `app` parsed may run in several processes.
 void check_processes(const CLI::App& app) {
@@ -69,6 +69,7 @@ experiments::Ending run(int argc, char** argv) {
   apps::register_reproduce(app);
   apps::register_figure(app);
   apps::register_landscape(app);
+  apps::register_calibrate(app);
   apps::register_run(app);
   apps::refuse_empty_values(app);
   app.parse_complete_callback([&app] { check_processes(app); });  // before the command runs

@@ -55,6 +55,70 @@ std::string csv_line(const std::vector<std::string>& fields) {
   return out + '\n';
 }
 
+Table parse_csv(std::string_view text) {
+  std::vector<std::vector<std::string>> records;
+  std::vector<std::string> record;
+  std::string field;
+  bool quoted = false;
+  bool any = false;  // the record has begun
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c != '"') {
+        field += c;
+      } else if (i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else {
+        quoted = false;
+      }
+      continue;
+    }
+    if (c == '"') {
+      quoted = any = true;
+    } else if (c == ',') {
+      record.push_back(std::move(field));
+      field.clear();
+      any = true;
+    } else if (c == '\n' || c == '\r') {
+      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      if (any || !field.empty()) {
+        record.push_back(std::move(field));
+        records.push_back(std::move(record));
+      }
+      field.clear();
+      record.clear();
+      any = false;
+    } else {
+      field += c;
+      any = true;
+    }
+  }
+  if (quoted) throw BadInput("CSV: a quoted field is not closed");
+  if (any || !field.empty()) {
+    record.push_back(std::move(field));
+    records.push_back(std::move(record));
+  }
+  Table t;
+  if (records.empty()) return t;
+  for (std::string& title : records.front()) t.columns.push_back({std::move(title), Align::left});
+  for (std::size_t r = 1; r < records.size(); ++r) {
+    if (records[r].size() != t.columns.size()) {
+      throw BadInput(fmt::format("CSV: record {} has {} fields, the header {}", r + 1,
+                                 records[r].size(), t.columns.size()));
+    }
+    t.rows.push_back(std::move(records[r]));
+  }
+  return t;
+}
+
+std::size_t column_index(const Table& t, std::string_view title) {
+  for (std::size_t i = 0; i < t.columns.size(); ++i) {
+    if (t.columns[i].title == title) return i;
+  }
+  throw BadInput("no column '" + std::string(title) + "'");
+}
+
 std::string to_csv(const Table& t) {
   std::string out = csv_line(titles(t));
   for (const auto& row : t.rows) out += csv_line(row);

@@ -30,6 +30,11 @@ struct Table {
 // RFC 4180: a field is quoted only when it holds a comma, quote or line break; quotes doubled.
 std::string csv_line(const std::vector<std::string>& fields);
 std::string to_csv(const Table& table);
+// Reads what to_csv writes: the first record is the header (columns left-aligned), every other
+// record a row. Throws BadInput naming the record for a row of another width or an unclosed quote.
+Table parse_csv(std::string_view text);
+// The index of the column titled `title`; throws BadInput naming it when there is none.
+std::size_t column_index(const Table& table, std::string_view title);
 // GitHub Markdown: `---` under left and `---:` under right-aligned columns; '|' in a cell is
 // escaped.
 std::string to_markdown(const Table& table);

@@ -46,6 +46,13 @@ inline constexpr std::array<TunnelResult, 3> kTunnel{{{"R1", kLearnedR1, 42.0, 7
                                                       {"R1+R3", kLearnedR1R3, 21.0, 0.95},
                                                       {"R1+R3+L2", kLearnedR1R3L2, 23.0, 2.67}}};
 
+// §5: "the robot deviated to the right and hit the right board in all three experiments". Our
+// deviations count + = left, so the real robot's before-learning angles are these, negated.
+inline constexpr double signed_before_deg(const TunnelResult& result) {
+  return -result.before_deg;
+}
+// Table 1 does not say to which side the learned periods erred; the text gives distances only.
+
 // §4.1: the deviation the paper's simulator shows with R1 disabled, all periods 4, per 400 steps.
 inline constexpr double kR1SimulatorDeg = 38.0;
 

@@ -21,13 +21,6 @@ std::size_t mirror_leg(const Morphology& morph, std::size_t leg) {
   return leg;
 }
 
-Legs mirror(const Morphology& morph, const Legs& legs) {
-  Legs out;
-  for (std::size_t leg : legs) out.push_back(mirror_leg(morph, leg));
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 std::size_t right_legs(const Morphology& morph, const Legs& legs) {
   return static_cast<std::size_t>(std::count_if(
       legs.begin(), legs.end(), [&](std::size_t l) { return morph.legs[l].side == Side::right; }));
@@ -48,6 +41,19 @@ bool is_representative(const Morphology& morph, const Legs& legs) {
 }
 
 }  // namespace
+
+std::vector<std::size_t> mirror(const Morphology& morph, const std::vector<std::size_t>& legs) {
+  Legs out;
+  for (std::size_t leg : legs) out.push_back(mirror_leg(morph, leg));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<int> mirror_periods(const Morphology& morph, const std::vector<int>& periods) {
+  std::vector<int> out(periods.size());
+  for (std::size_t leg = 0; leg < periods.size(); ++leg) out[mirror_leg(morph, leg)] = periods[leg];
+  return out;
+}
 
 std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_disabled) {
   std::vector<Legs> sets;

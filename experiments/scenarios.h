@@ -21,6 +21,12 @@ inline constexpr int kBetaRuns = 50;      // runs per beta, paper Fig. 14
 // Beta study (paper Fig. 14): 0 = random search, 10 ~ greedy.
 inline const std::vector<double> kBetaStudyValues{0.0, 0.1, 0.3, 0.5, 1.0, 5.0, 10.0};
 
+// The legs' left-right mirror images (R1 <-> L1, ...), sorted.
+std::vector<std::size_t> mirror(const robot::Morphology& morph,
+                                const std::vector<std::size_t>& legs);
+// Periods per leg (morphology order) with each leg's period moved to its mirror image.
+std::vector<int> mirror_periods(const robot::Morphology& morph, const std::vector<int>& periods);
+
 // Every set of 1..max_disabled legs up to left-right mirror, without a whole disabled side.
 // Single legs are all listed (the paper's six one-leg rows); a larger set and its mirror image
 // appear once, as the one with more right legs, ties going to the smaller leg indices (the

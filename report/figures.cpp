@@ -21,7 +21,7 @@ constexpr const char* kGnuplot = "gnuplot";
 constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
 constexpr const char* kFont = "DejaVu Sans,11";
 
-constexpr std::array<FigureInfo, 10> kFigures{{
+constexpr std::array<FigureInfo, 11> kFigures{{
     {"gait", "fig02-gaits", "gait.gp", 1200, 900,
      "Fig. 2: gait diagrams for p = 1, 4, 5, 6, 8, 9 (blue = stance, white = swing)"},
     {"cpg-sync", "fig06-cpg-sync", "cpg_sync.gp", 1200, 700,
@@ -42,6 +42,8 @@ constexpr std::array<FigureInfo, 10> kFigures{{
      "Trunk path seen from above, R1 disabled, before and after learning"},
     {"landscape", "landscape-map", "landscape.gp", 1200, 700,
      "Landscape: worst deviation of every combination of working-leg periods (issue 8)"},
+    {"calibration", "calibration-sensitivity", "calibration.gp", 1100, 650,
+     "Calibration: which body parameter moves which Table 1 number (rank correlation)"},
 }};
 
 // --- CSV -------------------------------------------------------------------------------------
@@ -482,6 +484,44 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
       .num("windows", static_cast<double>(windows))
       .num("count", static_cast<double>(points.size()))
       .num("learned", static_cast<double>(learned));
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_calibration(const CalibrationMap& map, const fs::path& out_dir,
+                             std::string_view stem) {
+  const FigureInfo& info = figure_by_name("calibration");
+  require(!map.params.empty() && !map.numbers.empty(), info.name, "nothing to draw");
+  require(map.rho.size() == map.params.size(), info.name, "one row of rho per parameter");
+  ensure_writable_dir(out_dir);
+  Csv csv({"x", "y", "rho", "parameter", "number"});
+  for (std::size_t p = 0; p < map.params.size(); ++p) {
+    require(map.rho[p].size() == map.numbers.size(), info.name,
+            map.params[p] + " has " + std::to_string(map.rho[p].size()) + " values, expected " +
+                std::to_string(map.numbers.size()));
+    for (std::size_t n = 0; n < map.numbers.size(); ++n) {
+      csv.row({std::to_string(n), std::to_string(p), shortest(map.rho[p][n]), map.params[p],
+               map.numbers[n]});
+    }
+  }
+  // gnuplot tic lists: "label" position, ...
+  const auto tics = [](const std::vector<std::string>& labels) {
+    std::string out;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if (i > 0) out += ", ";
+      out += '"';
+      out += labels[i];
+      out += "\" ";
+      out += std::to_string(i);
+    }
+    return out;
+  };
+  Params params;
+  params.text("title", map.title)
+      .text("subtitle", map.subtitle)
+      .text("xtics_list", tics(map.numbers))
+      .text("ytics_list", tics(map.params))
+      .num("nx", static_cast<double>(map.numbers.size()))
+      .num("ny", static_cast<double>(map.params.size()));
   return draw(info, out_dir, stem, csv, params);
 }
 

@@ -146,4 +146,17 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
                            double threshold_deg, const std::filesystem::path& out_dir,
                            std::string_view stem = {});
 
+// The calibration of the body against Table 1 (docs/fidelity.md): a heat map of the rank
+// correlation (-1..1) of each searched body parameter (rows) with each number a candidate walked
+// (columns: the tunnel angles, the score, the intact robot's yaw and speed, the paper's periods).
+struct CalibrationMap {
+  std::vector<std::string> params;
+  std::vector<std::string> numbers;
+  std::vector<std::vector<double>> rho;  // [param][number]
+  std::string title;
+  std::string subtitle;
+};
+FigureFiles plot_calibration(const CalibrationMap& map, const std::filesystem::path& out_dir,
+                             std::string_view stem = {});
+
 }  // namespace multicpg::report

@@ -3,8 +3,11 @@
 // with every result (sim.body, sim.model) and read from experiment files.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "robot/body_models.h"
 #include "robot/body_params.h"
@@ -36,6 +39,21 @@ inline void to_json(nlohmann::json& j, BodyModel model) {
 }
 inline void from_json(const nlohmann::json& j, BodyModel& model) {
   model = parse_body_model(j.get<std::string>());
+}
+
+// One BodyParams value as listings show it (`model --list`, the report): numbers to 6 digits,
+// a posture as TC,CTr,FTi, leg postures as their JSON objects ("none" when there are none).
+inline std::string value_text(const BodyParams& params, std::string_view key) {
+  const nlohmann::json v = nlohmann::json(params).at(std::string(key));
+  const auto number = [](const nlohmann::json& n) { return fmt::format("{:.6g}", n.get<double>()); };
+  if (v.is_array()) {
+    if (v.empty()) return "none";
+    std::string out;
+    for (const nlohmann::json& e : v) out += (out.empty() ? "" : "; ") + e.dump();
+    return out;
+  }
+  if (v.is_object()) return number(v.at("tc")) + "," + number(v.at("ctr")) + "," + number(v.at("fti"));
+  return number(v);
 }
 
 }  // namespace multicpg::robot

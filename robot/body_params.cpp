@@ -48,6 +48,52 @@ void validate(const BodyParams& p) {
   require_in("servo_speed", p.servo_speed, kServoSpeedLimits);
 }
 
+namespace {
+
+template <double BodyParams::*M>
+constexpr NumberParam top_level(std::string_view key, Limits<double> limits) {
+  return {key, limits, [](const BodyParams& p) { return p.*M; },
+          [](BodyParams& p, double v) { p.*M = v; }};
+}
+
+template <double LegPosture::*M>
+constexpr NumberParam posture_joint(std::string_view key) {
+  return {key, kPostureLimits, [](const BodyParams& p) { return p.disabled_posture.*M; },
+          [](BodyParams& p, double v) { p.disabled_posture.*M = v; }};
+}
+
+constexpr NumberParam kNumberParams[] = {
+    posture_joint<&LegPosture::tc>("disabled_posture.tc"),
+    posture_joint<&LegPosture::ctr>("disabled_posture.ctr"),
+    posture_joint<&LegPosture::fti>("disabled_posture.fti"),
+    top_level<&BodyParams::lift_body>("lift_body", kLiftBodyLimits),
+    top_level<&BodyParams::total_mass>("total_mass", kTotalMassLimits),
+    top_level<&BodyParams::trunk_mass>("trunk_mass", kTrunkMassLimits),
+    top_level<&BodyParams::foot_friction>("foot_friction", kFrictionLimits),
+    top_level<&BodyParams::trunk_friction>("trunk_friction", kFrictionLimits),
+    top_level<&BodyParams::slip>("slip", kSlipLimits),
+    top_level<&BodyParams::joint_compliance>("joint_compliance", kJointComplianceLimits),
+    top_level<&BodyParams::torsional_friction>("torsional_friction", kTorsionalFrictionLimits),
+    top_level<&BodyParams::rolling_friction>("rolling_friction", kRollingFrictionLimits),
+    top_level<&BodyParams::servo_torque>("servo_torque", kServoTorqueLimits),
+    top_level<&BodyParams::servo_speed>("servo_speed", kServoSpeedLimits),
+};
+
+}  // namespace
+
+std::span<const NumberParam> number_params() {
+  return kNumberParams;
+}
+
+const NumberParam& number_param(std::string_view key) {
+  std::string known;
+  for (const NumberParam& p : number_params()) {
+    if (p.key == key) return p;
+    known += (known.empty() ? "" : ", ") + std::string(p.key);
+  }
+  throw BadInput("no body parameter '" + std::string(key) + "' (known: " + known + ")");
+}
+
 std::vector<LegPosture> disabled_postures(const BodyParams& params, const Morphology& morph) {
   std::vector<LegPosture> out(morph.size(), params.disabled_posture);
   std::set<std::size_t> seen;

@@ -9,7 +9,9 @@
 #include <cstddef>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/limits.h"
@@ -111,6 +113,21 @@ struct BodyParams {
   double servo_torque = kSimServoTorque;
   double servo_speed = kSimServoSpeed;
 };
+
+// One number of BodyParams named by its key ("slip", or a joint of the all-legs posture:
+// "disabled_posture.ctr"), with its documented range: what a search over the body (the
+// calibration, experiments/calibration.h) reads and writes.
+struct BodyParams;
+struct NumberParam {
+  std::string_view key;
+  Limits<double> limits;
+  double (*get)(const BodyParams&);
+  void (*set)(BodyParams&, double);
+};
+// Every number of BodyParams, in the struct's order (leg_postures, a list, is not one).
+std::span<const NumberParam> number_params();
+// Throws BadInput naming the known keys for an unknown one.
+const NumberParam& number_param(std::string_view key);
 
 // Throws OptionError ("total_mass", "leg_postures[0].fti", ...) for a value outside its range or
 // a trunk that leaves the legs less than kMinLegsMass.

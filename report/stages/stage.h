@@ -27,6 +27,10 @@ struct Sizes {
   int landscape_windows;  // windows each combination of the landscape is measured over
   // Periods each working leg takes in the landscape; empty = the annealing's whole period set.
   std::span<const int> landscape_periods;
+  // Periods-alone learning in the tunnel (tunnel --learn --steering off): trials per episode
+  // and episodes at most.
+  int periods_alone_max_trials;
+  int periods_alone_max_episodes;
 };
 
 // What a stage gets: the options, the sizes and the report folder.
@@ -71,6 +75,7 @@ Section quadruped_table_stage(const StageContext& ctx);
 Section beta_stage(const StageContext& ctx);
 Section tunnel_stage(const StageContext& ctx);
 Section landscape_stage(const StageContext& ctx);
+Section calibration_stage(const StageContext& ctx);
 
 // Leg names in morphology order (the figures' legend).
 std::vector<std::string> leg_names(const robot::Morphology& morph);

@@ -17,6 +17,8 @@ const std::vector<Stage>& reproduce_stages() {
       {"beta", {"beta"}, beta_stage, {}, /*early=*/true},
       // "Our learning" in the tunnel is the hexapod table's most frequent learned combination.
       {"tunnel", {}, tunnel_stage, {"hexapod-table"}, /*early=*/true},
+      // Draws the committed calibration data (docs/calibration): seconds.
+      {"calibration", {"calibration"}, calibration_stage},
       // Where the quadruped table's learning runs with L2 disabled fall in the landscape.
       {"landscape", {"landscape"}, landscape_stage, {"quadruped-table"}},
   };

@@ -1,5 +1,7 @@
-// The tunnel (paper §5, Table 1): each scenario with all periods 4, with our learned
-// combination (the hexapod table's most frequent one) and with the paper's; films and paths.
+// The tunnel (paper §5, Table 1): the real robot beside our two bodies, paper-sim and real
+// (robot/body_models.h, docs/fidelity.md), each scenario before learning, with the paper's
+// periods, after learning with periods alone and after robust learning; and on the run's own
+// body the films, the trunk paths and the combination the hexapod table learned.
 #include "experiments/tunnel.h"
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include "report/film.h"
 #include "report/stages/stage.h"
 #include "robot/leg_sets.h"
+#include "sim/json.h"
 
 namespace multicpg::report {
 namespace {
@@ -28,13 +31,144 @@ std::string file_stem(std::string text) {
   return text;
 }
 
+std::vector<std::size_t> disabled_legs(const robot::Morphology& morph,
+                                       const paper::TunnelResult& sc) {
+  std::string legs(sc.disabled);
+  std::replace(legs.begin(), legs.end(), '+', ',');
+  return robot::parse_leg_set(morph, legs);
+}
+
+std::vector<int> papers_periods(const robot::Morphology& morph, const paper::TunnelResult& sc) {
+  return robot::parse_period_map(morph, paper::combination_text(sc.learned),
+                                 learning::kStartPeriod);
+}
+
+sim::SimModel corridor_model(const sim::SimOptions& options) {
+  sim::SimOptions with_tunnel = options;
+  with_tunnel.scene.tunnel = true;
+  return sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
+}
+
+// "passed, -5.1°", "wall at 0.82 m, -21.1°", "too slow, -3.0°".
+std::string outcome_text(const experiments::TunnelRun& t) {
+  const std::string angle = fixed(t.deviation_deg, 1) + "°";
+  if (t.passed) return "passed, " + angle;
+  if (t.touched_wall) return "wall at " + fixed(t.forward_m, 2) + " m, " + angle;
+  return "too slow, " + angle;
+}
+
+// --- Table 1 side by side ----------------------------------------------------------------------
+
+// A body the side-by-side table walks.
+struct Body {
+  std::string name;
+  sim::SimOptions sim;
+};
+
+// The named models paper-sim and real (with the run's time steps), and the run's own body when
+// it is neither.
+std::vector<Body> table_bodies(const StageContext& ctx) {
+  std::vector<Body> out;
+  bool own = false;
+  for (robot::BodyModel m : robot::kBodyModels) {
+    sim::SimOptions s = ctx.options.sim;
+    s.model = m;
+    s.body = robot::body_params(m);
+    own = own || nlohmann::json(s) == nlohmann::json(ctx.options.sim);
+    out.push_back({std::string(robot::to_string(m)), s});
+  }
+  if (!own) out.push_back({"this run's body", ctx.options.sim});
+  return out;
+}
+
+// The four rows of one scenario on one body.
+struct BodyScenario {
+  experiments::TunnelRun before, papers;
+  experiments::TunnelOutcome periods_alone, robust;
+};
+
+experiments::TunnelOutcome learn_and_walk(const StageContext& ctx, const sim::SimOptions& body,
+                                          const sim::SimModel& corridor,
+                                          const std::vector<std::size_t>& disabled,
+                                          bool periods_alone) {
+  experiments::RunSpec spec;
+  spec.sim = body;
+  learning::CompensationOptions& l = spec.learning.emplace();
+  l.seed = ctx.options.seed;
+  if (periods_alone) {
+    // `tunnel --learn --steering off`, as docs/learning.md measures it.
+    l.steering = learning::Steering::off;
+    l.annealing.max_trials = ctx.sizes.periods_alone_max_trials;
+    l.max_episodes = ctx.sizes.periods_alone_max_episodes;
+  }
+  spec.start = experiments::learning_start(l.mode);
+  spec.faults = sim::fail_at(disabled, 0);
+  experiments::validate(spec);
+  return experiments::run_tunnel(spec, corridor);
+}
+
+BodyScenario walk_body_scenario(const StageContext& ctx, const Body& body,
+                                const paper::TunnelResult& sc) {
+  const sim::SimModel corridor = corridor_model(body.sim);
+  const robot::Morphology& morph = corridor.controller.morphology;
+  const std::vector<std::size_t> disabled = disabled_legs(morph, sc);
+  BodyScenario out;
+  experiments::TunnelSpec t;
+  t.faults = sim::fail_at(disabled, 0);
+  out.before = experiments::run_tunnel(corridor, t);
+  t.start.periods = papers_periods(morph, sc);
+  out.papers = experiments::run_tunnel(corridor, t);
+  out.periods_alone = learn_and_walk(ctx, body.sim, corridor, disabled, /*periods_alone=*/true);
+  out.robust = learn_and_walk(ctx, body.sim, corridor, disabled, /*periods_alone=*/false);
+  return out;
+}
+
+std::string learned_text(const robot::Morphology& morph, const experiments::TunnelOutcome& o) {
+  std::string text = outcome_text(o.run) + " (" +
+                     robot::period_map_text(morph, o.periods, o.disabled);
+  if (o.learned) {
+    text += o.learned->steering ? " + reflex" : "";
+    text += ", " + counted(o.learned->trials, "trial");
+  }
+  return text + ")";
+}
+
+Table side_by_side_table(const std::vector<Body>& bodies,
+                         const std::vector<std::vector<BodyScenario>>& results) {
+  Table table{{{"disabled", Align::left}, {"row", Align::left}, {"real AMOSII (paper §5)", Align::left}},
+              {}};
+  for (const Body& b : bodies) table.columns.push_back({b.name, Align::left});
+  const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
+  for (std::size_t s = 0; s < paper::kTunnel.size(); ++s) {
+    const paper::TunnelResult& sc = paper::kTunnel[s];
+    const std::string name(sc.disabled);
+    const auto row = [&](std::string label, std::string real, auto cell) {
+      std::vector<std::string> cells{name, std::move(label), std::move(real)};
+      for (std::size_t b = 0; b < bodies.size(); ++b) cells.push_back(cell(results[b][s]));
+      table.add_row(std::move(cells));
+    };
+    row("before learning (all periods 4)", "hit the right wall, ≈" + fixed(sc.before_deg, 0) + "° right",
+        [](const BodyScenario& r) { return outcome_text(r.before); });
+    row("the paper's periods " + paper::combination_text(sc.learned),
+        "passed, ≈" + fixed(sc.after_deg, 2) + "°",
+        [](const BodyScenario& r) { return outcome_text(r.papers); });
+    row("periods-alone learning (tunnel --learn --steering off)",
+        "the row above: learned in the paper's simulator",
+        [&](const BodyScenario& r) { return learned_text(morph, r.periods_alone); });
+    row("robust learning (tunnel --learn)", "–",
+        [&](const BodyScenario& r) { return learned_text(morph, r.robust); });
+  }
+  return table;
+}
+
+// --- the run's own body: films, paths, our learning ----------------------------------------------
+
 struct Variant {
   std::string source;
   std::vector<int> periods;
   double paper_deg;
   bool filmed;
-  std::vector<Point2>* path;                         // where its trunk path is drawn, if anywhere
-  std::optional<learning::SteeringParams> steering;  // robust learning walks with its reflex
+  std::vector<Point2>* path;  // where its trunk path is drawn, if anywhere
 };
 
 // One scenario's rows, films and path figure.
@@ -48,37 +182,18 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
                             const paper::TunnelResult& sc, const std::string& learned) {
   const robot::Morphology& morph = corridor.controller.morphology;
   const std::string name(sc.disabled);
-  std::string legs = name;
-  std::replace(legs.begin(), legs.end(), '+', ',');
-  const std::vector<std::size_t> disabled = robot::parse_leg_set(morph, legs);
+  const std::vector<std::size_t> disabled = disabled_legs(morph, sc);
   ScenarioOutput out;
   TrunkPaths paths;
   std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
-                                 sc.before_deg, true, &paths.before, std::nullopt}};
+                                 sc.before_deg, true, &paths.before}};
   if (!learned.empty()) {
     variants.push_back({"our learning",
                         robot::parse_period_map(morph, learned, learning::kStartPeriod),
-                        sc.after_deg, true, &paths.after, std::nullopt});
+                        sc.after_deg, true, &paths.after});
   }
   variants.push_back(
-      {"the paper's learning",
-       robot::parse_period_map(morph, paper::combination_text(sc.learned), learning::kStartPeriod),
-       sc.after_deg, false, nullptr, std::nullopt});
-  // Issue 8: robust learning (learn --mode robust) in the open field from a walking robot, then
-  // its periods and steering reflex through the tunnel.
-  {
-    const sim::SimModel open = sim::make_sim_model(robot::RobotKind::hexapod, ctx.options.sim);
-    experiments::RunSpec robust;
-    robust.sim = ctx.options.sim;
-    robust.learning.emplace().seed = ctx.options.seed;
-    robust.start = experiments::learning_start(robust.learning->mode);
-    robust.faults = sim::fail_at(disabled, 0);
-    const experiments::LearningRun run = experiments::run_learning(open, robust);
-    std::optional<learning::SteeringParams> steering;
-    if (run.result.steering) steering = robust.learning->steering_params;
-    variants.push_back({"robust learning (" + std::to_string(run.result.trials) + " trials)",
-                        run.result.periods, sc.after_deg, false, nullptr, steering});
-  }
+      {"the paper's learning", papers_periods(morph, sc), sc.after_deg, false, nullptr});
   for (const Variant& v : variants) {
     const std::filesystem::path video =
         ctx.dir("videos") /
@@ -93,7 +208,6 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
     experiments::TunnelSpec spec;
     spec.start.periods = v.periods;
     spec.faults = sim::fail_at(disabled, 0);
-    spec.steering = v.steering;
     const experiments::TunnelRun t =
         experiments::run_tunnel(corridor, spec, observer ? &*observer : nullptr);
     if (film) {
@@ -122,38 +236,48 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
 }  // namespace
 
 Section tunnel_stage(const StageContext& ctx) {
-  sim::SimOptions with_tunnel = ctx.options.sim;
-  with_tunnel.scene.tunnel = true;
-  const sim::SimModel corridor = sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
+  const sim::SimModel corridor = corridor_model(ctx.options.sim);
   const experiments::ExperimentTable hexapod =
       experiments::read_experiment(ctx.options.out / "experiments" / "hexapod");
-  // The scenarios are independent: each walks and films on its own thread (the model is
-  // shared read-only), so the films of one render while another walks.
-  std::vector<std::future<ScenarioOutput>> running;
+  // Every scenario on every body is independent: each walks (and films) on its own thread, the
+  // models shared read-only, so the films of one render while another learns.
+  std::vector<std::future<ScenarioOutput>> filmed;
   for (const paper::TunnelResult& sc : paper::kTunnel) {
     std::string learned;
     for (const experiments::GroupSummary& g : hexapod.rows) {
       if (g.group == sc.disabled) learned = g.best_periods;
     }
-    running.push_back(std::async(std::launch::async, run_scenario, std::cref(ctx),
-                                 std::cref(corridor), std::cref(sc), learned));
+    filmed.push_back(std::async(std::launch::async, run_scenario, std::cref(ctx),
+                                std::cref(corridor), std::cref(sc), learned));
   }
-  Table table{{{"disabled", Align::left},
-               {"periods", Align::left},
-               {"source", Align::left},
-               {"deviation (deg)"},
-               {"forward (m)"},
-               {"lateral (m)"},
-               {"result", Align::left},
-               {"paper (deg)"}},
-              {}};
+  const std::vector<Body> bodies = table_bodies(ctx);
+  std::vector<std::vector<std::future<BodyScenario>>> walking(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    for (const paper::TunnelResult& sc : paper::kTunnel) {
+      walking[b].push_back(std::async(std::launch::async, walk_body_scenario, std::cref(ctx),
+                                      std::cref(bodies[b]), std::cref(sc)));
+    }
+  }
+  Table detail{{{"disabled", Align::left},
+                {"periods", Align::left},
+                {"source", Align::left},
+                {"deviation (deg)"},
+                {"forward (m)"},
+                {"lateral (m)"},
+                {"result", Align::left},
+                {"paper (deg)"}},
+               {}};
   std::vector<std::string> films;
   std::vector<std::string> images;
-  for (std::future<ScenarioOutput>& f : running) {
+  for (std::future<ScenarioOutput>& f : filmed) {
     ScenarioOutput out = f.get();
-    for (auto& row : out.rows) table.add_row(std::move(row));
+    for (auto& row : out.rows) detail.add_row(std::move(row));
     films.insert(films.end(), out.films.begin(), out.films.end());
     images.push_back(out.image);
+  }
+  std::vector<std::vector<BodyScenario>> results(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    for (std::future<BodyScenario>& f : walking[b]) results[b].push_back(f.get());
   }
   std::string paper_before, paper_after, scenarios;
   for (const paper::TunnelResult& sc : paper::kTunnel) {
@@ -163,24 +287,37 @@ Section tunnel_stage(const StageContext& ctx) {
     paper_before += fixed(sc.before_deg, 0) + "°" + sep;
     paper_after += fixed(sc.after_deg, 2) + "°" + sep;
   }
+  std::string own = "this run's body";
+  for (const Body& b : bodies) {
+    if (nlohmann::json(b.sim) == nlohmann::json(ctx.options.sim)) own = b.name;
+  }
   return {"tunnel",
           "The tunnel (Table 1)",
           "Tunnel " + fixed(corridor.scene.tunnel_length, 1) + " m × " +
-              fixed(corridor.scene.tunnel_width, 1) + " m. Disabled " + scenarios +
-              " with all periods 4: the robot deviated right and hit the wall (≈" + paper_before +
-              "); with the learned periods it passed (≈" + paper_after + ").",
-          "Deviation = atan(lateral / forward) of the trunk from the entrance to the end, or "
-          "to where it touched a wall. Rows \"our learning\" walk the most frequent combination "
-          "the hexapod table learned for the scenario (experiments/hexapod, seed " +
+              fixed(corridor.scene.tunnel_width, 1) + " m, the real AMOSII. Disabled " +
+              scenarios + " with all periods 4: the robot deviated right and hit the wall (≈" +
+              paper_before + "); with the periods learned in the paper's simulator (periods " +
+              "alone, no reflex) it passed (≈" + paper_after + ").",
+          "First table: Table 1 on the real robot beside our two bodies, paper-sim (the paper's "
+          "simulator) and real (calibrated against the real robot's before-learning column, "
+          "docs/fidelity.md), deviation = atan(lateral / forward) of the trunk from the entrance "
+          "to the end or to the wall it touched, + = left. \"Periods-alone learning\" learns "
+          "with --mode robust --steering off (--max-trials " +
+              std::to_string(ctx.sizes.periods_alone_max_trials) + " per episode, at most " +
+              counted(ctx.sizes.periods_alone_max_episodes, "episode") +
+              ") in the open field from a walking robot and walks the learned periods through "
+              "the tunnel; \"robust learning\" learns with --mode robust (yaw and path, held "
+              "windows, the steering reflex) and walks the periods with the reflex; seed " +
               std::to_string(ctx.options.seed) +
-              ") on open ground; rows \"the paper's learning\" replay the paper's combinations "
-              "on our robot; rows \"robust learning\" learn with --mode robust (yaw and path, "
-              "held windows, the steering reflex) from a walking robot and walk the learned "
-              "periods with the reflex through the tunnel.",
+              ". Second table, on " + own +
+              ": rows \"our learning\" walk the most frequent combination the hexapod table "
+              "learned for the scenario (experiments/hexapod) on open ground, rows \"the "
+              "paper's learning\" replay the paper's combinations; films and paths of all 4 "
+              "and of our learning.",
           images,
           films,
           {},
-          {table}};
+          {side_by_side_table(bodies, results), detail}};
 }
 
 }  // namespace multicpg::report
