@@ -131,7 +131,15 @@ void run(const CalibrateOptions& o) {
   try {
     experiments::validate(spec);
   } catch (const OptionError& e) {
-    throw BadInput(calibration_flag(e.key()) + ": " + e.key() + " " + e.what());
+    // "params[1].hi" names the searched parameter as the user wrote it: "--search slip: hi ..."
+    const std::string& key = e.key();
+    if (key.rfind("params[", 0) == 0) {
+      const std::size_t i = std::stoul(key.substr(7));
+      const std::size_t dot = key.find('.');
+      const std::string field = dot == std::string::npos ? "" : key.substr(dot + 1) + " ";
+      throw BadInput("--search " + spec.params.at(i).key + ": " + field + e.what());
+    }
+    throw BadInput(calibration_flag(key) + ": " + key + " " + e.what());
   }
   if (experiments::is_primary_process()) ensure_writable_dir(o.out);
   const experiments::Calibration cal = experiments::run_calibration(

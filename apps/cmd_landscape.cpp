@@ -1,5 +1,5 @@
 // multicpg landscape: every combination of working-leg periods of one leg-failure scenario,
-// walked and measured, saved as it finishes (resumable), with its map (issue 8). The ground
+// walked and measured, saved as it finishes (resumable), with its map. The ground
 // truth the learners are scored against.
 #include <algorithm>
 #include <fstream>
@@ -105,7 +105,7 @@ void register_landscape(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "landscape",
       "walk every combination of working-leg periods of one scenario and map which hold "
-      "(resumable; issue 8)");
+      "(resumable)");
   cmd->add_option("--robot", o->robot, "hexapod, quadruped or octopod")->capture_default_str();
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2")->required();
   cmd->add_option("--out", o->out, "directory for the runs, CSV, summary and figure (resumes)")

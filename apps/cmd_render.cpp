@@ -1,5 +1,5 @@
 // multicpg render: a video (.mp4) or picture (.png) of a simulated walk or learning run, the
-// camera following the robot and disabled legs in red (issue 5).
+// camera following the robot and disabled legs in red.
 #include <iostream>
 
 #include "apps/commands.h"

@@ -1,4 +1,4 @@
-// multicpg reproduce: every figure, table and video of the paper into one folder (issue 5).
+// multicpg reproduce: every figure, table and video of the paper into one folder.
 #include <algorithm>
 #include <iostream>
 #include <optional>

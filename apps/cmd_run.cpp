@@ -1,4 +1,4 @@
-// multicpg run | rerun | merge: experiments as files (issue 10). `run` resolves a TOML
+// multicpg run | rerun | merge: experiments as files. `run` resolves a TOML
 // experiment file (experiments/experiment_file.h) and runs it, or one shard of it; `rerun`
 // runs one recorded run again (or films it); `merge` joins the shards of a job array.
 #include <iostream>

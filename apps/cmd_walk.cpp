@@ -1,5 +1,5 @@
 // multicpg walk: walk a simulated robot with given CPG periods and disabled legs, and report the
-// distance, speed and heading deviation per window (issue 3, SPEC §6-§7).
+// distance, speed and heading deviation per window (SPEC §6-§7).
 #include <cmath>
 #include <iomanip>
 #include <iostream>

@@ -1,5 +1,5 @@
 // Checks of flag values at parse time, so every bad value is one line naming its flag (CLI11
-// prints "--beta: must be in 0..100, got -1") before any work starts (issue 9 item 4). Ranges
+// prints "--beta: must be in 0..100, got -1") before any work starts. Ranges
 // come from the option structs' Limits, the same that validate() and experiment files use.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Flags shared by `learn`, `experiment`, `tunnel --learn` and `render --learn`: the learning
-// options of SPEC §6 and issue 8, bound directly to learning::CompensationOptions.
+// options of SPEC §6 and docs/learning.md, bound directly to learning::CompensationOptions.
 #pragma once
 
 #include <CLI/CLI.hpp>

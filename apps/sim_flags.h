@@ -1,4 +1,4 @@
-// Flags of every command that simulates a robot: time steps and servo gain (issue 3, SPEC §7),
+// Flags of every command that simulates a robot: time steps and servo gain (SPEC §7),
 // bound directly to sim::SimOptions, and the body (robot/body_params.h): a named model and one
 // flag per physical parameter over it.
 #pragma once

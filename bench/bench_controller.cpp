@@ -1,4 +1,4 @@
-// One controller step (all six pipeline stages) for 4, 6 and 8 legs (issue 2 benchmark).
+// One controller step (all six pipeline stages) for 4, 6 and 8 legs.
 #include <benchmark/benchmark.h>
 
 #include "neural/controller.h"

@@ -1,5 +1,5 @@
 // Seconds per rendered 640x480 frame (scene update, render, readPixels) on the process's GL
-// platform (issue 5). Run once per platform: MUJOCO_GL=egl and MUJOCO_GL=osmesa; the label
+// platform. Run once per platform: MUJOCO_GL=egl and MUJOCO_GL=osmesa; the label
 // names the platform used.
 #include <benchmark/benchmark.h>
 

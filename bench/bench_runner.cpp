@@ -1,4 +1,4 @@
-// The experiment runner's cost per run, apart from the runs' own work (issue 10): TASKS runs that
+// The experiment runner's cost per run, apart from the runs' own work: TASKS runs that
 // each sleep SLEEP_MS (no CPU, so other load on the machine barely matters) and return a result
 // of a learning run's size, on JOBS threads, in one process or under mpirun. Ideal wall time:
 // TASKS x SLEEP_MS / (threads in all processes); the rest is the runner (saving each run, and

@@ -1,6 +1,6 @@
 // A 400-step hexapod trial (SPEC §6 window) in MuJoCo, against bare mj_step on the same model
 // for the same simulated time: what the controller, servo law, sensing and checks cost; and
-// both against a plain MuJoCo hexapod (issue 12): what our model and solver settings cost.
+// both against a plain MuJoCo hexapod: what our model and solver settings cost.
 //
 // The bare run replays, physics step by physics step, the ctrl values the trial computed, so it
 // follows the identical trajectory with the same contacts; only our work is missing.
@@ -103,7 +103,7 @@ void BM_BareMjStep(benchmark::State& state) {
 }
 BENCHMARK(BM_BareMjStep)->Unit(benchmark::kMillisecond);
 
-// --- Side by side with a plain MuJoCo hexapod (issue 12) ---
+// --- Side by side with a plain MuJoCo hexapod ---
 //
 // The plain hexapod: what a MuJoCo user would write for a robot of our size, with every MuJoCo
 // default (semi-implicit Euler at 5 ms, pyramidal cones, condim 3, Newton solver, 100 iterations,

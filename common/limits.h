@@ -1,4 +1,4 @@
-// The documented range of a numeric option, checked in one place (issue 9 item 4): validate()
+// The documented range of a numeric option, checked in one place: validate()
 // functions of option structs check through require_in, the CLI shows the same range in --help
 // and checks it at parse time, experiment files report it with file, line and key.
 #pragma once

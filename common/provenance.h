@@ -1,4 +1,4 @@
-// Where a result came from, recorded with every experiment (issue 9 item 1): the command line,
+// Where a result came from, recorded with every experiment: the command line,
 // the project's git commit, the MuJoCo version and the CPU. Not compared on resume: the same
 // experiment may be continued from another shell or machine.
 #pragma once

@@ -1,4 +1,4 @@
-// One table type for every table the project writes (issue 12): experiment tables (table.csv,
+// One table type for every table the project writes: experiment tables (table.csv,
 // table.md), docs/results.md and the report's index.html render the same rows through these
 // three writers, and format numbers with the same fixed-decimal helpers.
 //

@@ -1,4 +1,4 @@
-// Experiment files (issue 10): TOML (toml++) read into the documents of experiments/sweep.h,
+// Experiment files: TOML (toml++) read into the documents of experiments/sweep.h,
 // every error one line naming the file, the line and the key. The file is bounded before it is
 // parsed (experiments/experiment_limits.h): a regular file, at most kMaxExperimentFileBytes, at
 // most kMaxExperimentDepth levels deep.

@@ -1,4 +1,4 @@
-// The landscape of one leg-failure scenario (issue 8): every combination of working-leg periods,
+// The landscape of one leg-failure scenario: every combination of working-leg periods,
 // each walked and measured the same way, so the learners can be scored against the truth. A
 // combination is measured from a robot already walking (warmed-up, locked controller with the
 // legs failed), set to the combination, settled, then measured over W windows of 400 steps.
@@ -20,10 +20,10 @@
 namespace multicpg::experiments {
 
 // Windows measured per combination: 6 x 400 steps = 89 s at 27 Hz, long enough that a slow
-// drift shows in some window (issue 8).
+// drift shows in some window.
 inline constexpr int kDefaultLandscapeWindows = 6;
 inline constexpr Limits<int> kLandscapeWindowsLimits{1, 1000};
-// Combinations listed in summary.json's "top" (issue 8).
+// Combinations listed in summary.json's "top".
 inline constexpr std::size_t kLandscapeTop = 10;
 
 // Everything that decides a landscape's results.
@@ -41,7 +41,7 @@ struct LandscapeSpec {
 // set, a repeated period or one outside 1-9, windows < 1, window steps < 1, threshold <= 0.
 void validate(const LandscapeSpec& spec);
 
-// What one combination does (the ground truth of issue 8).
+// What one combination does (the ground truth of docs/learning.md's landscape).
 struct CombinationMeasure {
   learning::Periods periods;  // every leg; disabled legs keep 4
   long settle_steps = 0;      // walked unmeasured after the periods were set

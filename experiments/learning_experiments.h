@@ -26,7 +26,7 @@ struct ExperimentSpec {
   std::filesystem::path out;
   // Settings of every run; each run's seed and disabled legs (and beta) come from its task.
   learning::CompensationOptions base;
-  // Windows walked after each run with its final controller, to see whether it holds (issue 8).
+  // Windows walked after each run with its final controller, to see whether it holds.
   long check_windows = 0;
   sim::SimOptions sim;
   bool progress = true;

@@ -37,7 +37,7 @@ struct LearningRun {
   sim::WalkRecord record;             // every step, when recorded (row 0 = the start)
   std::vector<long> trial_end_steps;  // step at which each trial's measured window ended
   long learning_end_step = 0;         // steps walked when learning stopped
-  // Each complete window of the steps walked after learning (issue 8: does the final
+  // Each complete window of the steps walked after learning (does the final
   // controller hold?), measured as robust mode does.
   std::vector<sim::WindowMeasure> after_windows;
   sim::SimState final_state;  // the robot at the end

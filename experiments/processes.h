@@ -1,5 +1,5 @@
 // The processes of one multicpg job: one, or every rank of an MPI job when launched by mpirun
-// (issue 10). Every process runs the same command on the same arguments; the experiment runner
+//. Every process runs the same command on the same arguments; the experiment runner
 // (run_tasks) shares the runs among them, and only the primary process (rank 0) writes files and
 // prints results. A command that runs under mpirun therefore calls run_tasks in every process,
 // the same number of times in the same order (never from two threads at once), writes or prints

@@ -1,4 +1,4 @@
-// docs/results.md: our experiment tables beside what the paper states (issue 4). Generated from
+// docs/results.md: our experiment tables beside what the paper states. Generated from
 // the experiments' summaries, never typed by hand; differences are said plainly.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Experiments as data (issue 10): one document (an experiment file read by experiment_file.h,
+// Experiments as data: one document (an experiment file read by experiment_file.h,
 // or a preset built in memory) says everything that decides an experiment's runs; it is
 // resolved once (every default filled in, every value checked) into tasks for the runner
 // (runner.h), and the resolved document is what OUT/experiment.json records, so any run can be

@@ -22,7 +22,7 @@ inline constexpr double kDefaultThresholdDeg = 8.0;  // E_req, paper §4
 inline constexpr int kDefaultMaxTrials = 200;        // SPEC §6 cap
 inline constexpr int kStartPeriod = 4;               // C0 = all 4 (tripod), Table 2
 
-// Documented ranges (issue 9 item 4): beta far past the paper's greedy 10 (Fig. 14); a threshold
+// Documented ranges: beta far past the paper's greedy 10 (Fig. 14); a threshold
 // between a thousandth of a degree and a U-turn; a trial cap far past the paper's 200 (SPEC §6).
 inline constexpr Limits<double> kBetaLimits{0.0, 100.0};
 inline constexpr Limits<double> kThresholdLimits{0.001, 180.0};

@@ -282,7 +282,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   return result;
 }
 
-// Robust mode (issue 8): see compensate() in the header.
+// Robust mode: see compensate() in the header.
 class RobustRun {
  public:
   RobustRun(Walker& walker, const CompensationOptions& options)

@@ -41,7 +41,7 @@ class Walker {
   virtual void emit(const sim::Event& /*event*/) {}
 };
 
-// Which algorithm compensates (issue 8).
+// Which algorithm compensates.
 enum class Mode {
   paper,  // paper §3 exactly as SPEC §6: one window judges a trial, yaw only, learning ends there
   robust,  // yaw and path angle, several windows to accept, monitoring on, optional steering
@@ -79,7 +79,7 @@ inline constexpr long kDefaultMonitorWindows = 6;
 // Robust mode: learning episodes at most in one run (each restarts learning after a deviation).
 inline constexpr int kDefaultMaxEpisodes = 10;
 
-// Documented ranges (issue 9 item 4). A window or settle of up to 10^5 steps (an hour at 27 Hz);
+// Documented ranges. A window or settle of up to 10^5 steps (an hour at 27 Hz);
 // counts of windows and episodes far past the defaults above.
 inline constexpr Limits<long> kWindowStepsLimits{1, 100'000};
 inline constexpr Limits<long> kSettleStepsLimits{0, 100'000};
@@ -162,7 +162,7 @@ struct LearningResult {
 // synchronised (as make_controller_state leaves it), at its step 0 (else std::invalid_argument:
 // a caller's mistake), its faults to come as its schedule says. Throws OptionError for options or
 // a timeline validate() or validate_faults() refuse. Paper mode is
-// SPEC §6 exactly; robust mode (issue 8):
+// SPEC §6 exactly; robust mode:
 // - a window is judged on both its yaw change and its path angle (sim::measure_window);
 // - a combination is accepted only when it holds for hold_windows consecutive windows (a trial
 //   stops at its first window over the threshold, whose deviation is the trial's E);

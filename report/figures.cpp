@@ -41,7 +41,7 @@ constexpr std::array<FigureInfo, 11> kFigures{{
     {"trunk-path", "trunk-path-r1", "trunk_path.gp", 1000, 700,
      "Trunk path seen from above, R1 disabled, before and after learning"},
     {"landscape", "landscape-map", "landscape.gp", 1200, 700,
-     "Landscape: worst deviation of every combination of working-leg periods (issue 8)"},
+     "Landscape: worst deviation of every combination of working-leg periods"},
     {"calibration", "calibration-sensitivity", "calibration.gp", 1100, 650,
      "Calibration: which body parameter moves which Table 1 number (rank correlation)"},
 }};

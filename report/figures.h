@@ -1,4 +1,4 @@
-// The paper's figures (issue 5), drawn by gnuplot from a CSV written next to each picture.
+// The paper's figures, drawn by gnuplot from a CSV written next to each picture.
 // Each plot_* call writes <out_dir>/<stem>.csv, .png (pngcairo) and .svg and returns the paths;
 // the data come in as plain values so this layer depends on no simulation code.
 // Errors: BadInput (one line) for unusable data or an unwritable out_dir, RuntimeFailure (one
@@ -128,7 +128,7 @@ struct TrunkPaths {
 FigureFiles plot_trunk_paths(const TrunkPaths& paths, const std::filesystem::path& out_dir,
                              std::string_view stem = {});
 
-// Issue 8: the landscape of one scenario, every combination of working-leg periods sorted by
+// The landscape of one scenario, every combination of working-leg periods sorted by
 // its worst deviation (the largest of |yaw| and |path angle| over its windows), each window's
 // own worst deviation behind it, the threshold, the best holding combination and where the
 // learned combinations fall.

@@ -1,8 +1,8 @@
-// Films of simulated runs (issue 5): every k-th controller step of a run rendered into an MP4,
+// Films of simulated runs: every k-th controller step of a run rendered into an MP4,
 // or its last step into a PNG. A leg turns red the step it fails, as the paper draws disabled
 // legs; a caption in the corner says the step, time, periods and what the run is doing.
 //
-// A video is rendered on its own thread with its own GL context (issue 12): capture() only
+// A video is rendered on its own thread with its own GL context: capture() only
 // copies the robot's pose, so the simulation runs on while earlier frames are drawn and encoded.
 #pragma once
 

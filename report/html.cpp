@@ -6,7 +6,7 @@
 namespace multicpg::report {
 namespace {
 
-// Checks every <img> and <video> after load and marks the ones that failed (issue 5: every
+// Checks every <img> and <video> after load and marks the ones that failed (every
 // image and video must load).
 constexpr const char* kMediaCheck = R"(<script>
 function checkMedia() {

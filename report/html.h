@@ -1,4 +1,4 @@
-// The reproduction report (issue 5): index.html with every figure, table and video, each with a
+// The reproduction report: index.html with every figure, table and video, each with a
 // caption saying what the paper reports and what we measured, and the CSV behind it.
 #pragma once
 

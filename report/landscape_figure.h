@@ -1,4 +1,4 @@
-// The landscape figure (issue 8) of a landscape run: report/figures.h's plot_landscape fed from
+// The landscape figure of a landscape run: report/figures.h's plot_landscape fed from
 // experiments/landscape.h.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Headless pictures of a MuJoCo model (issue 5): one renderer per model and frame size, a
+// Headless pictures of a MuJoCo model: one renderer per model and frame size, a
 // camera that follows the robot, and the disabled legs drawn in red as in the paper's figures.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The interactive viewer (issue 5): a window showing the simulated robot walking in real time,
+// The interactive viewer: a window showing the simulated robot walking in real time,
 // the camera following the trunk, disabled legs red, with keys to pause, step, disable legs and
 // switch synchronisation.
 #pragma once

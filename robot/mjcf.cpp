@@ -26,7 +26,7 @@ constexpr double kRollingFriction = 0.0001;
 constexpr int kCondimSliding = 3;
 constexpr int kCondimTorsional = 4;
 constexpr int kCondimRolling = 6;
-// Contacts (issue 12; docs/robots.md "Contacts and materials"). The ground touches only the trunk
+// Contacts (docs/robots.md "Contacts and materials"). The ground touches only the trunk
 // boxes and the lower legs (tibia and foot): explicit contact pairs, which skip MuJoCo's broad
 // phase. In 102 walks (every robot, every period, up to three disabled legs) only feet and trunk
 // boxes touched it. The walls of the tunnel may meet any part, so they collide dynamically: the

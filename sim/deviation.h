@@ -1,4 +1,4 @@
-// What one measuring window says about the robot's course (SPEC §6, issue 8): the yaw change of
+// What one measuring window says about the robot's course (SPEC §6): the yaw change of
 // the paper's criterion, and the path angle of its Table 1 (the trunk's displacement against the
 // course: the heading at the window's start, or the line a steering reflex keeps), which sees a
 // sideways crab that the yaw change cannot.

@@ -1,4 +1,4 @@
-// The per-step sensor record of a run as CSV (issue 3): trunk pose, every joint's command,
+// The per-step sensor record of a run as CSV: trunk pose, every joint's command,
 // target and actual angle, and every foot's contact. Used by `walk --csv` and `learn --out`,
 // which stream it (RecordCsvWriter) so a run's memory does not grow with its length.
 #pragma once

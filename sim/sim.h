@@ -1,4 +1,4 @@
-// The simulated robot: a MuJoCo model driven by the neural controller (SPEC §7, issue 3).
+// The simulated robot: a MuJoCo model driven by the neural controller (SPEC §7).
 //
 // SimModel is what the simulation is (the mjModel, index tables, time steps, the controller's
 // model): immutable after make_sim_model and shareable read-only by any number of threads.
@@ -49,7 +49,7 @@ inline constexpr int kMaxSubsteps = 1'000'000;
 // control_dt / physics_dt is a whole number within kStepRatioTolerance, at most kMaxSubsteps.
 int physics_substeps(double control_dt, double physics_dt);
 
-// Documented ranges (issue 9 item 4). The controller step: 0.1 ms to 1 s around the paper's
+// Documented ranges. The controller step: 0.1 ms to 1 s around the paper's
 // 37 ms; the physics step: down to 1 us (0 = default); servo gain up to 10^4 1/s (0 = default),
 // past which a servo reaches its target within one 5 ms physics step anyway.
 inline constexpr Limits<double> kControlDtLimits{1e-4, 1.0};

@@ -1,4 +1,4 @@
-// The one stepping loop (issue 8): a simulated robot started as it should be, its faults applied
+// The one stepping loop: a simulated robot started as it should be, its faults applied
 // on schedule, every step recorded and shown to an observer. walk, the tunnel, learning, films,
 // the viewer and the Python API all step through it, so they agree on how a run starts and what
 // happened when.

@@ -1,5 +1,5 @@
 // Walking a simulated robot for a number of controller steps with given CPG periods and a
-// fault timeline, measuring distance, speed and heading deviation (SPEC §6, issue 3). Used by
+// fault timeline, measuring distance, speed and heading deviation (SPEC §6). Used by
 // `multicpg walk`; rendering and figures reuse it. It steps through sim::Stepper.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Issue 9 item 4: every bad input of every command is one line naming what is wrong and exit 2,
+// Every bad input of every command is one line naming what is wrong and exit 2,
 // before any work. The table below is run through the real CLI: the numeric flags with values
 // outside their documented ranges, empty, non-numeric, with trailing junk, NaN and infinite, and
 // the leg sets, period maps, fault timelines, choices, paths and combinations users get wrong.

@@ -1,4 +1,4 @@
-// The real multicpg binary: learn and experiment commands (issue 4).
+// The real multicpg binary: learn and experiment commands.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -71,7 +71,7 @@ TEST(CliLearn, BadInput) {
   expect_bad_input("learn", "--disable");
   expect_bad_input("learn --disable R1 --out /proc/multicpg-out", "/proc/multicpg-out");
   expect_bad_input("learn --disable R1 --disable-at -3", "--disable-at");
-  // Issue 8's options.
+  // Robust mode's options.
   expect_bad_input("learn --disable R1 --mode fast", "fast");
   expect_bad_input("learn --disable R1 --steering wheel", "wheel");
   expect_bad_input("learn --disable R1 --mode paper --steering off", "robust-mode");
@@ -88,8 +88,8 @@ TEST(CliLearn, BadInput) {
   expect_bad_input("learn --disable R1 --monitor-windows 0", "--monitor-windows");
 }
 
-// Issue 8: --mode paper is the paper's algorithm as it was before robust mode existed. The
-// fixtures were recorded by `learn --json` before that change; the contact pairs of issue 12
+// --mode paper is the paper's algorithm as it was before robust mode existed. The
+// fixtures were recorded by `learn --json` before that change; the explicit contact pairs (docs/robots.md)
 // changed the physics in its last bits (1e-13 deg), so deviations match to 1e-9 and every
 // decision exactly.
 TEST(CliLearn, PaperModeReproducesTheRecordedTraces) {

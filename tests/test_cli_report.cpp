@@ -1,4 +1,4 @@
-// The real multicpg binary: render, tunnel, figure and reproduce's bad input (issue 5); the
+// The real multicpg binary: render, tunnel, figure and reproduce's bad input; the
 // quick report itself is test_reproduce.cpp.
 #include <gtest/gtest.h>
 

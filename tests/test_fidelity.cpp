@@ -1,5 +1,5 @@
-// Physics fidelity (issue 12): cheaper MuJoCo settings must walk the same robot. The baselines
-// are what the hexapod did before issue 12 changed the physics (explicit ground contact pairs,
+// Physics fidelity: cheaper MuJoCo settings must walk the same robot. The baselines
+// are what the hexapod did before the contact rework changed the physics (explicit ground contact pairs,
 // sparse constraint Jacobians), measured with exactly the specs below:
 //   multicpg walk --robot hexapod --periods P [--disable R1|L1] --warmup 1000 --settle 400
 //                 --steps 1200 --json
@@ -16,14 +16,14 @@ namespace {
 
 using namespace multicpg;
 
-// Speed (cm/s) of the intact hexapod per gait before issue 12.
+// Speed (cm/s) of the intact hexapod per gait before the contact rework.
 constexpr std::pair<int, double> kBaselineSpeedCmS[] = {
     {4, 7.8552}, {5, 4.6902}, {6, 3.0821}, {8, 1.5984}, {9, 1.2520}};
 // Mean deviation per 400-step window (deg, + = left) with R1 / L1 disabled, others p = 4, before
-// issue 12 (windows -41.56, -41.07, -41.22 and +43.80, +44.11, +42.11).
+// the contact rework (windows -41.56, -41.07, -41.22 and +43.80, +44.11, +42.11).
 constexpr double kBaselineR1TurnDeg = -41.28;
 constexpr double kBaselineL1TurnDeg = 43.34;
-// Tolerances of issue 12.
+// Tolerances of the contact rework (docs/robots.md).
 constexpr double kSpeedTolerance = 0.05;  // relative
 constexpr double kTurnToleranceDeg = 2.0;
 constexpr double kStraightDeg = 8.0;  // SPEC §6 threshold

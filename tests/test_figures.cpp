@@ -1,4 +1,4 @@
-// The figure layer (issue 5): every figure is written as PNG, SVG and CSV, the pictures are real
+// The figure layer: every figure is written as PNG, SVG and CSV, the pictures are real
 // and not blank, the CSV holds the data, and bad input fails with one line.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Results you can trust (issue 9): output files never replace special files or symlinks, an
+// Results you can trust: output files never replace special files or symlinks, an
 // output directory has one owner, saved runs carry a checksum, strays of killed runs are removed,
 // and failures (exploding physics, unwritable stdout, absurd step counts) are reported as such.
 #include <fcntl.h>

@@ -1,4 +1,4 @@
-// Results you can trust (issue 9), the cases that render (so not in the sanitizer job): MuJoCo's
+// Results you can trust, the cases that render (so not in the sanitizer job): MuJoCo's
 // fatal errors reach the user as one line on stderr (never stdout, a MUJOCO_LOG.TXT file or a
 // "Press Enter" prompt), and a video cut short is a failure, not a file.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// multicpg landscape (issue 8): the combinations, the CLI against a brute-force walk of every
+// multicpg landscape: the combinations, the CLI against a brute-force walk of every
 // combination, resuming, refusing another landscape's directory, --jobs independence, the
 // figure and bad input.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Learning on the real MuJoCo hexapod (issue 4): R1 disabled converges, runs are reproducible,
+// Learning on the real MuJoCo hexapod: R1 disabled converges, runs are reproducible,
 // beta = 0 (random search) needs the most trials.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // `mpirun -np N multicpg experiment table`: the runs shared among N processes give the same run
 // files, tables and output as one thread, a killed MPI job resumes to the same result, and a
-// failing job ends with one line (issue 10). Real mpirun, as root only in the tests' environment.
+// failing job ends with one line. Real mpirun, as root only in the tests' environment.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/file.h>

@@ -1,4 +1,4 @@
-// Headless rendering and video (issue 5): frames are drawn without a display, the red-prefix
+// Headless rendering and video: frames are drawn without a display, the red-prefix
 // bodies come out red, the tracking camera follows the trunk, videos have every frame, and both
 // GL platforms (EGL, OSMesa) work, each in a process of its own.
 #include <gtest/gtest.h>

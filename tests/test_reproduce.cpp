@@ -1,4 +1,4 @@
-// `multicpg reproduce --quick` end to end (issues 5 and 12): every figure and video, the report
+// `multicpg reproduce --quick` end to end: every figure and video, the report
 // opened in headless Chromium, and a second start that redoes nothing. Its own executable so
 // ctest can give it both cores (PROCESSORS 2, tests/CMakeLists.txt): it runs experiments on
 // every core, and beside another test it would take twice as long.

@@ -280,7 +280,7 @@ nlohmann::json changed(const nlohmann::json& v) {
   return 1;  // null: an optional that was not set
 }
 
-// Issue 9 item 1: the record holds every option of an experiment (learning, simulation,
+// The record holds every option of an experiment (learning, simulation,
 // controller parameters), and a resume with any one of them changed is refused naming its key.
 TEST(Runner, RefusesToResumeWhenAnyRecordedOptionDiffers) {
   ExperimentSpec spec;

@@ -1,4 +1,4 @@
-// Experiment files through the real CLI (issue 10): `run FILE.toml` (validation, grids, shards),
+// Experiment files through the real CLI: `run FILE.toml` (validation, grids, shards),
 // `rerun` and `merge`, and the paper presets against their example files.
 #include <gtest/gtest.h>
 

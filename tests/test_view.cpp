@@ -1,4 +1,4 @@
-// multicpg view (issue 5): without a display it says so in one line and exits 2; bad flags are
+// multicpg view: without a display it says so in one line and exits 2; bad flags are
 // reported before the display is looked at; under a virtual X server (Xvfb) it really opens a
 // window, renders and quits after --steps.
 #include <gtest/gtest.h>

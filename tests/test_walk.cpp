@@ -1,4 +1,4 @@
-// Walking in MuJoCo (issue 3): straight tripod, slower gaits, standing, turning with a disabled
+// Walking in MuJoCo: straight tripod, slower gaits, standing, turning with a disabled
 // front leg, the quadruped, determinism, faults at a given step, physics blow-ups.
 #include <gtest/gtest.h>
 
@@ -217,7 +217,7 @@ TEST(Walk, BadSpecsAreRejected) {
   EXPECT_THROW(sim::walk(m, spec), BadInput);
 }
 
-// Issue 8: without any option the robot starts from a running, locked controller, so the
+// Without any option the robot starts from a running, locked controller, so the
 // intact hexapod walks straight in every window from the first, by heading and by path.
 TEST(Walk, IntactHexapodWithDefaultsIsStraightFromTheFirstWindow) {
   const sim::SimModel& m = model(RobotKind::hexapod);

@@ -1,4 +1,4 @@
-# Issue 8: the landscape of one leg-failure scenario. Every combination of working-leg periods,
+# The landscape of one leg-failure scenario. Every combination of working-leg periods,
 # sorted by its worst deviation (the largest |yaw change| or |path angle| over its windows); the
 # grey dots are each window's own worst deviation, the dashed line the threshold. A combination
 # holds when its curve point is under the line. The green diamond is the best holding

@@ -1,4 +1,4 @@
-// The landscape (issue 8): every combination of the working legs' periods of the quadruped with
+// The landscape: every combination of the working legs' periods of the quadruped with
 // L2 disabled, walked and measured, with where the quadruped table's learning runs ended. The
 // ground truth against which learning is scored; the paper has no such figure.
 #include "experiments/landscape.h"
@@ -17,7 +17,7 @@
 namespace multicpg::report {
 namespace {
 
-// The scenario of issue 8's brute-force check: the quadruped's hardest (few combinations hold).
+// The scenario of the brute-force check (docs/learning.md): the quadruped's hardest (few combinations hold).
 constexpr const char* kScenario = "L2";
 
 // The periods every converged run of `scenario` in the experiment `dir` ended with.

@@ -1,4 +1,4 @@
-// The stages of `multicpg reproduce` (issue 12): one table of {id, figures, run}, one file per
+// The stages of `multicpg reproduce`: one table of {id, figures, run}, one file per
 // stage, each a thin layer over the experiments' functions that turns their results into a
 // report Section (figures, tables, videos and what the paper says beside what we measured).
 #pragma once
@@ -57,7 +57,7 @@ struct Stage {
   // Stages whose saved results this one reads (it starts after them).
   std::vector<std::string_view> needs = {};
   // Started before the stages without it (in this table's order, once its needs are done): the
-  // long stages and the stages they need, so that short stages fill the end (issue 12).
+  // long stages and the stages they need, so that short stages fill the end.
   bool early = false;
 };
 
