@@ -84,11 +84,12 @@ void print_summary(const experiments::Calibration& cal, const std::string& out,
   const std::size_t feasible =
       std::count_if(cal.candidates.begin(), cal.candidates.end(),
                     [](const experiments::Candidate& c) { return c.numbers.feasible(); });
-  std::cout << cal.candidates.size() << " candidates (" << cal.ran << " walked now, "
-            << cal.loaded << " loaded), " << feasible << " feasible\n";
+  std::cout << cal.candidates.size() << " candidates (" << cal.ran << " walked now, " << cal.loaded
+            << " loaded), " << feasible << " feasible\n";
   std::cout << "best " << best.id << (n.feasible() ? "" : " (misses a constraint)") << ":";
   for (const experiments::SearchedParam& p : cal.spec.params) {
-    std::cout << " " << p.key << "=" << fmt::format("{:.4g}", robot::number_param(p.key).get(best.body));
+    std::cout << " " << p.key << "="
+              << fmt::format("{:.4g}", robot::number_param(p.key).get(best.body));
   }
   std::cout << "\n";
   if (!n.failure.empty()) {
@@ -97,17 +98,16 @@ void print_summary(const experiments::Calibration& cal, const std::string& out,
   }
   for (std::size_t i = 0; i < n.fit.size(); ++i) {
     const auto& paper = experiments::paper::kTunnel[i];
-    std::cout << fmt::format("  {:<9} all 4: {:+6.1f}° (real robot {:+.0f}°); paper's periods: "
-                             "{:+6.1f}°, passed {} of {}; mirror {}: {:+6.1f}°\n",
-                             n.fit[i].name, n.fit[i].mean_deg(),
-                             experiments::paper::signed_before_deg(paper),
-                             n.paper_periods[i].mean_deg(), n.paper_periods[i].passed(),
-                             n.paper_periods[i].starts.size(), n.mirrors[i].name,
-                             n.mirrors[i].mean_deg());
+    std::cout << fmt::format(
+        "  {:<9} all 4: {:+6.1f}° (real robot {:+.0f}°); paper's periods: "
+        "{:+6.1f}°, passed {} of {}; mirror {}: {:+6.1f}°\n",
+        n.fit[i].name, n.fit[i].mean_deg(), experiments::paper::signed_before_deg(paper),
+        n.paper_periods[i].mean_deg(), n.paper_periods[i].passed(),
+        n.paper_periods[i].starts.size(), n.mirrors[i].name, n.mirrors[i].mean_deg());
   }
-  std::cout << fmt::format("  score {:.2f}° RMS; intact: max |yaw| {:.2f}° per window, {:.2f} cm/s\n",
-                           n.score_deg, n.intact_max_yaw_deg(),
-                           100.0 * n.intact_mean_speed_m_s());
+  std::cout << fmt::format(
+      "  score {:.2f}° RMS; intact: max |yaw| {:.2f}° per window, {:.2f} cm/s\n", n.score_deg,
+      n.intact_max_yaw_deg(), 100.0 * n.intact_mean_speed_m_s());
   std::cout << "wrote " << out << "/{candidates.csv,candidates.json,summary.json} and "
             << figure.png.string() << "\n";
 }
@@ -145,10 +145,8 @@ void run(const CalibrateOptions& o) {
   const experiments::Calibration cal = experiments::run_calibration(
       spec, o.out, o.jobs.value_or(experiments::default_jobs()), /*progress=*/true);
   if (!experiments::is_primary_process()) return;
-  const experiments::Sensitivity s =
-      experiments::sensitivity(experiments::candidates_table(cal));
-  report::CalibrationMap map{s.params, s.numbers, s.rho,
-                             "Which body parameter moves which number",
+  const experiments::Sensitivity s = experiments::sensitivity(experiments::candidates_table(cal));
+  report::CalibrationMap map{s.params, s.numbers, s.rho, "Which body parameter moves which number",
                              fmt::format("rank correlation over the {} design candidates of a "
                                          "calibration against Table 1",
                                          s.candidates)};

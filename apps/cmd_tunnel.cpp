@@ -60,6 +60,9 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   std::cout << std::fixed << std::setprecision(2) << "tunnel " << corridor.scene.tunnel_length
             << " m x " << corridor.scene.tunnel_width << " m, disabled "
             << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled)) << "\n";
+  if (const std::string other = experiments::other_faults_text(spec); !other.empty()) {
+    std::cout << "faults " << other << "\n";
+  }
   if (out.learned) {
     std::cout << "learned in the open field (" << learning::to_string(spec.learning->mode)
               << " mode): " << learning::to_string(out.learned->outcome) << " after "
@@ -80,7 +83,7 @@ void register_tunnel(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "tunnel", "walk a robot through the 3.0 m x 1.2 m tunnel of paper §5 (Table 1)");
   add_robot_flag(*cmd, o->run);
-  cmd->add_option("--disable", o->run.disable, "legs that fail, e.g. R1,R3");
+  add_fault_flags(*cmd, o->run);
   CLI::Option* periods =
       cmd->add_option("--periods", o->run.periods, "4 (every leg) or R1=5,R2=4,...")
           ->capture_default_str();

@@ -3,6 +3,7 @@
 #include "learning/json.h"
 #include "robot/leg_sets.h"
 #include "sim/course_json.h"
+#include "sim/fault_spec.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -33,6 +34,15 @@ nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& r
   return json;
 }
 
+std::string other_faults_text(const RunSpec& spec) {
+  std::string out;
+  for (const sim::Fault& f : spec.faults) {
+    if (std::holds_alternative<sim::LegFault>(f.kind) && !f.joint) continue;
+    out += (out.empty() ? "" : ", ") + sim::fault_text(morphology(spec), f);
+  }
+  return out;
+}
+
 nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o) {
   const robot::Morphology& morph = morphology(spec);
   const TunnelRun& run = o.run;
@@ -40,6 +50,8 @@ nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o) {
                    {"steps", run.steps},         {"forward_m", run.forward_m},
                    {"lateral_m", run.lateral_m}, {"deviation_deg", run.deviation_deg}};
   j["periods"] = robot::period_map_json(morph, o.periods);
+  // Faults other than whole legs failing (those are in "learning" or the periods' gaps).
+  if (!other_faults_text(spec).empty()) j["faults"] = spec.faults;
   if (o.learned) {
     j["learning"] = learning::to_json(*o.learned, morph, o.disabled);
     j["options"] = learning_record(*spec.learning, spec.faults);

@@ -25,4 +25,8 @@ nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& r
 // (leg name -> period) and, after learning, the learning result and its options.
 nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& outcome);
 
+// The run's faults other than whole legs failing, as the CLI writes them ("R2.CTr:locked@0,
+// imu:noise=1@0"); empty when there are none.
+std::string other_faults_text(const RunSpec& spec);
+
 }  // namespace multicpg::experiments

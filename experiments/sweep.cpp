@@ -19,6 +19,7 @@
 #include "learning/json.h"
 #include "robot/body_models.h"
 #include "robot/leg_sets.h"
+#include "robot/terrain.h"
 #include "sim/fault_spec.h"
 #include "sim/json.h"
 #include "sim/sim.h"
@@ -206,6 +207,19 @@ T options_from(const json& point, const std::string& section) {
                           (point.contains(ptr) ? ": " + point.at(ptr).dump() : std::string()));
   }
   return options;
+}
+
+// The simulation options of a point with its terrain written as robot::terrain_text writes it
+// ("slope:5" -> "slope:5:0"), so that options_from's read-back compares like with like.
+json canonical_sim(json point) {
+  const json::json_pointer at("/scene/terrain");
+  if (!point.contains(at) || !point.at(at).is_string()) return point;
+  try {
+    point[at] = robot::terrain_text(robot::parse_terrain(point.at(at).get<std::string>()));
+  } catch (const BadInput& e) {
+    throw OptionError("sim.scene.terrain", e.what());
+  }
+  return point;
 }
 
 // A grid point's value of one axis as a short text ("0.1", "paper", "4-5-6").
@@ -731,7 +745,7 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind, const SweepLimit
   json sim_doc = sim_default;
   merge_checked(doc.value("sim", json::object()), sim_default, "sim", sim_doc, grid);
   refuse_grid(grid);
-  spec.sim = options_from<sim::SimOptions>(sim_doc, "sim");
+  spec.sim = options_from<sim::SimOptions>(canonical_sim(sim_doc), "sim");
   try {
     validate(spec);
   } catch (const OptionError& e) {
@@ -905,7 +919,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     learning_point.erase(kFailStepKey);
     check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
-    const auto sim_options = options_from<sim::SimOptions>(sim_point, "sim");
+    const auto sim_options = options_from<sim::SimOptions>(canonical_sim(sim_point), "sim");
     if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options, sweep.robot);
     for (const ScenarioSpec& s : scenarios) {
       RunSpec spec;

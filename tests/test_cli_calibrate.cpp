@@ -16,8 +16,10 @@ namespace fs = std::filesystem;
 
 TEST(CliCalibrate, ASmallSearchWritesItsTablesAndResumes) {
   const fs::path dir = make_temp_dir("calibrate");
-  const std::string args = "calibrate --budget 2 --warmups 1000 --jobs 2 --search slip "
-                           "--search servo_torque=8..20 --out " + (dir / "c").string();
+  const std::string args =
+      "calibrate --budget 2 --warmups 1000 --jobs 2 --search slip "
+      "--search servo_torque=8..20 --out " +
+      (dir / "c").string();
   const CliResult r = run_cli(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("2 candidates (2 walked now, 0 loaded)"), std::string::npos) << r.out;

@@ -140,6 +140,24 @@ TEST(CliWalk, PaperSimIsTheDefaultBodyOfLearnAndTunnel) {
   }
 }
 
+// The tunnel takes the fault flags of every walking command and records faults other than
+// whole legs; --disable R1 and --fault R1@0 are the same run.
+TEST(CliWalk, TheTunnelTakesAnyFault) {
+  const auto disabled = run_cli("tunnel --disable R1 --max-steps 200 --json");
+  const auto fault = run_cli("tunnel --fault R1@0 --max-steps 200 --json");
+  ASSERT_EQ(fault.exit_code, 0) << fault.err;
+  EXPECT_EQ(fault.out, disabled.out);
+  const auto locked = run_cli("tunnel --fault R1.CTr:locked@0 --max-steps 200 --json");
+  ASSERT_EQ(locked.exit_code, 0) << locked.err;
+  const auto j = nlohmann::json::parse(locked.out);
+  ASSERT_EQ(j.at("faults").size(), 1U);
+  EXPECT_EQ(j.at("faults")[0].at("kind"), "locked");
+  EXPECT_EQ(j.at("faults")[0].at("joint"), "CTr");
+  const auto text = run_cli("tunnel --fault R1.CTr:locked@0 --max-steps 100");
+  EXPECT_NE(text.out.find("faults R1.CTr:locked@0"), std::string::npos) << text.out;
+  expect_bad_input("tunnel --fault R1.XX:locked@0", "--fault");
+}
+
 TEST(CliWalk, ExplicitPhysicsStepThatDivides) {
   const auto r = run_cli("walk --steps 20 --physics-dt 0.0037 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;

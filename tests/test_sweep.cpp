@@ -93,6 +93,21 @@ runs = 2
   EXPECT_EQ(timeline.exit_code, 0) << timeline.err;
   EXPECT_NE(timeline.out.find("4 runs (1 grid points x 2 scenarios x 2 runs)"), std::string::npos)
       << timeline.out;
+  // Terrain is a grid axis like any simulation option, written as --terrain takes it
+  // (docs/faults.md), and faults of any kind are scenarios.
+  write(file, R"(scenarios = ["R2.CTr:locked", "L1:weak=0.3", "imu:noise=1"]
+runs = 1
+[sim.scene]
+terrain = ["flat", "slope:5", "rough:0.01:3"]
+)");
+  const CliResult terrain = run_cli("run " + file + " --check");
+  EXPECT_EQ(terrain.exit_code, 0) << terrain.err;
+  EXPECT_NE(terrain.out.find("9 runs (3 grid points x 3 scenarios x 1 runs)"), std::string::npos)
+      << terrain.out;
+  write(file, "scenarios = [\"R1\"]\n[sim.scene]\nterrain = \"slope:45\"\n");
+  const CliResult steep = run_cli("run " + file + " --check");
+  EXPECT_EQ(steep.exit_code, 2);
+  EXPECT_NE(steep.err.find("sim.scene.terrain"), std::string::npos) << steep.err;
   fs::remove_all(dir);
 }
 
