@@ -8,9 +8,10 @@
 namespace multicpg::experiments {
 namespace {
 
-// The single failure a timeline of one fault of legs, not a recovery, is.
+// A timeline of one whole-leg failure (the paper's), recorded as its legs and step.
 bool single_failure(const sim::FaultTimeline& faults) {
-  return faults.size() == 1 && !faults.front().recover;
+  return faults.size() == 1 && !faults.front().recover &&
+         std::holds_alternative<sim::LegFault>(faults.front().kind) && !faults.front().joint;
 }
 
 }  // namespace

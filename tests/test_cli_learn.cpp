@@ -59,6 +59,24 @@ TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
   fs::remove_all(dir);
 }
 
+// Learning under a joint fault (docs/faults.md "Learning under any fault"): a passive CTr on R2
+// that comes after the robot walks straight is noticed by robust mode's monitoring, learned
+// with no leg taken out of the search (R2 still oscillates), and recorded as the fault it is,
+// not as a lost leg.
+TEST(CliLearn, RobustModeNoticesALateJointFaultAndLearnsWithItsLeg) {
+  const CliResult r = run_cli("learn --mode robust --fault R2.CTr:passive@1200 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("status"), "converged");
+  EXPECT_GE(j.at("detection_step").get<long>(), 1200);
+  EXPECT_TRUE(j.at("disabled").empty());
+  const auto& faults = j.at("options").at("faults");
+  ASSERT_EQ(faults.size(), 1U);
+  EXPECT_EQ(faults[0].at("kind"), "passive");
+  EXPECT_EQ(faults[0].at("step"), 1200);
+  EXPECT_TRUE(j.at("options").at("disabled").empty());
+}
+
 TEST(CliLearn, BadInput) {
   expect_bad_input("learn --disable R1 --beta -1", "beta");
   expect_bad_input("learn --disable R1 --threshold 0", "threshold");
