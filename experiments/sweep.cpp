@@ -225,7 +225,12 @@ json canonical_sim(json point) {
 // A grid point's value of one axis as a short text ("0.1", "paper", "4-5-6").
 std::string value_text(const json& v) {
   if (v.is_number_float()) return format_number(v.get<double>());
-  if (v.is_string()) return v.get<std::string>();
+  if (v.is_string()) {
+    // ':' (a terrain's "slope:5") as '_', so the value can name a run file
+    std::string text = v.get<std::string>();
+    std::replace(text.begin(), text.end(), ':', '_');
+    return text;
+  }
   if (v.is_array()) {
     std::vector<std::string> parts;
     for (const json& e : v) parts.push_back(value_text(e));

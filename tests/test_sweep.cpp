@@ -104,6 +104,14 @@ terrain = ["flat", "slope:5", "rough:0.01:3"]
   EXPECT_EQ(terrain.exit_code, 0) << terrain.err;
   EXPECT_NE(terrain.out.find("9 runs (3 grid points x 3 scenarios x 1 runs)"), std::string::npos)
       << terrain.out;
+  // A terrain axis names its runs' files ("slope:5" as "slope_5"); two short robust runs.
+  write(file, "scenarios = [\"R1.CTr:locked\"]\nruns = 1\n[sim.scene]\n"
+              "terrain = [\"flat\", \"slope:5\"]\n");
+  const fs::path walked_dir = fs::path(dir) / "terrain";
+  const CliResult walked = run_cli("run " + file + " --out " + walked_dir.string());
+  ASSERT_EQ(walked.exit_code, 0) << walked.err;
+  EXPECT_TRUE(fs::exists(walked_dir / "runs" / "terrainslope_5_run000.json"));
+  EXPECT_NE(read_file((walked_dir / "runs.csv").string()).find(",slope:5,"), std::string::npos);
   write(file, "scenarios = [\"R1\"]\n[sim.scene]\nterrain = \"slope:45\"\n");
   const CliResult steep = run_cli("run " + file + " --check");
   EXPECT_EQ(steep.exit_code, 2);
