@@ -9,6 +9,7 @@
 #include "common/errors.h"
 #include "robot/leg_sets.h"
 #include "sim/fault_spec.h"
+#include "sim/robot_file.h"
 #include "sim/walk.h"
 
 namespace multicpg::apps {
@@ -51,7 +52,9 @@ std::string fault_flags(const RunFlags& f) {
 }  // namespace
 
 void add_robot_flag(CLI::App& cmd, RunFlags& f) {
-  cmd.add_option("--robot", f.robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd.add_option("--robot", f.robot,
+                 "hexapod, quadruped, octopod or a robot file FILE.toml (docs/robots.md)")
+      ->capture_default_str();
 }
 
 void add_start_flags(CLI::App& cmd, RunFlags& f) {
@@ -111,7 +114,15 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
 
 experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   experiments::RunSpec spec;
-  spec.robot = robot::parse_robot(f.robot);
+  if (sim::is_robot_file(f.robot)) {
+    spec.robot_file = std::make_shared<const robot::RobotFile>(sim::load_robot_file(f.robot));
+    spec.robot = spec.robot_file->layout;
+    if (f.sim.scene.terrain.kind != robot::TerrainKind::flat) {
+      throw BadInput("--terrain: a robot file's model walks on its own flat ground");
+    }
+  } else {
+    spec.robot = robot::parse_robot(f.robot);
+  }
   const robot::Morphology& morph = robot::morphology(spec.robot);
   spec.sim = with_body(f.sim, f.body);
   spec.faults = parse_faults(morph, f);

@@ -20,7 +20,12 @@ const robot::Morphology& morphology(const RunSpec& spec) {
 }
 
 sim::SimModel make_run_model(const RunSpec& spec) {
-  return sim::make_sim_model(spec.robot, spec.sim);
+  return make_run_model(spec, spec.sim);
+}
+
+sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options) {
+  return spec.robot_file ? sim::make_sim_model(*spec.robot_file, options)
+                         : sim::make_sim_model(spec.robot, options);
 }
 
 void validate(const RunSpec& spec) {
