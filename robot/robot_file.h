@@ -25,7 +25,7 @@ struct JointMap {
 };
 
 struct LegMap {
-  std::string name;  // R1..Rn, L1..Ln (paper §2)
+  std::string name;  // R1..Rn, L1..Ln (SPEC §0)
   Side side;
   int position;                                // 0 = front
   std::array<JointMap, kJointsPerLeg> joints;  // TC, CTr, FTi
@@ -40,7 +40,7 @@ struct RobotFile {
   std::string model_xml;        // its text, read once
   std::string trunk;            // the body with the free joint
   std::string yaw;              // the body or site whose framequat sensor gives the yaw
-  std::string master;           // the leg whose CPG the others follow (paper §2)
+  std::string master;           // the leg whose CPG the others follow (paper §2.3)
   std::vector<LegMap> legs;     // in morphology order (R1..Rn, L1..Ln)
   std::optional<JointMap> backbone;
   // The built-in robot with the same leg layout: its controller tables, servos and fault

@@ -70,8 +70,6 @@ class Reader {
     return j;
   }
 
-  const std::filesystem::path& path() const { return path_; }
-
  private:
   std::filesystem::path path_;
 };
@@ -100,7 +98,7 @@ robot::RobotKind layout_of(std::size_t legs, const Reader& r) {
   }
   r.fail("legs", std::to_string(legs) +
                      " legs; a robot file has 4, 6 or 8 (the quadruped's, hexapod's or octopod's "
-                     "layout, paper §2)");
+                     "layout, SPEC §0)");
 }
 
 }  // namespace
@@ -164,7 +162,7 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
   }
   if (file.master != morph.legs[0].name) {
     r.fail("master", "'" + file.master + "': the controller's master is " + morph.legs[0].name +
-                         " (paper §2)");
+                         " (paper §2.3)");
   }
 
   file.model_xml = read_text(file.model, kMaxModelBytes, r, "model");

@@ -68,6 +68,32 @@ TEST_F(RobotFile, WalksLearnsAndCrossesTheTunnelAsTheBuiltInRobot) {
   expect_same("quadruped", "walk ROBOT --json");
 }
 
+// R1's TC joint turned about the opposite axis, its start angle negated and its sign -1: the same
+// robot, so the same walk to the bit, a locked joint included (locked at the paper's angle).
+TEST_F(RobotFile, ASignTurnsAJointIntoThePapersConvention) {
+  const std::string start_tc = " 0.436768645312";  // R1's TC in the start keyframe (front leg)
+  std::string xml = replaced(read_file(dir_ + "/hexapod.xml"),
+                             "<joint name=\"R1_TC\" type=\"hinge\" axis=\"0 0 1\"",
+                             "<joint name=\"R1_TC\" type=\"hinge\" axis=\"0 0 -1\"");
+  const std::size_t key = xml.find("<key name=\"start\"");
+  ASSERT_NE(key, std::string::npos);
+  const std::size_t at = xml.find(start_tc, key);
+  ASSERT_NE(at, std::string::npos);
+  xml.replace(at, start_tc.size(), " -" + start_tc.substr(1));
+  write(dir_ + "/flipped.xml", xml);
+  write(dir_ + "/flipped.toml",
+        replaced(replaced(read_file(dir_ + "/hexapod.toml"), "model = \"hexapod.xml\"",
+                          "model = \"flipped.xml\""),
+                 "TC = { joint = \"R1_TC\", sign = 1,", "TC = { joint = \"R1_TC\", sign = -1,"));
+  for (const std::string walk :
+       {"walk --json --robot ", "walk --json --fault R1.TC:locked=10@100 --steps 800 --robot "}) {
+    const CliResult builtin = run_cli(walk + "hexapod");
+    const CliResult flipped = run_cli(walk + dir_ + "/flipped.toml");
+    ASSERT_EQ(flipped.exit_code, 0) << flipped.err;
+    EXPECT_EQ(builtin.out, flipped.out) << walk;
+  }
+}
+
 TEST_F(RobotFile, CheckSaysWhatItReadAndThatTheRobotStands) {
   const CliResult r = run_cli("model --check " + dir_ + "/hexapod.toml");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -131,6 +157,11 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(count_lines(missing.err), 1) << missing.err;
   EXPECT_NE(missing.err.find("nosuch.toml: file"), std::string::npos) << missing.err;
+  // A robot file walks on its model's flat ground; a tunnel's model makes no robot file.
+  expect_bad_input("walk --terrain slope:5:0 --robot " + dir_ + "/hexapod.toml", "--terrain");
+  expect_bad_input("model --robot hexapod --tunnel --out " + dir_ + "/tunnel", "--tunnel");
+  expect_bad_input("model --robot hexapod --terrain slope:5:0 --out " + dir_ + "/slope",
+                   "--terrain");
 }
 
 }  // namespace
