@@ -8,6 +8,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/sim_flags.h"
@@ -34,8 +35,37 @@ struct ModelOptions {
 // What `model --check` walks: the tripod (robot::kDefaultPeriod) for 300 controller steps, 11 s
 // of the paper's 27 Hz (SPEC §0), several strides at every period.
 constexpr long kCheckSteps = 300;
-// It stands when its trunk ends at least this share of its start height above the ground.
+// It stands when its trunk ends at least this share of its start height above the ground, and
+// touches neither the ground nor anything else of the world.
 constexpr double kStandingShare = 0.5;
+
+// True when a body of the trunk (reached from the trunk without passing a leg's TC joint) touches
+// the world (ground, walls) in `state`.
+bool trunk_touches_world(const sim::SimModel& model, const sim::SimState& state) {
+  const mjModel* m = model.mj.get();
+  std::vector<bool> leg_part(static_cast<std::size_t>(m->nbody), false);
+  for (const sim::LegSlots& leg : model.legs) {
+    leg_part[static_cast<std::size_t>(m->jnt_bodyid[leg.joints[0].joint])] = true;
+  }
+  // Parents come before their children in MuJoCo's body order.
+  for (int b = 1; b < m->nbody; ++b) {
+    if (leg_part[static_cast<std::size_t>(m->body_parentid[b])]) {
+      leg_part[static_cast<std::size_t>(b)] = true;
+    }
+  }
+  const auto trunk = [&](int geom) {
+    const int body = m->geom_bodyid[geom];
+    return body != 0 && !leg_part[static_cast<std::size_t>(body)];
+  };
+  const auto world = [&](int geom) { return m->geom_bodyid[geom] == 0; };
+  const mjData* d = state.data.get();
+  for (int c = 0; c < d->ncon; ++c) {
+    const int g1 = d->contact[c].geom1;
+    const int g2 = d->contact[c].geom2;
+    if ((world(g1) && trunk(g2)) || (world(g2) && trunk(g1))) return true;
+  }
+  return false;
+}
 
 // Every model, every value, its unit and its source (robot/body_models.h).
 void print_models(std::ostream& out) {
@@ -66,9 +96,13 @@ void check_robot_file(const std::string& path) {
             << robot::to_string(file.layout) << "'s layout), model " << file.model.string() << "\n";
   std::cout << "  trunk " << file.trunk << ", yaw from " << file.yaw << ", master " << file.master
             << ", mass " << fmt::format("{:.3f}", mass) << " kg\n";
-  for (const robot::LegMap& leg : file.legs) {
+  for (std::size_t i = 0; i < file.legs.size(); ++i) {
+    const robot::LegMap& leg = file.legs[i];
+    // The leg weighs what hangs from its TC joint's body.
+    const int tc_body = m->jnt_bodyid[model.legs[i].joints[0].joint];
     std::cout << "  " << leg.name << " (" << robot::to_string(leg.side) << ", position "
-              << leg.position << "): foot " << leg.foot;
+              << leg.position << "): " << fmt::format("{:.3f}", m->body_subtreemass[tc_body])
+              << " kg, foot " << leg.foot;
     for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
       const robot::JointMap& joint = leg.joints[j];
       std::cout << fmt::format(", {} {}{} [{:.1f}, {:.1f}] deg",
@@ -88,6 +122,9 @@ void check_robot_file(const std::string& path) {
   if (!(end.z >= kStandingShare * start_z)) {
     throw RuntimeFailure(path + ": the robot does not stand: its trunk sank from " +
                          fmt::format("{:.3f} m to {:.3f} m", start_z, end.z));
+  }
+  if (trunk_touches_world(model, state)) {
+    throw RuntimeFailure(path + ": the robot does not stand: its trunk lies on the ground");
   }
   std::cout << "  it stands\n";
 }

@@ -102,6 +102,20 @@ TEST_F(RobotFile, CheckSaysWhatItReadAndThatTheRobotStands) {
   EXPECT_NE(r.out.find("FTi L3_FTi [-130.0, -20.0] deg"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("standing height"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("it stands"), std::string::npos) << r.out;
+
+  // Motors too weak to hold the robot up: it lies on its trunk (exit 1).
+  std::string xml = read_file(dir_ + "/hexapod.xml");
+  for (std::size_t at = xml.find("ctrlrange=\""); at != std::string::npos;
+       at = xml.find("ctrlrange=\"", at + 1)) {
+    const std::size_t value = at + std::string("ctrlrange=\"").size();
+    xml.replace(value, xml.find('"', value) - value, "-0.001 0.001");
+  }
+  write(dir_ + "/weak.xml", xml);
+  write(dir_ + "/weak.toml", replaced(read_file(dir_ + "/hexapod.toml"), "model = \"hexapod.xml\"",
+                                      "model = \"weak.xml\""));
+  const CliResult weak = run_cli("model --check " + dir_ + "/weak.toml");
+  EXPECT_EQ(weak.exit_code, 1) << weak.err;
+  EXPECT_NE(weak.err.find("does not stand"), std::string::npos) << weak.err;
 }
 
 struct Broken {
