@@ -173,6 +173,12 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
   EXPECT_NE(missing.err.find("nosuch.toml: file"), std::string::npos) << missing.err;
   // A robot file walks on its model's flat ground; a tunnel's model makes no robot file.
   expect_bad_input("walk --terrain slope:5:0 --robot " + dir_ + "/hexapod.toml", "--terrain");
+  // Its body is its model: body flags that would change the MJCF are refused.
+  expect_bad_input("walk --trunk-mass 2 --robot " + dir_ + "/hexapod.toml", "--trunk-mass");
+  expect_bad_input("learn --disable R1 --model real --robot " + dir_ + "/hexapod.toml", "--model");
+  const CliResult lifted =
+      run_cli("walk --steps 10 --lift-body 5 --robot " + dir_ + "/hexapod.toml");
+  EXPECT_EQ(lifted.exit_code, 0) << lifted.err;
   expect_bad_input("model --robot hexapod --tunnel --out " + dir_ + "/tunnel", "--tunnel");
   expect_bad_input("model --robot hexapod --terrain slope:5:0 --out " + dir_ + "/slope",
                    "--terrain");
