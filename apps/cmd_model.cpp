@@ -33,7 +33,7 @@ struct ModelOptions {
 };
 
 // What `model --check` walks: the tripod (robot::kDefaultPeriod) for 300 controller steps, 11 s
-// of the paper's 27 Hz (SPEC §0), several strides at every period.
+// at the paper's 27 Hz (SPEC §0), in which the built-in robots settle and walk 0.6 m.
 constexpr long kCheckSteps = 300;
 // It stands when its trunk ends at least this share of its start height above the ground, and
 // touches neither the ground nor anything else of the world.
@@ -131,12 +131,13 @@ void check_robot_file(const std::string& path) {
 
 // `--out DIR`: DIR/NAME.xml and the robot file DIR/NAME.toml that walks it.
 void write_robot_files(const ModelOptions& o, robot::RobotKind kind, const std::string& xml) {
-  if (o.tunnel)
+  if (o.tunnel) {
     throw BadInput(
         "--tunnel: --out DIR writes a robot file, whose model is the robot on flat ground; write "
         "the tunnel with --out FILE.xml");
+  }
   const std::filesystem::path dir(o.out);
-  std::filesystem::create_directories(dir);
+  ensure_writable_dir(dir);
   const std::string name(robot::to_string(kind));
   const std::filesystem::path model = name + ".xml";
   write_file_atomic(dir / model, xml);

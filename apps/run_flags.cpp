@@ -97,6 +97,7 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
       {"robot", "--robot"},
       {"start.periods", "--periods"},
       {"start.warmup", "--warmup"},
+      {"sim.scene.terrain", "--terrain"},
       {"learning.annealing.beta", "--beta"},
       {"learning.annealing.threshold_deg", "--threshold"},
       {"learning.annealing.max_trials", "--max-trials"},
@@ -117,9 +118,6 @@ experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   if (sim::is_robot_file(f.robot)) {
     spec.robot_file = std::make_shared<const robot::RobotFile>(sim::load_robot_file(f.robot));
     spec.robot = spec.robot_file->layout;
-    if (f.sim.scene.terrain.kind != robot::TerrainKind::flat) {
-      throw BadInput("--terrain: a robot file's model walks on its own flat ground");
-    }
   } else {
     spec.robot = robot::parse_robot(f.robot);
   }

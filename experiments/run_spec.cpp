@@ -31,9 +31,13 @@ sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options
 
 namespace {
 
-// A robot file's body is its MJCF: of the body parameters only those of the controller apply
-// (the disabled legs' posture and the body lift, robot/body_params.h).
-void validate_file_body(const sim::SimOptions& options) {
+// A robot file's model is walked on its own flat ground, and its body is its MJCF: of the body
+// parameters only those of the controller apply (the disabled legs' posture and the body lift,
+// robot/body_params.h).
+void validate_file_robot(const sim::SimOptions& options) {
+  if (options.scene.terrain.kind != robot::TerrainKind::flat) {
+    throw OptionError("sim.scene.terrain", "a robot file's model walks on its own flat ground");
+  }
   if (options.model != robot::kDefaultBodyModel) {
     throw OptionError("sim.model", "a robot file's body is its model (docs/robots.md)");
   }
@@ -52,7 +56,7 @@ void validate_file_body(const sim::SimOptions& options) {
 void validate(const RunSpec& spec) {
   const robot::Morphology& morph = morphology(spec);
   within("sim", [&] { sim::validate(spec.sim, spec.robot); });
-  if (spec.robot_file) validate_file_body(spec.sim);
+  if (spec.robot_file) validate_file_robot(spec.sim);
   const std::vector<int>& periods = spec.start.periods;
   if (!periods.empty() && periods.size() != morph.size()) {
     throw OptionError("start.periods", "the " + morph.name + " takes " +
