@@ -9,6 +9,7 @@
 #include "common/errors.h"
 #include "robot/leg_sets.h"
 #include "sim/fault_spec.h"
+#include "sim/robot_file.h"
 #include "sim/walk.h"
 
 namespace multicpg::apps {
@@ -51,7 +52,9 @@ std::string fault_flags(const RunFlags& f) {
 }  // namespace
 
 void add_robot_flag(CLI::App& cmd, RunFlags& f) {
-  cmd.add_option("--robot", f.robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd.add_option("--robot", f.robot,
+                 "hexapod, quadruped, octopod or a robot file FILE.toml (docs/robots.md)")
+      ->capture_default_str();
 }
 
 void add_start_flags(CLI::App& cmd, RunFlags& f) {
@@ -94,6 +97,7 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
       {"robot", "--robot"},
       {"start.periods", "--periods"},
       {"start.warmup", "--warmup"},
+      {"sim.scene.terrain", "--terrain"},
       {"learning.annealing.beta", "--beta"},
       {"learning.annealing.threshold_deg", "--threshold"},
       {"learning.annealing.max_trials", "--max-trials"},
@@ -111,7 +115,12 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
 
 experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   experiments::RunSpec spec;
-  spec.robot = robot::parse_robot(f.robot);
+  if (sim::is_robot_file(f.robot)) {
+    spec.robot_file = std::make_shared<const robot::RobotFile>(sim::load_robot_file(f.robot));
+    spec.robot = spec.robot_file->layout;
+  } else {
+    spec.robot = robot::parse_robot(f.robot);
+  }
   const robot::Morphology& morph = robot::morphology(spec.robot);
   spec.sim = with_body(f.sim, f.body);
   spec.faults = parse_faults(morph, f);

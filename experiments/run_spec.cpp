@@ -4,6 +4,7 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
+#include "robot/body_models.h"
 #include "robot/leg_sets.h"
 #include "sim/walk.h"
 
@@ -20,12 +21,42 @@ const robot::Morphology& morphology(const RunSpec& spec) {
 }
 
 sim::SimModel make_run_model(const RunSpec& spec) {
-  return sim::make_sim_model(spec.robot, spec.sim);
+  return make_run_model(spec, spec.sim);
 }
+
+sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options) {
+  return spec.robot_file ? sim::make_sim_model(*spec.robot_file, options)
+                         : sim::make_sim_model(spec.robot, options);
+}
+
+namespace {
+
+// A robot file's model is walked on its own flat ground, and its body is its MJCF: of the body
+// parameters only those of the controller apply (the disabled legs' posture and the body lift,
+// robot/body_params.h).
+void validate_file_robot(const sim::SimOptions& options) {
+  if (options.scene.terrain.kind != robot::TerrainKind::flat) {
+    throw OptionError("sim.scene.terrain", "a robot file's model walks on its own flat ground");
+  }
+  if (options.model != robot::kDefaultBodyModel) {
+    throw OptionError("sim.model", "a robot file's body is its model (docs/robots.md)");
+  }
+  const robot::BodyParams defaults = robot::body_params(robot::kDefaultBodyModel);
+  for (const robot::NumberParam& p : robot::number_params()) {
+    const bool controller = p.key == "lift_body" || p.key.starts_with("disabled_posture");
+    if (!controller && p.get(options.body) != p.get(defaults)) {
+      throw OptionError("sim.body." + std::string(p.key),
+                        "a robot file's body is its model (docs/robots.md)");
+    }
+  }
+}
+
+}  // namespace
 
 void validate(const RunSpec& spec) {
   const robot::Morphology& morph = morphology(spec);
   within("sim", [&] { sim::validate(spec.sim, spec.robot); });
+  if (spec.robot_file) validate_file_robot(spec.sim);
   const std::vector<int>& periods = spec.start.periods;
   if (!periods.empty() && periods.size() != morph.size()) {
     throw OptionError("start.periods", "the " + morph.name + " takes " +

@@ -4,6 +4,7 @@
 // run is saved or read back (experiments/run_json.h).
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "learning/compensation.h"
@@ -25,7 +26,10 @@ struct RecordSpec {
 };
 
 struct RunSpec {
+  // The built-in robot, or with a robot file the built-in whose layout it has (its legs,
+  // controller, servos and fault geometry; robot/robot_file.h).
   robot::RobotKind robot = robot::RobotKind::hexapod;
+  std::shared_ptr<const robot::RobotFile> robot_file;  // null: the built-in robot
   sim::SimOptions sim;        // time steps, servos, scene, the controller's parameters
   sim::StartSpec start;       // periods and warm-up
   sim::FaultTimeline faults;  // what fails, and recovers, when
@@ -43,13 +47,16 @@ sim::StartSpec learning_start(learning::Mode mode);
 // "start.periods", "start.warmup", "faults", "learning.annealing.beta", "record.check_windows"
 // (a value out of its range, a period that gives no gait or the wrong number of them, a fault
 // timeline that cannot happen, a learning run without a fault or with unequal start periods),
-// "learning.mode" for faults the learning mode cannot take.
+// "learning.mode" for faults the learning mode cannot take; with a robot file "sim.scene.terrain"
+// for other than flat ground, "sim.model" and "sim.body.<key>" for a body parameter other than
+// the controller's (its body is its model).
 void validate(const RunSpec& spec);
 
 // The leg layout of the run's robot.
 const robot::Morphology& morphology(const RunSpec& spec);
 
-// The simulation the run walks in: its robot with its simulation options.
+// The simulation the run walks in: its robot with its simulation options (or `options`).
 sim::SimModel make_run_model(const RunSpec& spec);
+sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options);
 
 }  // namespace multicpg::experiments

@@ -76,7 +76,7 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
 sim::SimModel tunnel_model(const RunSpec& spec) {
   sim::SimOptions options = spec.sim;
   options.scene.tunnel = true;
-  return sim::make_sim_model(spec.robot, options);
+  return make_run_model(spec, options);
 }
 
 TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, long max_steps,
@@ -95,7 +95,7 @@ TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, lon
   } else {
     sim::SimOptions open_options = spec.sim;
     open_options.scene.tunnel = false;
-    const sim::SimModel open = sim::make_sim_model(spec.robot, open_options);
+    const sim::SimModel open = make_run_model(spec, open_options);
     out.learned = run_learning(open, spec, 0, learning_observer).result;
     out.disabled = sim::failed_after(morph, spec.faults);
     out.periods = out.learned->periods;

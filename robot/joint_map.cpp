@@ -35,7 +35,10 @@ AngleRange joint_limits(LegType type, Joint joint) {
 }
 
 double joint_angle(LegType type, Joint joint, double command) {
-  const AngleRange r = joint_limits(type, joint);
+  return joint_angle(joint_limits(type, joint), command);
+}
+
+double joint_angle(const AngleRange& r, double command) {
   const double m = std::clamp(command, -1.0, 1.0);
   return 0.5 * (r.lo + r.hi) + 0.5 * (r.hi - r.lo) * m;
 }

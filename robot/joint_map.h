@@ -21,6 +21,8 @@ AngleRange joint_limits(LegType type, Joint joint);
 // CTr = 75 deg m, FTi = (55 m - 75) deg. m is clipped to [-1, 1] first, as the lpzrobots servo
 // clips its input.
 double joint_angle(LegType type, Joint joint, double command);
+// The same for a joint whose window a robot file gives (robot/robot_file.h).
+double joint_angle(const AngleRange& window, double command);
 
 // The change of command that turns `joint` by `radians` (the inverse slope of joint_angle).
 double command_change(LegType type, Joint joint, double radians);

@@ -46,6 +46,7 @@ constexpr double kStartClearance = 0.001;  // m
 // Corridor walls (paper §5): tall and thick enough to stop the trunk and legs.
 constexpr double kWallHeight = 0.3;      // m
 constexpr double kWallThickness = 0.02;  // m
+constexpr const char* kWallRgba = ".6 .55 .5 .5";
 // Rough ground's heightfield file (beside the MJCF; MuJoCo's binary heightfield format) and the
 // slab under its surface, deep enough that no foot reaches through.
 constexpr const char* kHeightfieldFile = "terrain.hfield";
@@ -234,8 +235,9 @@ std::string quat(const std::array<double, 4>& q) {
   return num(q[0]) + " " + num(q[1]) + " " + num(q[2]) + " " + num(q[3]);
 }
 
-// The walls stand on the ground: on a slope, tilted with it.
-void write_walls(Writer& w, const Scene& scene) {
+// The walls stand on the ground: on a slope, tilted with it. `contact` gives their contact class.
+void write_walls(Writer& w, const Scene& scene, const std::string& contact,
+                 const std::string& material) {
   const double half_len = scene.tunnel_length / 2.0;
   const bool tilted = scene.terrain.kind == TerrainKind::slope;
   const std::array<double, 4> q = ground_rotation(scene.terrain);
@@ -243,11 +245,11 @@ void write_walls(Writer& w, const Scene& scene) {
     const Vec3 along{half_len, side * (scene.tunnel_width + kWallThickness) / 2.0,
                      kWallHeight / 2.0};
     const Vec3 pos = tilted ? rotated(q, along) : along;
-    w.line(2, "<geom name=\"" + std::string(side > 0 ? "wall_left" : "wall_right") +
-                  "\" class=\"world\" type=\"box\" pos=\"" + vec(pos) + "\"" +
+    w.line(2, "<geom name=\"" + std::string(side > 0 ? "wall_left" : "wall_right") + "\" " +
+                  contact + " type=\"box\" pos=\"" + vec(pos) + "\"" +
                   (tilted ? " quat=\"" + quat(q) + "\"" : std::string()) + " size=\"" +
                   num(half_len) + " " + num(kWallThickness / 2.0) + " " + num(kWallHeight / 2.0) +
-                  "\" material=\"wall\"/>");
+                  "\" material=\"" + material + "\"/>");
   }
 }
 
@@ -339,7 +341,7 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
          "<texture name=\"grid\" type=\"2d\" builtin=\"checker\" rgb1=\".35 .4 .45\" "
          "rgb2=\".25 .3 .35\" width=\"256\" height=\"256\"/>");
   w.line(2, "<material name=\"grid\" texture=\"grid\" texrepeat=\"10 10\"/>");
-  w.line(2, "<material name=\"wall\" rgba=\".6 .55 .5 .5\"/>");
+  w.line(2, "<material name=\"wall\" rgba=\"" + std::string(kWallRgba) + "\"/>");
   if (terrain.kind == TerrainKind::rough) {
     w.line(2, "<hfield name=\"terrain\" file=\"" + std::string(kHeightfieldFile) + "\" size=\"" +
                   num(kTerrainSide / 2.0) + " " + num(kTerrainSide / 2.0) + " " +
@@ -360,7 +362,7 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   w.line(1, "<worldbody>");
   w.line(2, "<light name=\"sun\" pos=\"0 0 3\" dir=\"0 0 -1\" directional=\"true\"/>");
   write_ground(w, terrain);
-  if (options.scene.tunnel) write_walls(w, options.scene);
+  if (options.scene.tunnel) write_walls(w, options.scene, "class=\"world\"", "wall");
 
   // The robot stands on the ground: above rough ground's highest bump; on a slope, tilted with
   // it about the start.
@@ -432,6 +434,29 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   w.line(1, "<keyframe>");
   w.line(2, "<key name=\"start\" qpos=\"" + qpos + "\"/>");
   w.line(1, "</keyframe>");
+  w.line(0, "</mujoco>");
+  return w.str();
+}
+
+double mjcf_value(double v) {
+  return std::stod(num(v));
+}
+
+std::string tunnel_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file) {
+  Writer w;
+  w.line(0, "<mujoco model=\"multicpg-tunnel\">");
+  w.line(1, "<include file=\"" + model_file + "\"/>");
+  w.line(1, "<asset>");
+  w.line(2, "<material name=\"multicpg_wall\" rgba=\"" + std::string(kWallRgba) + "\"/>");
+  w.line(1, "</asset>");
+  w.line(1, "<worldbody>");
+  // What make_mjcf's "world" class and default give its walls.
+  write_walls(w, scene,
+              "contype=\"" + std::to_string(kWorldClass) + "\" conaffinity=\"" +
+                  std::to_string(kRobotClass) + "\" friction=\"" +
+                  geom_friction(body, body.foot_friction) + "\"",
+              "multicpg_wall");
+  w.line(1, "</worldbody>");
   w.line(0, "</mujoco>");
   return w.str();
 }

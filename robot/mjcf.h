@@ -57,4 +57,12 @@ double stand_height(const RobotBody& body, const std::vector<LegAngles>& pose);
 // options.start_pose, feet on the ground.
 std::string make_mjcf(const RobotBody& body, const MjcfOptions& options);
 
+// `v` as MuJoCo reads it back from make_mjcf's document (which writes 12 significant digits).
+double mjcf_value(double v);
+
+// The tunnel of `scene` around a robot on flat ground: a document that includes the MJCF file
+// `model_file` and adds the walls, as make_mjcf's tunnel has them for `body` (the compiled walls
+// differ only in their material's name). Collisions must then be "all" (set on the compiled model).
+std::string tunnel_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file);
+
 }  // namespace multicpg::robot

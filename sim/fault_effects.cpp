@@ -58,7 +58,8 @@ void lock(const SimModel& model, SimState& state, const Fault& fault, const Lock
         std::copy_n(original->jnt_range + 2 * slot.joint, 2, range);
         continue;
       }
-      const double angle = locked.value ? *locked.value * std::numbers::pi / 180.0
+      // The locked angle is the paper's; the joint's own is its sign times that.
+      const double angle = locked.value ? slot.sign * *locked.value * std::numbers::pi / 180.0
                                         : state.data->qpos[slot.qpos];
       range[0] = angle;
       range[1] = angle;
@@ -103,7 +104,8 @@ void shorten(const SimModel& model, SimState& state, const Fault& fault, double 
     m->body_mass[tibia] = f == 1.0 ? mass : now.mass;
     // The principal axis of least inertia is the capsule's own.
     const double* before = original->body_inertia + 3 * tibia;
-    const std::size_t axis = static_cast<std::size_t>(std::min_element(before, before + 3) - before);
+    const std::size_t axis =
+        static_cast<std::size_t>(std::min_element(before, before + 3) - before);
     for (std::size_t k = 0; k < 3; ++k) {
       m->body_inertia[3 * tibia + k] =
           f == 1.0 ? before[k] : (k == axis ? now.axial : now.transverse);
@@ -178,8 +180,7 @@ void advance_sensor(const SimModel& model, SimState& state) {
   sensor.drift_deg += sensor.drift_deg_per_s * model.control_dt;
   sensor.noise_deg = 0.0;
   if (sensor.noise_sigma_deg > 0.0) {
-    sensor.noise_deg =
-        std::normal_distribution<double>(0.0, sensor.noise_sigma_deg)(sensor.random);
+    sensor.noise_deg = std::normal_distribution<double>(0.0, sensor.noise_sigma_deg)(sensor.random);
   }
 }
 

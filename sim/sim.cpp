@@ -81,15 +81,14 @@ const char* warning_name(int warning) {
 
 // The start pose: every leg in mid-stance (SPEC §4 windows): TC and FTi at the centre of their
 // windows (pre-motor signal 0), CTr fully depressed (-1, the stance value of reference §4.2).
-std::vector<LegAngles> start_pose(const neural::ControllerModel& controller) {
+std::vector<LegAngles> start_pose(const neural::ControllerModel& controller,
+                                  const robot::RobotFile& map) {
   std::vector<LegAngles> pose;
-  const robot::Morphology& morph = controller.morphology;
-  for (std::size_t i = 0; i < morph.size(); ++i) {
+  for (std::size_t i = 0; i < map.legs.size(); ++i) {
     const neural::MotorCommands m = controller.legs[i].map({0.0, -1.0, 0.0});
-    const robot::LegType type = morph.legs[i].type;
-    pose.push_back({robot::joint_angle(type, Joint::TC, m.tc),
-                    robot::joint_angle(type, Joint::CTr, m.ctr),
-                    robot::joint_angle(type, Joint::FTi, m.fti)});
+    const auto& w = map.legs[i].joints;
+    pose.push_back({robot::joint_angle(w[0].window, m.tc), robot::joint_angle(w[1].window, m.ctr),
+                    robot::joint_angle(w[2].window, m.fti)});
   }
   return pose;
 }
@@ -107,33 +106,145 @@ double resolved_physics_dt(const SimOptions& options) {
   return options.physics_dt == 0.0 ? default_physics_dt(options.control_dt) : options.physics_dt;
 }
 
-int id_of(const mjModel* m, mjtObj type, const std::string& name) {
+// Where a leg map's names are in a model. Each throws OptionError with the robot file's key.
+int id_of(const mjModel* m, mjtObj type, const std::string& name, const std::string& key,
+          const char* what) {
   const int id = mj_name2id(m, type, name.c_str());
-  if (id < 0) throw RuntimeFailure("MuJoCo model has no '" + name + "'");
+  if (id < 0) throw OptionError(key, fmt::format("the model has no {} '{}'", what, name));
   return id;
 }
 
-JointSlot joint_slot(const mjModel* m, const std::string& joint, robot::ServoSpec spec, double gain,
-                     const robot::AngleRange& range) {
-  const int j = id_of(m, mjOBJ_JOINT, joint);
+// The servo joint `map` names: a limited hinge that a motor drives, whose range holds the
+// window (up to kWindowTolerance, as the MJCF writes angles to 12 digits, robot/mjcf.cpp).
+constexpr double kWindowTolerance = 1e-9;  // rad
+
+JointSlot joint_slot(const mjModel* m, const robot::JointMap& map, const std::string& key,
+                     robot::ServoSpec spec, double gain) {
+  const int j = id_of(m, mjOBJ_JOINT, map.name, key + ".joint", "joint");
+  if (m->jnt_type[j] != mjJNT_HINGE) {
+    throw OptionError(key + ".joint", "joint '" + map.name + "' is not a hinge");
+  }
+  if (m->jnt_limited[j] == 0) {
+    throw OptionError(key + ".joint",
+                      "joint '" + map.name + "' has no range (limited=\"true\" range=\"lo hi\")");
+  }
+  const double lo = std::min(map.sign * map.window.lo, map.sign * map.window.hi);
+  const double hi = std::max(map.sign * map.window.lo, map.sign * map.window.hi);
+  if (lo < m->jnt_range[2 * j] - kWindowTolerance ||
+      hi > m->jnt_range[2 * j + 1] + kWindowTolerance) {
+    throw OptionError(
+        key + ".window",
+        fmt::format("[{}, {}] rad leaves joint '{}''s range [{}, {}] rad", map.window.lo,
+                    map.window.hi, map.name, m->jnt_range[2 * j], m->jnt_range[2 * j + 1]));
+  }
   JointSlot slot;
   slot.joint = j;
   slot.qpos = m->jnt_qposadr[j];
   slot.dof = m->jnt_dofadr[j];
-  slot.actuator = id_of(m, mjOBJ_ACTUATOR, joint);
-  const int coupling = mj_name2id(m, mjOBJ_JOINT, robot::coupling_joint(joint).c_str());
+  slot.sign = map.sign;
+  for (int a = 0; a < m->nu; ++a) {
+    if (m->actuator_trntype[a] == mjTRN_JOINT && m->actuator_trnid[2 * a] == j) slot.actuator = a;
+  }
+  if (slot.actuator < 0) {
+    throw OptionError(key + ".joint", "no actuator drives joint '" + map.name + "' (a <motor>)");
+  }
+  const int coupling = mj_name2id(m, mjOBJ_JOINT, robot::coupling_joint(map.name).c_str());
   if (coupling >= 0) slot.coupling_qpos = m->jnt_qposadr[coupling];
   spec.gain = gain;
-  slot.servo = {spec, range.hi - range.lo};
+  slot.servo = {spec, map.window.hi - map.window.lo};
   return slot;
+}
+
+// A leg's foot: its geom, the body it moves with and that body's parent (the tibia), the touch
+// sensor on a site of the foot's body, and the foot's contact pair with the ground.
+void index_foot(const mjModel* m, const std::string& foot, const std::string& key,
+                LegSlots& slots) {
+  slots.foot_geom = id_of(m, mjOBJ_GEOM, foot, key, "geom");
+  slots.foot_body = m->geom_bodyid[slots.foot_geom];
+  slots.tibia_body = m->body_parentid[slots.foot_body];
+  if (m->body_geomnum[slots.tibia_body] == 0) {
+    throw OptionError(key, "the body above foot '" + foot + "' (the tibia) has no geom");
+  }
+  slots.tibia_geom = m->body_geomadr[slots.tibia_body];
+  for (int s = 0; s < m->nsensor && slots.touch < 0; ++s) {
+    if (m->sensor_type[s] == mjSENS_TOUCH &&
+        m->site_bodyid[m->sensor_objid[s]] == slots.foot_body) {
+      slots.touch = m->sensor_adr[s];
+    }
+  }
+  if (slots.touch < 0) {
+    throw OptionError(key, "no touch sensor on a site of foot '" + foot + "''s body");
+  }
+  for (int p = 0; p < m->npair; ++p) {
+    if (m->pair_geom2[p] == slots.foot_geom || m->pair_geom1[p] == slots.foot_geom) {
+      slots.foot_pair = p;
+    }
+  }
+  if (slots.foot_pair < 0) {
+    throw OptionError(key, "foot '" + foot + "' has no contact pair with the ground (a <pair>)");
+  }
+}
+
+// The sensordata address of the framequat sensor on the body or site `name`.
+int yaw_sensor(const mjModel* m, const std::string& name) {
+  const int body = mj_name2id(m, mjOBJ_BODY, name.c_str());
+  const int site = mj_name2id(m, mjOBJ_SITE, name.c_str());
+  if (body < 0 && site < 0)
+    throw OptionError("yaw", "the model has no body or site '" + name + "'");
+  for (int s = 0; s < m->nsensor; ++s) {
+    if (m->sensor_type[s] != mjSENS_FRAMEQUAT) continue;
+    const int type = m->sensor_objtype[s];
+    const int id = m->sensor_objid[s];
+    if (((type == mjOBJ_XBODY || type == mjOBJ_BODY) && id == body) ||
+        (type == mjOBJ_SITE && id == site)) {
+      return m->sensor_adr[s];
+    }
+  }
+  throw OptionError("yaw", "no framequat sensor on '" + name + "'");
+}
+
+// Every name of the leg map found in the model's tables.
+void index_model(SimModel& model, const robot::RobotFile& map, const SimOptions& options) {
+  const mjModel* m = model.mj.get();
+  const robot::RobotBody& body = model.body;
+  const auto gain = [&](const robot::ServoSpec& spec) {
+    return options.servo_gain > 0.0 ? options.servo_gain
+                                    : spec.gain * kReferenceControlDt / model.control_dt;
+  };
+  const std::array<const robot::ServoSpec*, robot::kJointsPerLeg> specs{
+      &body.tc_servo, &body.ctr_servo, &body.fti_servo};
+  for (std::size_t i = 0; i < map.legs.size(); ++i) {
+    const robot::LegMap& leg = map.legs[i];
+    const std::string key = "legs[" + std::to_string(i) + "]";
+    LegSlots slots{body.morphology.legs[i].type, {}, {}};
+    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
+      const std::string joint_key = key + "." + std::string(robot::to_string(robot::kJoints[j]));
+      slots.joints[j] = joint_slot(m, leg.joints[j], joint_key, *specs[j], gain(*specs[j]));
+      slots.windows[j] = leg.joints[j].window;
+    }
+    index_foot(m, leg.foot, key + ".foot", slots);
+    model.legs.push_back(slots);
+  }
+  if (map.backbone) {
+    model.backbone.push_back(
+        joint_slot(m, *map.backbone, "backbone", body.backbone_servo, gain(body.backbone_servo)));
+  }
+  const int trunk = id_of(m, mjOBJ_BODY, map.trunk, "trunk", "body");
+  if (m->body_jntnum[trunk] == 0 || m->jnt_type[m->body_jntadr[trunk]] != mjJNT_FREE) {
+    throw OptionError("trunk", "body '" + map.trunk + "' has no free joint (<freejoint/>)");
+  }
+  model.root_qpos = m->jnt_qposadr[m->body_jntadr[trunk]];
+  model.yaw_sensor = yaw_sensor(m, map.yaw);
+  model.start_key = id_of(m, mjOBJ_KEY, "start", "model", "keyframe");
 }
 
 void drive(const SimModel& model, mjData* d, const JointSlot& slot, double target,
            const JointCondition& condition = {}) {
   d->ctrl[slot.actuator] =
       condition.servo == JointCondition::Servo::driven
-          ? servo_torque(slot.servo, target, d->qpos[slot.qpos], d->qvel[slot.dof],
-                         model.physics_dt, condition.torque_scale)
+          ? slot.sign * servo_torque(slot.servo, target, slot.sign * d->qpos[slot.qpos],
+                                     slot.sign * d->qvel[slot.dof], model.physics_dt,
+                                     condition.torque_scale)
           : 0.0;
 }
 
@@ -296,8 +407,9 @@ std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
   const double physics_dt = resolved_physics_dt(options);
   const neural::ControllerModel controller =
       neural::make_controller_model(kind, options.controller, options.body);
+  const robot::RobotFile map = robot::builtin_robot_file(kind, {});
   return robot::make_mjcf(robot::robot_body(kind, options.body),
-                          mjcf_options(options, physics_dt, start_pose(controller)));
+                          mjcf_options(options, physics_dt, start_pose(controller, map)));
 }
 
 void recover_mujoco_errors() {
@@ -322,7 +434,10 @@ void install_mujoco_handlers() {
   });
 }
 
-SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
+namespace {
+
+// The model of `kind` or of a robot file with the layout `kind`, before its MJCF is compiled.
+SimModel new_model(robot::RobotKind kind, const SimOptions& options, const robot::RobotFile& map) {
   install_mujoco_handlers();
   validate(options, kind);
   SimModel model{kind,
@@ -338,49 +453,40 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
                  {},
                  {}};
   model.substeps = physics_substeps(model.control_dt, model.physics_dt);
-  model.start_pose = start_pose(model.controller);
+  model.start_pose = start_pose(model.controller, map);
+  return model;
+}
+
+}  // namespace
+
+SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
+  const robot::RobotFile map = robot::builtin_robot_file(kind, {});
+  SimModel model = new_model(kind, options, map);
   model.xml =
       robot::make_mjcf(model.body, mjcf_options(options, model.physics_dt, model.start_pose));
   model.files = robot::scene_files(options.scene);
   model.mj = compile_mjcf(model.xml, model.files);
-  const mjModel* m = model.mj.get();
+  index_model(model, map, options);
+  return model;
+}
 
-  const robot::RobotBody& body = model.body;
-  const auto gain = [&](const robot::ServoSpec& spec) {
-    return options.servo_gain > 0.0 ? options.servo_gain
-                                    : spec.gain * kReferenceControlDt / model.control_dt;
-  };
-  for (const robot::Leg& leg : body.morphology.legs) {
-    LegSlots slots{leg.type, {}, -1};
-    const std::array<const robot::ServoSpec*, robot::kJointsPerLeg> specs{
-        &body.tc_servo, &body.ctr_servo, &body.fti_servo};
-    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-      const Joint joint = robot::kJoints[j];
-      slots.joints[j] =
-          joint_slot(m, leg.name + "_" + std::string(robot::to_string(joint)), *specs[j],
-                     gain(*specs[j]), robot::joint_limits(leg.type, joint));
-    }
-    slots.touch = m->sensor_adr[id_of(m, mjOBJ_SENSOR, leg.name + "_foot")];
-    slots.tibia_body = id_of(m, mjOBJ_BODY, leg.name + "_tibia");
-    slots.tibia_geom = id_of(m, mjOBJ_GEOM, leg.name + "_tibia");
-    slots.foot_body = id_of(m, mjOBJ_BODY, leg.name + "_foot");
-    slots.foot_geom = id_of(m, mjOBJ_GEOM, leg.name + "_foot");
-    for (int p = 0; p < m->npair; ++p) {
-      if (m->pair_geom2[p] == slots.foot_geom || m->pair_geom1[p] == slots.foot_geom) {
-        slots.foot_pair = p;
-      }
-    }
-    if (slots.foot_pair < 0) throw RuntimeFailure("MuJoCo model has no ground pair of " + leg.name);
-    model.legs.push_back(slots);
+SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options) {
+  if (options.scene.terrain.kind != robot::TerrainKind::flat) {
+    throw OptionError("scene.terrain", "a robot file's model walks on its own flat ground");
   }
-  if (body.trunk.size() > 1) {
-    model.backbone.push_back(joint_slot(m, "backbone", body.backbone_servo,
-                                        gain(body.backbone_servo),
-                                        {-body.backbone_limit, body.backbone_limit}));
+  SimModel model = new_model(file.layout, options, file);
+  if (options.scene.tunnel) {
+    const std::string name = file.model.filename().string();
+    model.xml = robot::tunnel_mjcf(model.body, options.scene, name);
+    model.files = {{name, file.model_xml}};
+  } else {
+    model.xml = file.model_xml;
   }
-  model.root_qpos = m->jnt_qposadr[id_of(m, mjOBJ_JOINT, "root")];
-  model.yaw_sensor = m->sensor_adr[id_of(m, mjOBJ_SENSOR, "yaw")];
-  model.start_key = id_of(m, mjOBJ_KEY, "start");
+  model.mj = compile_mjcf(model.xml, model.files);
+  // The physics step and, in the tunnel, the wall contacts, as make_mjcf writes them.
+  model.mj->opt.timestep = robot::mjcf_value(model.physics_dt);
+  if (options.scene.tunnel) model.mj->opt.collision = mjCOL_ALL;
+  index_model(model, file, options);
   return model;
 }
 
@@ -419,10 +525,9 @@ void sim_step(const SimModel& model, SimState& state) {
   neural::controller_step(model.controller, state.controller);
   for (std::size_t i = 0; i < model.legs.size(); ++i) {
     const neural::MotorCommands& c = state.controller.legs[i].command;
-    const robot::LegType type = model.legs[i].type;
-    state.targets[i] = {robot::joint_angle(type, Joint::TC, c.tc),
-                        robot::joint_angle(type, Joint::CTr, c.ctr),
-                        robot::joint_angle(type, Joint::FTi, c.fti)};
+    const auto& w = model.legs[i].windows;
+    state.targets[i] = {robot::joint_angle(w[0], c.tc), robot::joint_angle(w[1], c.ctr),
+                        robot::joint_angle(w[2], c.fti)};
   }
   const mjModel* m = physics_model(model, state);
   mjData* d = state.data.get();
@@ -463,7 +568,7 @@ double trunk_yaw_deg(const SimModel& model, const SimState& state) {
 double joint_angle(const SimModel& model, const SimState& state, std::size_t leg, Joint joint) {
   const JointSlot& slot = model.legs[leg].joints[static_cast<std::size_t>(joint)];
   const double* q = state.data->qpos;
-  return slot.coupling_qpos < 0 ? q[slot.qpos] : q[slot.qpos] + q[slot.coupling_qpos];
+  return slot.sign * (slot.coupling_qpos < 0 ? q[slot.qpos] : q[slot.qpos] + q[slot.coupling_qpos]);
 }
 
 double foot_force(const SimModel& model, const SimState& state, std::size_t leg) {

@@ -20,6 +20,7 @@
 #include "robot/body_models.h"
 #include "robot/body_params.h"
 #include "robot/mjcf.h"
+#include "robot/robot_file.h"
 #include "sim/fault_state.h"
 #include "sim/servo.h"
 
@@ -82,12 +83,15 @@ struct JointSlot {
   int dof = -1;
   int actuator = -1;
   int coupling_qpos = -1;  // the passive coupling behind the servo, if the joints are compliant
+  double sign = 1.0;       // the paper's angle is sign * the joint's (robot::JointMap)
   ServoModel servo{};
 };
 
 struct LegSlots {
   robot::LegType type;
   std::array<JointSlot, robot::kJointsPerLeg> joints;  // TC, CTr, FTi
+  // The angles commands -1..1 span (robot::JointMap::window).
+  std::array<robot::AngleRange, robot::kJointsPerLeg> windows{};
   int touch = -1;  // sensordata address of the foot's touch sensor
   // The parts a fault reshapes (sim/fault_effects.h): the tibia's body and capsule, the foot's
   // body and capsule, and the foot's contact pair with the ground.
@@ -144,6 +148,13 @@ void install_mujoco_handlers();
 // Builds the MJCF from robot::robot_body(kind, options.body), compiles it and indexes it. Throws
 // BadInput for bad options (validate), RuntimeFailure if MuJoCo rejects the model.
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options = {});
+
+// The robot of a robot file (sim/robot_file.h load_robot_file) with its layout's controller,
+// servos and fault geometry. Its model is walked as written on flat ground, or inside the tunnel's
+// walls (options.scene.tunnel), at options' physics step. Throws OptionError ("scene.terrain")
+// for other ground, and with the file's key ("legs[0].TC.joint", "yaw", ...) for a name of the
+// leg map that its model lacks; RuntimeFailure if MuJoCo rejects the model.
+SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options = {});
 
 // The MJCF make_sim_model compiles (what `multicpg model` prints).
 std::string model_xml(robot::RobotKind kind, const SimOptions& options = {});

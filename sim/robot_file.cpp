@@ -1,0 +1,179 @@
+#include "sim/robot_file.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.h"
+#include "sim/sim.h"
+
+namespace multicpg::sim {
+namespace {
+
+// Reads the TOML of one robot file; every error names the file and the key.
+class Reader {
+ public:
+  explicit Reader(std::filesystem::path path) : path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    std::string line = path_.string() + ": " + key + ": " + what;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    line.erase(line.find_last_not_of(' ') + 1);
+    throw BadInput(line);
+  }
+
+  // Only the keys `known` may appear in `table` (so a misspelt key is not silently ignored).
+  void only(const toml::table& table, const std::string& prefix,
+            std::initializer_list<std::string_view> known) const {
+    for (const auto& [key, value] : table) {
+      if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
+        fail(prefix + std::string(key.str()), "unknown key");
+      }
+    }
+  }
+
+  const toml::node& node(const toml::table& table, const std::string& prefix,
+                         std::string_view key) const {
+    const toml::node* n = table.get(key);
+    if (n == nullptr) fail(prefix + std::string(key), "missing");
+    return *n;
+  }
+
+  std::string text(const toml::table& table, const std::string& prefix,
+                   std::string_view key) const {
+    const std::optional<std::string> v = node(table, prefix, key).value_exact<std::string>();
+    if (!v || v->empty()) fail(prefix + std::string(key), "must be a non-empty string");
+    return *v;
+  }
+
+  double number(const toml::node& n, const std::string& key) const {
+    if (!n.is_number()) fail(key, "must be a number");
+    return *n.value<double>();
+  }
+
+  robot::JointMap joint(const toml::table& table, const std::string& prefix,
+                        std::string_view key) const {
+    const std::string k = prefix + std::string(key);
+    const toml::table* t = node(table, prefix, key).as_table();
+    if (t == nullptr) fail(k, "must be a table { joint = ..., sign = ..., window = [lo, hi] }");
+    only(*t, k + ".", {"joint", "sign", "window"});
+    robot::JointMap j;
+    j.name = text(*t, k + ".", "joint");
+    j.sign = number(node(*t, k + ".", "sign"), k + ".sign");
+    if (j.sign != 1.0 && j.sign != -1.0) fail(k + ".sign", "must be 1 or -1");
+    const toml::array* w = node(*t, k + ".", "window").as_array();
+    if (w == nullptr || w->size() != 2) fail(k + ".window", "must be [lo, hi] in rad");
+    j.window = {number(*w->get(0), k + ".window"), number(*w->get(1), k + ".window")};
+    if (!(j.window.lo < j.window.hi)) fail(k + ".window", "lo must be below hi");
+    return j;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A whole file, at most `limit` bytes.
+std::string read_text(const std::filesystem::path& path, std::uintmax_t limit, const Reader& r,
+                      const std::string& key) {
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) r.fail(key, "cannot read '" + path.string() + "': " + ec.message());
+  if (size > limit) {
+    r.fail(key, "'" + path.string() + "' has " + std::to_string(size) + " bytes, at most " +
+                    std::to_string(limit));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  if (!in) r.fail(key, "cannot read '" + path.string() + "'");
+  return bytes.str();
+}
+
+// The built-in robot whose layout has `legs` legs.
+robot::RobotKind layout_of(std::size_t legs, const Reader& r) {
+  for (robot::RobotKind kind : robot::kRobotKinds) {
+    if (robot::morphology(kind).size() == legs) return kind;
+  }
+  r.fail("legs", std::to_string(legs) +
+                     " legs; a robot file has 4, 6 or 8 (the quadruped's, hexapod's or octopod's "
+                     "layout, SPEC §0)");
+}
+
+}  // namespace
+
+bool is_robot_file(const std::string& robot) {
+  return std::filesystem::path(robot).extension() == ".toml";
+}
+
+robot::RobotFile load_robot_file(const std::filesystem::path& path) {
+  const Reader r(path);
+  const std::string source = read_text(path, kMaxRobotFileBytes, r, "file");
+  toml::table doc;
+  try {
+    doc = toml::parse(source, path.string());
+  } catch (const toml::parse_error& e) {
+    r.fail("line " + std::to_string(e.source().begin.line), std::string(e.description()));
+  }
+  r.only(doc, "", {"name", "model", "trunk", "yaw", "master", "backbone", "legs"});
+  robot::RobotFile file;
+  file.path = path;
+  file.name = r.text(doc, "", "name");
+  file.model = path.parent_path() / r.text(doc, "", "model");
+  file.trunk = r.text(doc, "", "trunk");
+  file.yaw = r.text(doc, "", "yaw");
+  file.master = r.text(doc, "", "master");
+  if (doc.contains("backbone")) file.backbone = r.joint(doc, "", "backbone");
+
+  const toml::array* legs = r.node(doc, "", "legs").as_array();
+  if (legs == nullptr) r.fail("legs", "must be an array of tables ([[legs]])");
+  file.layout = layout_of(legs->size(), r);
+  const robot::Morphology& morph = robot::morphology(file.layout);
+  for (std::size_t i = 0; i < legs->size(); ++i) {
+    const std::string key = "legs[" + std::to_string(i) + "]";
+    const toml::table* t = legs->get(i)->as_table();
+    if (t == nullptr) r.fail(key, "must be a table");
+    const std::string p = key + ".";
+    r.only(*t, p, {"name", "side", "position", "foot", "TC", "CTr", "FTi"});
+    const robot::Leg& expected = morph.legs[i];
+    robot::LegMap leg{r.text(*t, p, "name"), expected.side, expected.position, {}, {}};
+    if (leg.name != expected.name) {
+      r.fail(p + "name", "'" + leg.name + "', expected '" + expected.name + "' (legs are listed " +
+                             morph.legs.front().name + ".." +
+                             morph.legs[morph.size() / 2 - 1].name + ", then " +
+                             morph.legs[morph.size() / 2].name + ".." + morph.legs.back().name +
+                             ")");
+    }
+    if (r.text(*t, p, "side") != robot::to_string(expected.side)) {
+      r.fail(p + "side", "leg " + leg.name + " is on the " +
+                             std::string(robot::to_string(expected.side)) + " side");
+    }
+    const std::optional<int64_t> position = r.node(*t, p, "position").value_exact<int64_t>();
+    if (position != expected.position) {
+      r.fail(p + "position", "leg " + leg.name + " is at position " +
+                                 std::to_string(expected.position) + " (0 = front)");
+    }
+    leg.foot = r.text(*t, p, "foot");
+    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
+      leg.joints[j] = r.joint(*t, p, robot::to_string(robot::kJoints[j]));
+    }
+    file.legs.push_back(leg);
+  }
+  if (file.master != morph.legs[0].name) {
+    r.fail("master", "'" + file.master + "': the controller's master is " + morph.legs[0].name +
+                         " (paper §2.3)");
+  }
+
+  file.model_xml = read_text(file.model, kMaxModelBytes, r, "model");
+  try {
+    make_sim_model(file);
+  } catch (const OptionError& e) {
+    r.fail(e.key(), e.what());
+  } catch (const RuntimeFailure& e) {
+    r.fail("model", e.what());
+  }
+  return file;
+}
+
+}  // namespace multicpg::sim
