@@ -70,6 +70,13 @@ double violation(const CandidateNumbers& n) {
   const double speed = n.intact_mean_speed_m_s();
   v += kCmPerM * std::max(0.0, kPlausibleSpeedMS.lo - speed);
   v += kCmPerM * std::max(0.0, speed - kPlausibleSpeedMS.hi);
+  // Every run the real robot made before learning ended at the right wall; a fitted run cut at
+  // kCalibrationFitSteps has stalled, and its angle so far is not Table 1's.
+  for (const ScenarioNumbers& s : n.fit) {
+    for (const TunnelNumbers& t : s.starts) {
+      if (!t.touched_wall) v += kStalledRunViolation;
+    }
+  }
   return v;
 }
 

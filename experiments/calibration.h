@@ -70,6 +70,11 @@ inline constexpr Limits<long> kCalibrationWarmupLimits{0, 100'000};
 // cross the whole 3 m: 6,000 steps are 3 m at 1.35 cm/s, about the slow wave gait's pace. Beyond
 // these a body stalls or circles (turns of 90° and more), and would cost up to 12,000 steps.
 inline constexpr long kCalibrationFitSteps = 3000;
+// A fitted run that reaches no wall within kCalibrationFitSteps counts this much against the
+// candidate's constraints (as 1° of intact yaw over its bound): the real robot's runs all ended at
+// the wall, so a body that stalls short of it does not fail like the real one, whatever its
+// angle so far (docs/fidelity.md "Calibration").
+inline constexpr double kStalledRunViolation = 1.0;
 inline constexpr long kCalibrationCheckSteps = 6000;
 
 struct CalibrationSpec {
@@ -128,8 +133,9 @@ struct CandidateNumbers {
   double intact_mean_speed_m_s() const;
   // RMS over the scenarios of (mean deviation - the real robot's), degrees.
   double score_deg = 0.0;
-  // How far the constraints are missed: degrees of intact yaw over kIntactStraightDeg plus cm/s
-  // of speed outside kPlausibleSpeedMS; 0 = feasible.
+  // How far the constraints are missed: degrees of intact yaw over kIntactStraightDeg, cm/s of
+  // speed outside kPlausibleSpeedMS and kStalledRunViolation per fitted run short of a wall;
+  // 0 = feasible.
   double violation = 0.0;
   bool feasible() const { return failure.empty() && violation == 0.0; }
 };
