@@ -555,9 +555,6 @@ Calibration run_calibration(const CalibrationSpec& spec, const fs::path& out, in
   for (std::size_t i = 0; i < pts.size(); ++i) {
     design.push_back({design_id(i), "design", pts[i], body_at(spec, pts[i]), {}});
   }
-  if (progress && is_primary_process()) {
-    std::cerr << "calibration: design of " << n_design << " candidates\n";
-  }
   cal.candidates = run_stage(spec, out, "design", std::move(design), "design", jobs, progress,
                              cal.loaded, cal.ran);
 

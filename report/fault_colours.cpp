@@ -11,6 +11,9 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+// Spelled out: clang 14 (the sanitizer job's) does not deduce an aggregate's template arguments.
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
 
 // The segment bodies a fault strikes, as named in the MJCF (robot/mjcf.h): "<leg>_coxa",
 // "_femur", "_tibia", "_foot". A whole leg adds its shoulder, a geom of the trunk.

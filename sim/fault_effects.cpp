@@ -14,6 +14,9 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+// Spelled out: clang 14 (the sanitizer job's) does not deduce an aggregate's template arguments.
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
 
 // The kinds that give a run its own model.
 bool reshapes(const Fault& fault) {

@@ -339,7 +339,8 @@ fti = -0.55
   EXPECT_EQ(body["foot_friction"], 1.5);  // the file's
   EXPECT_EQ(body["trunk_friction"], nlohmann::json::array({1.0, 2.0}));
   EXPECT_EQ(body["leg_postures"], nlohmann::json::parse(R"([{"leg": "R3", "fti": -0.55}])"));
-  EXPECT_EQ(body["disabled_posture"]["ctr"], 0.7);
+  // the real model's calibrated dead-leg command (robot/body_models.cpp)
+  EXPECT_EQ(body["disabled_posture"]["ctr"], 0.8942978086273929);
   EXPECT_EQ(first_line(read_file(dir + "/out/runs.csv"))
                 .rfind("key,scenario,run,seed,sim.body.trunk_friction,", 0),
             0u);
