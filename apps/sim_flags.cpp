@@ -23,7 +23,7 @@ const std::array<NumberFlag, 11> kNumberFlags{{
     {"--lift-body", "lift_body", &BodyFlags::lift_body, &robot::BodyParams::lift_body,
      robot::kLiftBodyLimits,
      "degrees taken off the CTr window and added to the FTi window, so the legs hold the body "
-     "higher (reference §4.4, the real-robot controller: 5; paper-sim 0)"},
+     "higher (docs/robots.md Body parameters, the real-robot controller: 5; paper-sim 0)"},
     {"--total-mass", "total_mass", &BodyFlags::total_mass, &robot::BodyParams::total_mass,
      robot::kTotalMassLimits,
      "hexapod mass in kg; the legs share what the trunk leaves (paper-sim 7.85, real 5.758)"},
@@ -31,10 +31,11 @@ const std::array<NumberFlag, 11> kNumberFlags{{
      robot::kTrunkMassLimits, "hexapod trunk mass in kg (paper-sim 3.0, real 2.2)"},
     {"--foot-friction", "foot_friction", &BodyFlags::foot_friction,
      &robot::BodyParams::foot_friction, robot::kFrictionLimits,
-     "Coulomb friction of the feet and tibiae on the ground (reference §6.1: 2.4)"},
+     "Coulomb friction of the feet and tibiae on the ground (docs/robots.md Contacts and "
+     "materials: 2.4)"},
     {"--trunk-friction", "trunk_friction", &BodyFlags::trunk_friction,
      &robot::BodyParams::trunk_friction, robot::kFrictionLimits,
-     "Coulomb friction of the trunk on the ground (reference §6.1: 2.4)"},
+     "Coulomb friction of the trunk on the ground (docs/robots.md Contacts and materials: 2.4)"},
     {"--slip", "slip", &BodyFlags::slip, &robot::BodyParams::slip, robot::kSlipLimits,
      "tangential slip of every contact in m/s per N (paper-sim: MuJoCo's own at a foot, 0.0051; "
      "lpzrobots and real: 0.01)"},
@@ -48,9 +49,11 @@ const std::array<NumberFlag, 11> kNumberFlags{{
      &robot::BodyParams::rolling_friction, robot::kRollingFrictionLimits,
      "rolling friction of the ground contacts in m (0: none, paper-sim)"},
     {"--servo-torque", "servo_torque", &BodyFlags::servo_torque, &robot::BodyParams::servo_torque,
-     robot::kServoTorqueLimits, "stall torque of every leg servo in N m (reference §6.1: 26.75)"},
+     robot::kServoTorqueLimits,
+     "stall torque of every leg servo in N m (docs/robots.md Servos: 26.75)"},
     {"--servo-speed", "servo_speed", &BodyFlags::servo_speed, &robot::BodyParams::servo_speed,
-     robot::kServoSpeedLimits, "no-load speed of every leg servo in rad/s (reference §6.1: 10.47)"},
+     robot::kServoSpeedLimits,
+     "no-load speed of every leg servo in rad/s (docs/robots.md Servos: 10.47)"},
 }};
 
 constexpr const char* kDisabledPostureFlag = "--disabled-posture";
@@ -203,13 +206,15 @@ void add_body_flags(CLI::App& cmd, BodyFlags& body) {
       "Body", "physical parameters, each over the --model's value (docs/robots.md)");
   group
       ->add_option(kDisabledPostureFlag, body.disabled_posture,
-                   "TC,CTr,FTi commands a disabled leg holds, each in -1..1 (reference §4.4: "
+                   "TC,CTr,FTi commands a disabled leg holds, each in -1..1 (docs/robots.md Body "
+                   "parameters: "
                    "0,0.7,-0.7)")
       ->check(posture_value(/*per_leg=*/false));
   group
       ->add_option(kLegPostureFlag, body.leg_postures,
                    "LEG=TC,CTr,FTi: one disabled leg's own posture, an empty command keeping "
-                   "--disabled-posture's (reference §4.4 real robot: R3=,,-0.55); repeatable")
+                   "--disabled-posture's (docs/robots.md Body parameters, the real robot: "
+                   "R3=,,-0.55); repeatable")
       ->check(posture_value(/*per_leg=*/true));
   for (const NumberFlag& f : kNumberFlags) {
     group->add_option(f.flag, body.*f.given, f.help)->check(in(f.limits));

@@ -1,9 +1,9 @@
 #include "experiments/calibration.h"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -104,9 +104,8 @@ Scenarios table1_scenarios(const robot::Morphology& morph) {
     const std::string name = robot::leg_set_name(morph, disabled);
     const std::string learned = paper::combination_text(r.learned);
     s.fit.push_back({name, disabled, all4, "all 4"});
-    s.paper_periods.push_back({name, disabled,
-                               robot::parse_period_map(morph, learned, learning::kStartPeriod),
-                               learned});
+    s.paper_periods.push_back(
+        {name, disabled, robot::parse_period_map(morph, learned, learning::kStartPeriod), learned});
     const std::vector<std::size_t> mirrored = mirror(morph, disabled);
     s.mirrors.push_back({robot::leg_set_name(morph, mirrored), mirrored, all4, "all 4"});
   }
@@ -121,8 +120,7 @@ TunnelNumbers walk_tunnel(const sim::SimModel& corridor, const Scenario1& sc, lo
   t.start.warmup = warmup;
   t.faults = sim::fail_at(sc.disabled, 0);
   const TunnelRun run = run_tunnel(corridor, t);
-  return {run.deviation_deg, run.passed, run.touched_wall, run.steps, run.forward_m,
-          run.lateral_m};
+  return {run.deviation_deg, run.passed, run.touched_wall, run.steps, run.forward_m, run.lateral_m};
 }
 
 ScenarioNumbers walk_scenario(const sim::SimModel& corridor, const Scenario1& sc,
@@ -371,7 +369,8 @@ CalibrationTarget parse_calibration_target(std::string_view text) {
 
 std::vector<SearchedParam> default_searched_params() {
   return {
-      // A dead leg's joints: any command (reference §4.4 holds 0, 0.7, -0.7; the probe's fit
+      // A dead leg's joints: any command (docs/robots.md Body parameters: the reference holds 0,
+      // 0.7, -0.7; the probe's fit
       // needs the leg raised, CTr 1), but the leg never pressed into the ground (CTr below 0
       // props the body, which the paper's dead legs "touched ... intermittently" do not) nor
       // stretched out past the reference's walking range of FTi (-1..-0.82) by more than 0.82.
@@ -391,8 +390,8 @@ std::vector<SearchedParam> default_searched_params() {
 
 void validate(const CalibrationSpec& spec) {
   if (spec.robot != robot::RobotKind::hexapod) {
-    throw OptionError("robot", "Table 1 is the hexapod's; got the " +
-                                   std::string(robot::to_string(spec.robot)));
+    throw OptionError(
+        "robot", "Table 1 is the hexapod's; got the " + std::string(robot::to_string(spec.robot)));
   }
   within("sim", [&] { sim::validate(spec.sim, spec.robot); });
   if (spec.params.empty()) throw OptionError("params", "search at least one parameter");
@@ -484,8 +483,7 @@ CandidateNumbers measure_candidate(const CalibrationSpec& spec, const robot::Bod
       n.fit.push_back(walk_scenario(corridor, s, spec.warmups, kCalibrationFitSteps));
     }
     for (const Scenario1& s : sc.paper_periods) {
-      n.paper_periods.push_back(
-          walk_scenario(corridor, s, spec.warmups, kCalibrationCheckSteps));
+      n.paper_periods.push_back(walk_scenario(corridor, s, spec.warmups, kCalibrationCheckSteps));
     }
     for (const Scenario1& s : sc.mirrors) {
       n.mirrors.push_back(walk_scenario(corridor, s, spec.warmups, kCalibrationFitSteps));
@@ -533,10 +531,11 @@ nlohmann::json calibration_arguments(const CalibrationSpec& spec) {
           {"compass_steps", {kCompassFirstStep, kCompassLastStep}},
           {"design_draws", kDesignDraws},
           {"tunnel_steps", {{"fit", kCalibrationFitSteps}, {"checks", kCalibrationCheckSteps}}},
-          {"intact", {{"straight_deg", kIntactStraightDeg},
-                      {"settle_steps", kIntactSettleSteps},
-                      {"steps", kIntactSteps},
-                      {"speed_m_s", {kPlausibleSpeedMS.lo, kPlausibleSpeedMS.hi}}}}};
+          {"intact",
+           {{"straight_deg", kIntactStraightDeg},
+            {"settle_steps", kIntactSettleSteps},
+            {"steps", kIntactSteps},
+            {"speed_m_s", {kPlausibleSpeedMS.lo, kPlausibleSpeedMS.hi}}}}};
 }
 
 Calibration run_calibration(const CalibrationSpec& spec, const fs::path& out, int jobs,
@@ -576,8 +575,8 @@ Calibration run_calibration(const CalibrationSpec& spec, const fs::path& out, in
         u[j] = std::clamp(u[j] + sign * step, 0.0, 1.0);
         if (walked.contains(u)) continue;
         walked.insert(u);
-        poll.push_back({fmt::format("r{:02}-{:02}", round + 1, poll.size()), stage, u,
-                        body_at(spec, u), {}});
+        poll.push_back(
+            {fmt::format("r{:02}-{:02}", round + 1, poll.size()), stage, u, body_at(spec, u), {}});
       }
     }
     if (poll.empty()) {
@@ -690,8 +689,8 @@ Table candidates_table(const Calibration& cal) {
   scenario_columns(sc.fit, kFitPrefix);
   scenario_columns(sc.paper_periods, kPaperPrefix);
   scenario_columns(sc.mirrors, kMirrorPrefix);
-  for (const char* h : {kIntactYawColumn, kSpeedColumn, kScoreColumn, "violation", "feasible",
-                        "failure"}) {
+  for (const char* h :
+       {kIntactYawColumn, kSpeedColumn, kScoreColumn, "violation", "feasible", "failure"}) {
     column(h);
   }
   for (const Candidate& c : cal.candidates) {

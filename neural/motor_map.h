@@ -1,4 +1,5 @@
-// Linear maps from pre-motor signals to motor commands m in [-1, 1] (SPEC §4, reference §4.4).
+// Linear maps from pre-motor signals to motor commands m in [-1, 1] (SPEC §4, docs/robots.md Joint
+// angles).
 #pragma once
 
 #include "neural/motor_neurons.h"
@@ -31,7 +32,8 @@ struct LegMotorMap {
 
 // The TC window depends on the robot and the leg design; CTr and FTi windows are shared. A body
 // lift of `lift_body_deg` takes that many degrees off the CTr window and adds them to the FTi
-// window (reference §4.4, the real-robot controller S2's lift_body_up), so the legs stand taller.
+// window (docs/robots.md Body parameters, the real-robot controller S2's lift_body_up), so the legs
+// stand taller.
 LegMotorMap leg_motor_map(robot::RobotKind kind, robot::LegType type, double lift_body_deg = 0.0);
 
 }  // namespace multicpg::neural

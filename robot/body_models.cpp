@@ -35,24 +35,28 @@ constexpr std::string_view kAsPaperSim = "as paper-sim (not searched by the cali
 constexpr std::string_view kCalibrated = "calibrated on Table 1 (docs/fidelity.md Calibration)";
 
 constexpr Source kSources[] = {
-    {"disabled_posture", "TC,CTr,FTi", "reference §4.4 (disabled leg: TC 0, CTr 0.7, FTi -0.7)",
+    {"disabled_posture", "TC,CTr,FTi",
+     "docs/robots.md Body parameters (disabled leg: TC 0, CTr 0.7, FTi -0.7)", kCalibrated},
+    {"leg_postures", "", "docs/robots.md Body parameters (every leg alike)", kAsPaperSim},
+    {"lift_body", "deg",
+     "docs/robots.md Body parameters (the simulation controller S1 does not lift)",
+     "docs/robots.md Body parameters (real-robot controller S2: lift_body_up 5 deg)"},
+    {"total_mass", "kg", "docs/robots.md Geometry and masses (5.758 / 2.2 x 3.0 kg)",
+     "docs/robots.md Geometry and masses (the real robot: 5.758 kg)"},
+    {"trunk_mass", "kg", "docs/robots.md Geometry and masses (3.0 kg)",
+     "docs/robots.md Geometry and masses (the real robot's trunk: 2.2 kg)"},
+    {"foot_friction", "", "docs/robots.md Contacts and materials (roughness 3.0 x 0.8)",
      kCalibrated},
-    {"leg_postures", "", "reference §4.4 (every leg alike)", kAsPaperSim},
-    {"lift_body", "deg", "reference §4.4 (the simulation controller S1 does not lift)",
-     "reference §4.4 (real-robot controller S2: lift_body_up 5 deg)"},
-    {"total_mass", "kg", "reference §6.1 Mass budget (5.758 / 2.2 x 3.0 kg)",
-     "reference §6.1 Mass budget (the real robot: 5.758 kg)"},
-    {"trunk_mass", "kg", "reference §6.1 Trunk (3.0 kg)",
-     "reference §6.1 Mass budget (the real robot's trunk: 2.2 kg)"},
-    {"foot_friction", "", "reference §6.1 Materials (roughness 3.0 x 0.8)", kCalibrated},
-    {"trunk_friction", "", "reference §6.1 Materials (roughness 3.0 x 0.8)", kAsPaperSim},
-    {"slip", "m/s/N", "docs/robots.md Body parameters (MuJoCo's own creep at a foot)",
-     kCalibrated},
-    {"joint_compliance", "rad/Nm", "reference §6.1 (rigid ODE hinges)", kCalibrated},
-    {"torsional_friction", "m", "reference §6.1 Materials (dContactApprox1: none)", kAsPaperSim},
-    {"rolling_friction", "m", "reference §6.1 Materials (dContactApprox1: none)", kAsPaperSim},
-    {"servo_torque", "N m", "reference §6.1 Servos (coxaPower 26.75 N m)", kCalibrated},
-    {"servo_speed", "rad/s", "reference §6.1 Servos (maxVel 10.47 rad/s)", kAsPaperSim},
+    {"trunk_friction", "", "docs/robots.md Contacts and materials (roughness 3.0 x 0.8)",
+     kAsPaperSim},
+    {"slip", "m/s/N", "docs/robots.md Body parameters (MuJoCo's own creep at a foot)", kCalibrated},
+    {"joint_compliance", "rad/Nm", "docs/robots.md (rigid ODE hinges)", kCalibrated},
+    {"torsional_friction", "m", "docs/robots.md Contacts and materials (dContactApprox1: none)",
+     kAsPaperSim},
+    {"rolling_friction", "m", "docs/robots.md Contacts and materials (dContactApprox1: none)",
+     kAsPaperSim},
+    {"servo_torque", "N m", "docs/robots.md Servos (coxaPower 26.75 N m)", kCalibrated},
+    {"servo_speed", "rad/s", "docs/robots.md Servos (maxVel 10.47 rad/s)", kAsPaperSim},
 };
 
 }  // namespace
@@ -94,7 +98,7 @@ BodyParams body_params(BodyModel model) {
 std::string_view describe(BodyModel model) {
   switch (model) {
     case BodyModel::paper_sim:
-      return "the paper's simulator, lpzrobots AMOSII v2 (reference §6.1); the default";
+      return "the paper's simulator, lpzrobots AMOSII v2 (docs/robots.md); the default";
     case BodyModel::real:
       return "the real AMOSII of paper §5: its documented masses and body lift, the rest "
              "calibrated against its Table 1 before learning (docs/fidelity.md)";

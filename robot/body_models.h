@@ -11,7 +11,7 @@
 namespace multicpg::robot {
 
 enum class BodyModel {
-  // The paper's simulator, lpzrobots AMOSII v2 (reference §6.1): the default everywhere.
+  // The paper's simulator, lpzrobots AMOSII v2 (docs/robots.md): the default everywhere.
   paper_sim,
   // The real AMOSII of paper §5. For now its documented values (mass, trunk, S2's body lift,
   // lpzrobots' slip) over paper-sim: the starting point a calibration against Table 1 replaces.

@@ -1,7 +1,7 @@
 // The physical parameters of a robot that differ between the paper's simulator and the real
-// AMOSII (paper §5, §6; reference §4.4, §6.1): how a disabled leg is held, how high the body is
-// carried, masses, friction, slip, joint compliance and the servos' limits. The defaults are
-// the paper's simulator (lpzrobots AMOSII, the "paper-sim" model, robot/body_models.h); every
+// AMOSII (paper §5, §6; docs/robots.md Body parameters): how a disabled leg is held, how high the
+// body is carried, masses, friction, slip, joint compliance and the servos' limits. The defaults
+// are the paper's simulator (lpzrobots AMOSII, the "paper-sim" model, robot/body_models.h); every
 // value has a range a real AMOSII could have, checked by validate(). docs/robots.md "Body
 // parameters" says how each one maps onto MuJoCo.
 #pragma once
@@ -30,7 +30,8 @@ struct LegPosture {
 inline constexpr LegPosture kReferenceDisabledPosture{};
 
 // One leg held in another posture than the others when disabled. An unset joint keeps the
-// all-legs value (the real-robot test of reference §4.4, S2, changes only R3's FTi to -0.55).
+// all-legs value (the real-robot test, S2 (docs/robots.md Body parameters), changes only R3's FTi
+// to -0.55).
 struct LegPostureOverride {
   std::string leg;  // "R3"
   std::optional<double> tc;
@@ -38,7 +39,7 @@ struct LegPostureOverride {
   std::optional<double> fti;
 };
 
-// --- Defaults: the paper's simulator, lpzrobots AMOSII v2 (reference §6.1) ---
+// --- Defaults: the paper's simulator, lpzrobots AMOSII v2 (docs/robots.md) ---
 // Trunk 3.0 kg; each leg 4 x 0.19205 kg (shoulder, coxa, femur, tibia) + 0.040432 kg (foot).
 inline constexpr double kSimTrunkMass = 3.0;        // kg
 inline constexpr double kSimSegmentMass = 0.19205;  // kg
@@ -59,7 +60,7 @@ inline constexpr double kSimServoTorque = 10.0 * (1.962 / (0.035 * 2.2)) * 0.035
 inline constexpr double kSimServoSpeed = 1.7 * 1.961 * std::numbers::pi;                 // rad/s
 
 // --- Ranges a real AMOSII could have (docs/robots.md "Body parameters") ---
-// Total mass: the real robot's 5.758 kg (paper §5 robot, reference §6.1 "Mass budget") without
+// Total mass: the real robot's 5.758 kg (paper §5, docs/robots.md "Geometry and masses") without
 // and with its batteries and sensors, up to past the simulator's 7.85 kg.
 inline constexpr Limits<double> kTotalMassLimits{4.5, 9.0};
 // Trunk: the real 2.2 kg to the simulator's 3.0 kg, with margin either side.
@@ -83,7 +84,7 @@ inline constexpr Limits<double> kRollingFrictionLimits{0.0, 0.005};
 inline constexpr Limits<double> kServoTorqueLimits{2.0, 30.0};
 // Servo no-load speed: 3 rad/s to past the simulator's 10.47 rad/s.
 inline constexpr Limits<double> kServoSpeedLimits{3.0, 12.0};
-// Body lift (reference §4.4, S2: 5 deg) either way.
+// Body lift (docs/robots.md Body parameters, S2: 5 deg) either way.
 inline constexpr Limits<double> kLiftBodyLimits{-10.0, 15.0};
 // Disabled-leg posture: any command a joint takes.
 inline constexpr Limits<double> kPostureLimits{-1.0, 1.0};
@@ -93,7 +94,7 @@ struct BodyParams {
   LegPosture disabled_posture = kReferenceDisabledPosture;
   std::vector<LegPostureOverride> leg_postures;
   // Degrees taken off the CTr window and added to the FTi window of every walking leg, so the
-  // legs push the body up (reference §4.4, S2's lift_body_up: 5).
+  // legs push the body up (docs/robots.md Body parameters, S2's lift_body_up: 5).
   double lift_body = 0.0;
   // Hexapod masses (kg); the legs share total - trunk as the simulator does. Other robots keep
   // the trunk's density and the per-leg mass.
@@ -102,7 +103,7 @@ struct BodyParams {
   // Coulomb friction of the feet (and tibiae) and of the trunk against the ground.
   double foot_friction = kSimFriction;
   double trunk_friction = kSimFriction;
-  // Force-dependent tangential slip of every contact, m/s per N (reference §6.1 "slip").
+  // Force-dependent tangential slip of every contact, m/s per N (docs/robots.md "Slip").
   double slip = kMujocoFootSlip;
   // Compliance of the passive coupling between each servo and its segment, rad per N m.
   double joint_compliance = 0.0;

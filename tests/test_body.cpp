@@ -35,7 +35,7 @@ TEST(BodyParams, DefaultsAreThePaperSimulatorsBody) {
             sim::model_xml(RobotKind::hexapod,
                            with_body(robot::body_params(robot::BodyModel::paper_sim))));
   const sim::SimModel model = sim::make_sim_model(RobotKind::hexapod);
-  EXPECT_NEAR(model_mass(model), 7.8518, 1e-4);  // reference §6.1
+  EXPECT_NEAR(model_mass(model), 7.8518, 1e-4);  // docs/robots.md
   EXPECT_EQ(model.mj->opt.impratio, 1.0);        // MuJoCo's own contact, unchanged
   EXPECT_EQ(model.mj->pair_dim[0], 3);
 }

@@ -203,7 +203,8 @@ TEST(Disabled, LegHoldsItsPostureFromTheStepItIsDisabled) {
 }
 
 // The body's postures (robot/body_params.h): every disabled leg holds the all-legs posture but a
-// leg with its own; the body lift shifts the CTr and FTi windows of reference §4.4 by degrees.
+// leg with its own; the body lift shifts the CTr and FTi windows (docs/robots.md Joint angles) by
+// degrees.
 TEST(Disabled, EachLegHoldsItsBodysPostureAndTheLiftShiftsTheWindows) {
   robot::BodyParams body;
   body.disabled_posture = {0.1, 0.9, -0.5};
