@@ -442,21 +442,31 @@ double mjcf_value(double v) {
   return std::stod(num(v));
 }
 
-std::string tunnel_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file) {
+std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file,
+                            const std::vector<std::string>& servo_joints) {
   Writer w;
-  w.line(0, "<mujoco model=\"multicpg-tunnel\">");
+  w.line(0, "<mujoco model=\"multicpg-robot-file\">");
   w.line(1, "<include file=\"" + model_file + "\"/>");
-  w.line(1, "<asset>");
-  w.line(2, "<material name=\"multicpg_wall\" rgba=\"" + std::string(kWallRgba) + "\"/>");
-  w.line(1, "</asset>");
-  w.line(1, "<worldbody>");
-  // What make_mjcf's "world" class and default give its walls.
-  write_walls(w, scene,
-              "contype=\"" + std::to_string(kWorldClass) + "\" conaffinity=\"" +
-                  std::to_string(kRobotClass) + "\" friction=\"" +
-                  geom_friction(body, body.foot_friction) + "\"",
-              "multicpg_wall");
-  w.line(1, "</worldbody>");
+  if (!servo_joints.empty()) {
+    w.line(1, "<actuator>");
+    for (const std::string& joint : servo_joints) {
+      w.line(2, "<motor name=\"multicpg_" + joint + "\" joint=\"" + joint + "\"/>");
+    }
+    w.line(1, "</actuator>");
+  }
+  if (scene.tunnel) {
+    w.line(1, "<asset>");
+    w.line(2, "<material name=\"multicpg_wall\" rgba=\"" + std::string(kWallRgba) + "\"/>");
+    w.line(1, "</asset>");
+    w.line(1, "<worldbody>");
+    // What make_mjcf's "world" class and default give its walls.
+    write_walls(w, scene,
+                "contype=\"" + std::to_string(kWorldClass) + "\" conaffinity=\"" +
+                    std::to_string(kRobotClass) + "\" friction=\"" +
+                    geom_friction(body, body.foot_friction) + "\"",
+                "multicpg_wall");
+    w.line(1, "</worldbody>");
+  }
   w.line(0, "</mujoco>");
   return w.str();
 }

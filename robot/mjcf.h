@@ -60,9 +60,12 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options);
 // `v` as MuJoCo reads it back from make_mjcf's document (which writes 12 significant digits).
 double mjcf_value(double v);
 
-// The tunnel of `scene` around a robot on flat ground: a document that includes the MJCF file
-// `model_file` and adds the walls, as make_mjcf's tunnel has them for `body` (the compiled walls
-// differ only in their material's name). Collisions must then be "all" (set on the compiled model).
-std::string tunnel_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file);
+// A robot file's world (docs/robots.md "Your robot: robot files"): a document that includes the
+// MJCF file `model_file`, adds a motor on each joint of `servo_joints` (the servo law's, for the
+// joints the model leaves without an actuator) and, with scene.tunnel, the tunnel's walls as
+// make_mjcf has them for `body` (the compiled walls differ only in their material's name;
+// collisions must then be "all", set on the compiled model).
+std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file,
+                            const std::vector<std::string>& servo_joints);
 
 }  // namespace multicpg::robot

@@ -43,6 +43,9 @@ struct RobotFile {
   std::string master;           // the leg whose CPG the others follow (paper §2.3)
   std::vector<LegMap> legs;     // in morphology order (R1..Rn, L1..Ln)
   std::optional<JointMap> backbone;
+  // The joints of the map that the model leaves without an actuator: each gets a motor driven by
+  // the servo law (found by load_robot_file).
+  std::vector<std::string> servo_joints;
   // The built-in robot with the same leg layout: its controller tables, servos and fault
   // geometry serve this robot.
   RobotKind layout;

@@ -101,6 +101,27 @@ robot::RobotKind layout_of(std::size_t legs, const Reader& r) {
                      "layout, SPEC §0)");
 }
 
+// The joints of the map (legs, backbone) that the model has but drives with no actuator.
+std::vector<std::string> unactuated_joints(const robot::RobotFile& file) {
+  const auto m = compile_mjcf(file.model_xml);
+  std::vector<std::string> names;
+  for (const robot::LegMap& leg : file.legs) {
+    for (const robot::JointMap& joint : leg.joints) names.push_back(joint.name);
+  }
+  if (file.backbone) names.push_back(file.backbone->name);
+  std::vector<std::string> unactuated;
+  for (const std::string& name : names) {
+    const int j = mj_name2id(m.get(), mjOBJ_JOINT, name.c_str());
+    if (j < 0) continue;  // make_sim_model names the key
+    bool actuated = false;
+    for (int a = 0; a < m->nu; ++a) {
+      actuated |= m->actuator_trntype[a] == mjTRN_JOINT && m->actuator_trnid[2 * a] == j;
+    }
+    if (!actuated) unactuated.push_back(name);
+  }
+  return unactuated;
+}
+
 }  // namespace
 
 bool is_robot_file(const std::string& robot) {
@@ -167,6 +188,7 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
 
   file.model_xml = read_text(file.model, kMaxModelBytes, r, "model");
   try {
+    file.servo_joints = unactuated_joints(file);
     make_sim_model(file);
   } catch (const OptionError& e) {
     r.fail(e.key(), e.what());

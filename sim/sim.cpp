@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <numbers>
 #include <sstream>
@@ -118,6 +119,25 @@ int id_of(const mjModel* m, mjtObj type, const std::string& name, const std::str
 // window (up to kWindowTolerance, as the MJCF writes angles to 12 digits, robot/mjcf.cpp).
 constexpr double kWindowTolerance = 1e-9;  // rad
 
+// What kind of actuator `a` is (MuJoCo's shortcuts are general actuators with these parameters):
+// a motor (no bias), a position servo (bias -kp * length) or a velocity servo (bias
+// -kv * velocity), each without activation dynamics so that its force follows its control at once.
+Drive actuator_drive(const mjModel* m, int a, const std::string& key) {
+  const char* name = mj_id2name(m, mjOBJ_ACTUATOR, a);
+  const std::string what = fmt::format("actuator '{}'", name != nullptr ? name : std::to_string(a));
+  if (m->actuator_dyntype[a] != mjDYN_NONE || m->actuator_gaintype[a] != mjGAIN_FIXED ||
+      m->actuator_gainprm[mjNGAIN * a] == 0.0 || m->actuator_gear[6 * a] == 0.0) {
+    throw OptionError(key, what + " is not a motor, position or velocity actuator");
+  }
+  if (m->actuator_biastype[a] == mjBIAS_NONE) return Drive::servo;
+  const double* bias = m->actuator_biasprm + mjNBIAS * a;
+  if (m->actuator_biastype[a] == mjBIAS_AFFINE && bias[0] == 0.0) {
+    if (bias[1] != 0.0) return Drive::position;
+    if (bias[2] != 0.0) return Drive::velocity;
+  }
+  throw OptionError(key, what + " is not a motor, position or velocity actuator");
+}
+
 JointSlot joint_slot(const mjModel* m, const robot::JointMap& map, const std::string& key,
                      robot::ServoSpec spec, double gain) {
   const int j = id_of(m, mjOBJ_JOINT, map.name, key + ".joint", "joint");
@@ -146,8 +166,10 @@ JointSlot joint_slot(const mjModel* m, const robot::JointMap& map, const std::st
     if (m->actuator_trntype[a] == mjTRN_JOINT && m->actuator_trnid[2 * a] == j) slot.actuator = a;
   }
   if (slot.actuator < 0) {
-    throw OptionError(key + ".joint", "no actuator drives joint '" + map.name + "' (a <motor>)");
+    throw OptionError(key + ".joint", "no actuator drives joint '" + map.name + "'");
   }
+  slot.drive = actuator_drive(m, slot.actuator, key + ".joint");
+  slot.gear = m->actuator_gear[6 * slot.actuator];
   const int coupling = mj_name2id(m, mjOBJ_JOINT, robot::coupling_joint(map.name).c_str());
   if (coupling >= 0) slot.coupling_qpos = m->jnt_qposadr[coupling];
   spec.gain = gain;
@@ -155,8 +177,9 @@ JointSlot joint_slot(const mjModel* m, const robot::JointMap& map, const std::st
   return slot;
 }
 
-// A leg's foot: its geom, the body it moves with and that body's parent (the tibia), the touch
-// sensor on a site of the foot's body, and the foot's contact pair with the ground.
+// A leg's foot: its geom, the body it moves with and that body's parent (the tibia), and if the
+// model has them the touch sensor on a site of the foot's body and the foot's contact pair with
+// the ground.
 void index_foot(const mjModel* m, const std::string& foot, const std::string& key,
                 LegSlots& slots) {
   slots.foot_geom = id_of(m, mjOBJ_GEOM, foot, key, "geom");
@@ -172,21 +195,16 @@ void index_foot(const mjModel* m, const std::string& foot, const std::string& ke
       slots.touch = m->sensor_adr[s];
     }
   }
-  if (slots.touch < 0) {
-    throw OptionError(key, "no touch sensor on a site of foot '" + foot + "''s body");
-  }
   for (int p = 0; p < m->npair; ++p) {
     if (m->pair_geom2[p] == slots.foot_geom || m->pair_geom1[p] == slots.foot_geom) {
       slots.foot_pair = p;
     }
   }
-  if (slots.foot_pair < 0) {
-    throw OptionError(key, "foot '" + foot + "' has no contact pair with the ground (a <pair>)");
-  }
 }
 
-// The sensordata address of the framequat sensor on the body or site `name`.
-int yaw_sensor(const mjModel* m, const std::string& name) {
+// The yaw frame `name`, a body or a site: the sensordata address of its framequat sensor, or
+// without one the frame itself.
+void index_yaw(const mjModel* m, const std::string& name, SimModel& model) {
   const int body = mj_name2id(m, mjOBJ_BODY, name.c_str());
   const int site = mj_name2id(m, mjOBJ_SITE, name.c_str());
   if (body < 0 && site < 0)
@@ -197,10 +215,67 @@ int yaw_sensor(const mjModel* m, const std::string& name) {
     const int id = m->sensor_objid[s];
     if (((type == mjOBJ_XBODY || type == mjOBJ_BODY) && id == body) ||
         (type == mjOBJ_SITE && id == site)) {
-      return m->sensor_adr[s];
+      model.yaw_sensor = m->sensor_adr[s];
+      return;
     }
   }
-  throw OptionError("yaw", "no framequat sensor on '" + name + "'");
+  model.yaw_body = body;
+  model.yaw_site = body < 0 ? site : -1;
+}
+
+// The lowest point of geom `g` in the pose of `d` (its frame computed): exact for spheres,
+// capsules, cylinders, boxes and ellipsoids; other shapes by their bounding sphere.
+double lowest_point(const mjModel* m, const mjData* d, int g) {
+  const double* size = m->geom_size + 3 * g;
+  const double* r = d->geom_xmat + 9 * g;  // row 2: the world z of the geom's local axes
+  const double z = d->geom_xpos[3 * g + 2];
+  const double az = std::abs(r[8]);
+  switch (m->geom_type[g]) {
+    case mjGEOM_SPHERE:
+      return z - size[0];
+    case mjGEOM_CAPSULE:
+      return z - az * size[1] - size[0];
+    case mjGEOM_CYLINDER:
+      return z - az * size[1] - size[0] * std::sqrt(std::max(0.0, 1.0 - az * az));
+    case mjGEOM_BOX:
+      return z - std::abs(r[6]) * size[0] - std::abs(r[7]) * size[1] - az * size[2];
+    case mjGEOM_ELLIPSOID:
+      return z - std::hypot(r[6] * size[0], r[7] * size[1], r[8] * size[2]);
+    default:
+      return z - m->geom_rbound[g];
+  }
+}
+
+// The height of the ground: the highest plane of the world body (0 without one).
+double ground_height(const mjModel* m) {
+  double height = 0.0;
+  bool found = false;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] != 0 || m->geom_type[g] != mjGEOM_PLANE) continue;
+    const double z = m->geom_pos[3 * g + 2];
+    height = found ? std::max(height, z) : z;
+    found = true;
+  }
+  return height;
+}
+
+// The start pose of a model without a "start" keyframe: its qpos0 with the servo joints at
+// model.start_pose and the trunk lowered or raised until its lowest foot rests on the ground.
+std::vector<double> start_qpos(const SimModel& model) {
+  const mjModel* m = model.mj.get();
+  const std::unique_ptr<mjData, MjDataDeleter> d(mj_makeData(m));
+  if (!d) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
+  for (std::size_t i = 0; i < model.legs.size(); ++i) {
+    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
+      const JointSlot& slot = model.legs[i].joints[j];
+      d->qpos[slot.qpos] = slot.sign * model.start_pose[i][j];
+    }
+  }
+  mj_kinematics(m, d.get());
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const LegSlots& leg : model.legs) lowest = std::min(lowest, lowest_point(m, d.get(), leg.foot_geom));
+  d->qpos[model.root_qpos + 2] += ground_height(m) - lowest;
+  return {d->qpos, d->qpos + m->nq};
 }
 
 // Every name of the leg map found in the model's tables.
@@ -234,18 +309,48 @@ void index_model(SimModel& model, const robot::RobotFile& map, const SimOptions&
     throw OptionError("trunk", "body '" + map.trunk + "' has no free joint (<freejoint/>)");
   }
   model.root_qpos = m->jnt_qposadr[m->body_jntadr[trunk]];
-  model.yaw_sensor = yaw_sensor(m, map.yaw);
-  model.start_key = id_of(m, mjOBJ_KEY, "start", "model", "keyframe");
+  index_yaw(m, map.yaw, model);
+  model.start_key = mj_name2id(m, mjOBJ_KEY, "start");
+  if (model.start_key < 0) model.start_qpos = start_qpos(model);
 }
 
-void drive(const SimModel& model, mjData* d, const JointSlot& slot, double target,
-           const JointCondition& condition = {}) {
-  d->ctrl[slot.actuator] =
-      condition.servo == JointCondition::Servo::driven
-          ? slot.sign * servo_torque(slot.servo, target, slot.sign * d->qpos[slot.qpos],
-                                     slot.sign * d->qvel[slot.dof], model.physics_dt,
-                                     condition.torque_scale)
-          : 0.0;
+// The control that makes the model's own actuator of `slot` exert no force at the joint's
+// present state: its force is gain * ctrl + bias0 + bias1 * length + bias2 * velocity, its length
+// gear * the joint's angle (a joint transmission).
+double zero_force_ctrl(const mjModel* m, const mjData* d, const JointSlot& slot) {
+  const double* bias = m->actuator_biasprm + mjNBIAS * slot.actuator;
+  return -(bias[0] + bias[1] * slot.gear * d->qpos[slot.qpos] +
+           bias[2] * slot.gear * d->qvel[slot.dof]) /
+         m->actuator_gainprm[mjNGAIN * slot.actuator];
+}
+
+void drive(const SimModel& model, const mjModel* m, mjData* d, const JointSlot& slot,
+           double target, const JointCondition& condition = {}) {
+  double& ctrl = d->ctrl[slot.actuator];
+  if (slot.drive == Drive::servo) {
+    ctrl = condition.servo == JointCondition::Servo::driven
+               ? slot.sign *
+                     servo_torque(slot.servo, target, slot.sign * d->qpos[slot.qpos],
+                                  slot.sign * d->qvel[slot.dof], model.physics_dt,
+                                  condition.torque_scale) /
+                     slot.gear
+               : 0.0;
+    return;
+  }
+  // The model's own servo: the target angle, or the servo law's commanded velocity, in the
+  // actuator's units; a weak motor exerts its share of that force, a locked or passive one none.
+  const double idle = zero_force_ctrl(m, d, slot);
+  if (condition.servo != JointCondition::Servo::driven) {
+    ctrl = idle;
+    return;
+  }
+  const double wanted =
+      slot.drive == Drive::position
+          ? slot.gear * slot.sign * target
+          : slot.gear * slot.sign *
+                commanded_velocity(slot.servo.spec, target - slot.sign * d->qpos[slot.qpos],
+                                   model.physics_dt);
+  ctrl = idle + condition.torque_scale * (wanted - idle);
 }
 
 [[noreturn]] void unstable(const SimState& state, double time, const std::string& why) {
@@ -475,9 +580,9 @@ SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options)
     throw OptionError("scene.terrain", "a robot file's model walks on its own flat ground");
   }
   SimModel model = new_model(file.layout, options, file);
-  if (options.scene.tunnel) {
+  if (options.scene.tunnel || !file.servo_joints.empty()) {
     const std::string name = file.model.filename().string();
-    model.xml = robot::tunnel_mjcf(model.body, options.scene, name);
+    model.xml = robot::robot_file_mjcf(model.body, options.scene, name, file.servo_joints);
     model.files = {{name, file.model_xml}};
   } else {
     model.xml = file.model_xml;
@@ -495,7 +600,12 @@ SimState make_sim_state(const SimModel& model, int period) {
   SimState state;
   state.data.reset(mj_makeData(m));
   if (!state.data) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
-  mj_resetDataKeyframe(m, state.data.get(), model.start_key);
+  if (model.start_key >= 0) {
+    mj_resetDataKeyframe(m, state.data.get(), model.start_key);
+  } else {
+    mj_resetData(m, state.data.get());
+    std::copy(model.start_qpos.begin(), model.start_qpos.end(), state.data->qpos);
+  }
   mj_forward(m, state.data.get());  // sensors and contacts of the start pose
   for (int w = 0; w < mjNWARNING; ++w) state.warnings[w] = state.data->warning[w].number;
   state.controller = neural::make_controller_state(model.controller, period);
@@ -534,10 +644,11 @@ void sim_step(const SimModel& model, SimState& state) {
   for (int s = 0; s < model.substeps; ++s) {
     for (std::size_t i = 0; i < model.legs.size(); ++i) {
       for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-        drive(model, d, model.legs[i].joints[j], state.targets[i][j], state.faults.joints[i][j]);
+        drive(model, m, d, model.legs[i].joints[j], state.targets[i][j],
+              state.faults.joints[i][j]);
       }
     }
-    for (const JointSlot& slot : model.backbone) drive(model, d, slot, 0.0);  // held at 0
+    for (const JointSlot& slot : model.backbone) drive(model, m, d, slot, 0.0);  // held at 0
     const double previous_time = d->time;
     const Position previous = trunk_position(model, state);
     try {
@@ -559,7 +670,15 @@ Position trunk_position(const SimModel& model, const SimState& state) {
 
 double trunk_yaw_deg(const SimModel& model, const SimState& state) {
   // Yaw of the front trunk's frame: heading of its x axis in the ground plane.
-  const double* q = state.data->sensordata + model.yaw_sensor;  // w x y z
+  std::array<double, 4> frame{};  // w x y z
+  const double* q = frame.data();
+  if (model.yaw_sensor >= 0) {
+    q = state.data->sensordata + model.yaw_sensor;
+  } else if (model.yaw_body >= 0) {
+    q = state.data->xquat + 4 * model.yaw_body;
+  } else {
+    mju_mat2Quat(frame.data(), state.data->site_xmat + 9 * model.yaw_site);
+  }
   const double yaw =
       std::atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
   return wrap_degrees(yaw * 180.0 / std::numbers::pi);
@@ -572,7 +691,18 @@ double joint_angle(const SimModel& model, const SimState& state, std::size_t leg
 }
 
 double foot_force(const SimModel& model, const SimState& state, std::size_t leg) {
-  return state.data->sensordata[model.legs[leg].touch];
+  const LegSlots& slots = model.legs[leg];
+  if (slots.touch >= 0) return state.data->sensordata[slots.touch];
+  const mjModel* m = physics_model(model, state);
+  const mjData* d = state.data.get();
+  double force = 0.0;
+  for (int c = 0; c < d->ncon; ++c) {
+    if (d->contact[c].geom1 != slots.foot_geom && d->contact[c].geom2 != slots.foot_geom) continue;
+    std::array<mjtNum, 6> f{};  // normal, then tangential, in the contact's frame
+    mj_contactForce(m, d, c, f.data());
+    force += f[0];
+  }
+  return force;
 }
 
 bool foot_contact(const SimModel& model, const SimState& state, std::size_t leg) {

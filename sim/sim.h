@@ -77,6 +77,12 @@ struct SimOptions {
 };
 
 // Where one servo's joint lives in the mjModel.
+// How a servo joint is driven (docs/robots.md "Your robot: robot files"): the servo law's torque
+// through a motor (the built-in robots; a robot file's motors, and the motors added to its joints
+// that have no actuator), or the model's own position or velocity actuator, which is given the
+// servo's target angle or commanded velocity and acts with its own gains.
+enum class Drive { servo, position, velocity };
+
 struct JointSlot {
   int joint = -1;
   int qpos = -1;
@@ -85,6 +91,8 @@ struct JointSlot {
   int coupling_qpos = -1;  // the passive coupling behind the servo, if the joints are compliant
   double sign = 1.0;       // the paper's angle is sign * the joint's (robot::JointMap)
   ServoModel servo{};
+  Drive drive = Drive::servo;
+  double gear = 1.0;  // the actuator's transmission: its length is gear * the joint's angle
 };
 
 struct LegSlots {
@@ -92,7 +100,9 @@ struct LegSlots {
   std::array<JointSlot, robot::kJointsPerLeg> joints;  // TC, CTr, FTi
   // The angles commands -1..1 span (robot::JointMap::window).
   std::array<robot::AngleRange, robot::kJointsPerLeg> windows{};
-  int touch = -1;  // sensordata address of the foot's touch sensor
+  // sensordata address of the foot's touch sensor; -1: the normal forces of the foot geom's
+  // contacts (a robot file whose model has no touch sensor there)
+  int touch = -1;
   // The parts a fault reshapes (sim/fault_effects.h): the tibia's body and capsule, the foot's
   // body and capsule, and the foot's contact pair with the ground.
   int tibia_body = -1;
@@ -123,8 +133,15 @@ struct SimModel {
   std::vector<LegSlots> legs;
   std::vector<JointSlot> backbone;  // the backbone servo, if the robot has one
   int root_qpos = -1;               // free joint: x y z, then quaternion
-  int yaw_sensor = -1;              // sensordata address of the front trunk's quaternion
+  // sensordata address of the yaw frame's quaternion (a framequat sensor); without one (a robot
+  // file), the frame's orientation itself: the body yaw_body or the site yaw_site.
+  int yaw_sensor = -1;
+  int yaw_body = -1;
+  int yaw_site = -1;
+  // The keyframe "start", or without one (a robot file) start_qpos: the start pose with the lowest
+  // foot on the ground (make_sim_model).
   int start_key = -1;
+  std::vector<double> start_qpos{};
   std::vector<robot::ModelFile> files{};  // the files beside the MJCF (robot::scene_files)
 };
 
