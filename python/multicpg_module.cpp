@@ -257,7 +257,7 @@ std::shared_ptr<Robot> robot_from_key(const Json& key, std::string_view name) {
       if (file->record != recorded) {
         value_error(name, "'" + recorded.path + "' has changed since the robot was pickled");
       }
-      return robot_of(file->file.layout, options, std::move(file));
+      return robot_of(file->file.layout, options, file);
     }
     const robot::RobotKind kind =
         named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
@@ -279,7 +279,7 @@ std::shared_ptr<Robot> robot_arg(py::handle robot, std::string_view name = "robo
   const std::string text = robot.cast<std::string>();
   if (sim::is_robot_file(text)) {
     auto file = load_robot_file(text);
-    return robot_of(file->file.layout, sim::SimOptions{}, std::move(file));
+    return robot_of(file->file.layout, sim::SimOptions{}, file);
   }
   const robot::RobotKind kind = named(name, [&] { return robot::parse_robot(text); });
   return robot_of(kind, sim::SimOptions{});
@@ -1301,7 +1301,7 @@ PYBIND11_MODULE(_multicpg, m) {
           "from_file",
           [](const std::string& path) {
             auto file = mp::load_robot_file(path);
-            return mp::robot_of(file->file.layout, {}, std::move(file));
+            return mp::robot_of(file->file.layout, {}, file);
           },
           arg("path"),
           "The robot of a robot file (a TOML leg map over an MJCF, docs/robots.md \"Your robot:\n"
