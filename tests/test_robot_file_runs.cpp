@@ -89,6 +89,12 @@ TEST_F(RobotFileRuns, ABadRobotFileInAnExperimentNamesBothFilesAndTheKey) {
   write(dir_ + "/robots/torso.toml", toml);
   write(dir_ + "/torso.toml", "robot = \"robots/torso.toml\"\n" + kExperiment);
   expect_bad_input("run --check " + dir_ + "/torso.toml", "torso.toml: trunk");
+  const std::string torso = dir_ + "/robots/torso.toml";
+  expect_bad_input("experiment table --runs 1 --out " + dir_ + "/t --robot " + torso,
+                   "torso.toml: trunk");
+  expect_bad_input("landscape --disable L2 --out " + dir_ + "/l --robot " + torso,
+                   "torso.toml: trunk");
+  expect_bad_input("tunnel --disable R1 --scale-tunnel --robot " + torso, "torso.toml: trunk");
   // Its body is its model: the experiment's [sim.body] may not change it.
   write(dir_ + "/heavy.toml",
         "robot = \"robots/quadruped.toml\"\n" + kExperiment + "[sim.body]\ntrunk_mass = 2.0\n");
@@ -137,6 +143,30 @@ TEST_F(RobotFileRuns, TheTunnelScaledToTheRobotIsRecorded) {
   EXPECT_EQ(j.at("tunnel").at("width_m"), 1.2);
   j.erase("tunnel");
   EXPECT_EQ(plain.out, j.dump(2) + "\n");
+
+  // Its legs set 8 cm further out on each side: its feet span 16 cm more, the tunnel grows.
+  std::string xml = read_file(dir_ + "/robots/quadruped.xml");
+  for (const std::string side : {" -0.08 0.0325\">", " 0.08 0.0325\">"}) {
+    const std::string wider = side.substr(0, side.find("08")) + "16 0.0325\">";
+    for (std::size_t at = xml.find(side); at != std::string::npos; at = xml.find(side, at)) {
+      xml.replace(at, side.size(), wider);
+    }
+  }
+  write(dir_ + "/robots/wide.xml", xml);
+  std::string toml = read_file(robot_);
+  toml.replace(toml.find("quadruped.xml"), 13, "wide.xml");
+  write(dir_ + "/robots/wide.toml", toml);
+  const CliResult wide =
+      run_cli("tunnel --disable R1 --max-steps 300 --json --scale-tunnel --robot " + dir_ +
+              "/robots/wide.toml");
+  ASSERT_EQ(wide.exit_code, 0) << wide.err;
+  const json tunnel = json::parse(wide.out).at("tunnel");
+  const double robot = tunnel.at("scale").at("robot_width_m").get<double>();
+  const double layout = tunnel.at("scale").at("layout_width_m").get<double>();
+  EXPECT_NEAR(robot - layout, 0.16, 1e-9);
+  EXPECT_EQ(tunnel.at("scale").at("factor").get<double>(), robot / layout);
+  EXPECT_DOUBLE_EQ(tunnel.at("length_m").get<double>(), 3.0 * robot / layout);
+  EXPECT_DOUBLE_EQ(tunnel.at("width_m").get<double>(), 1.2 * robot / layout);
 }
 
 }  // namespace

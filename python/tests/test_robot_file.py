@@ -67,6 +67,7 @@ def test_the_environment_takes_a_robot_of_a_file(robot_dir):
     robot = multicpg.Robot.from_file(str(robot_dir / "hexapod.toml"))
     env = multicpg.env.CompensationEnv(robot, disable="R1", mode="paper")
     assert env.robot == robot
+    assert multicpg.env.CompensationEnv(robot.file, disable="R1").robot == robot
 
 
 def test_a_pickled_robot_reads_its_file_again_and_refuses_a_changed_one(robot_dir, tmp_path):
