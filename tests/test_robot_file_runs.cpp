@@ -124,6 +124,10 @@ TEST_F(RobotFileRuns, LandscapeWalksItAsTheBuiltInRobot) {
   EXPECT_EQ(summary.at("robot_file").at("name"), "quadruped");
   summary.erase("robot_file");
   EXPECT_EQ(summary, read_json(dir_ + "/builtin/summary.json"));
+  // Resumed with a changed robot file: refused.
+  std::ofstream(robot_, std::ios::app) << "# edited\n";
+  expect_bad_input("landscape --robot " + robot_ + args + dir_ + "/file",
+                   "robot_file.checksum_toml");
 }
 
 TEST_F(RobotFileRuns, TheTunnelScaledToTheRobotIsRecorded) {
