@@ -62,6 +62,12 @@ def test_learn_and_tunnel_equal_the_cli_and_record_the_file(robot_dir):
     py.pop("path")
     assert py == cli and py["robot_file"] == record
 
+    cli = cli_json("tunnel", "--robot", path, "--disable", "R1", "--max-steps", "400",
+                   "--scale-tunnel")
+    py = multicpg.tunnel(robot=robot, disable="R1", max_steps=400, scale_tunnel=True)
+    py.pop("path")
+    assert py == cli and py["tunnel"]["scale"]["factor"] == 1.0
+
 
 def test_the_environment_takes_a_robot_of_a_file(robot_dir):
     robot = multicpg.Robot.from_file(str(robot_dir / "hexapod.toml"))
