@@ -82,6 +82,11 @@ def test_a_pickled_robot_reads_its_file_again_and_refuses_a_changed_one(robot_di
     robot = multicpg.Robot.from_file(str(tmp_path / "hexapod.toml"))
     data = pickle.dumps(robot)
     assert pickle.loads(data) == robot
+    sim = multicpg.Simulation(robot, warmup=0)
+    sim.step(10)
+    other = multicpg.Simulation(robot, warmup=0)
+    other.restore(pickle.loads(pickle.dumps(sim.state())))
+    assert other.step_count == 10 and other.pose() == sim.pose()
     with open(tmp_path / "hexapod.toml", "a") as f:
         f.write("# edited\n")
     with pytest.raises(ValueError, match="has changed"):
