@@ -14,6 +14,7 @@
 #include "experiments/processes.h"
 #include "experiments/results_page.h"
 #include "experiments/scenarios.h"
+#include "sim/robot_file.h"
 
 namespace multicpg::apps {
 namespace {
@@ -85,10 +86,19 @@ void register_experiment(CLI::App& app) {
   auto table = std::make_shared<ExperimentOptions>();
   CLI::App* t = cmd->add_subcommand(
       "table", "every malfunction scenario, N learning runs each (paper Figs. 11, 13)");
-  t->add_option("--robot", table->robot, "hexapod (24 scenarios) or quadruped (4)")
+  t->add_option("--robot", table->robot,
+                "hexapod (24 scenarios), quadruped (4) or a robot file FILE.toml (its layout's "
+                "one- and two-leg losses; docs/robots.md)")
       ->capture_default_str();
   add_common(*t, *table, experiments::kScenarioRuns, true);
   t->callback([table] {
+    if (sim::is_robot_file(table->robot)) {
+      const auto file = experiments::load_run_robot_file(table->robot);
+      experiments::ExperimentSpec spec = spec_of(*table, file->file.layout);
+      spec.robot_file = file;
+      print_table(experiments::run_scenario_table(spec), table->out);
+      return;
+    }
     const robot::RobotKind kind = robot::parse_robot(table->robot);
     if (kind == robot::RobotKind::octopod) {
       throw BadInput(

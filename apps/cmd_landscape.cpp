@@ -19,6 +19,7 @@
 #include "experiments/sweep.h"
 #include "report/landscape_figure.h"
 #include "robot/leg_sets.h"
+#include "sim/robot_file.h"
 
 namespace multicpg::apps {
 namespace {
@@ -51,7 +52,12 @@ std::vector<learning::Periods> read_learned(const std::string& path,
 
 void run(const LandscapeOptions& o) {
   experiments::LandscapeSpec spec;
-  spec.kind = robot::parse_robot(o.robot);
+  if (sim::is_robot_file(o.robot)) {
+    spec.robot_file = experiments::load_run_robot_file(o.robot);
+    spec.kind = spec.robot_file->file.layout;
+  } else {
+    spec.kind = robot::parse_robot(o.robot);
+  }
   const robot::Morphology& morph = robot::morphology(spec.kind);
   if (o.disable.empty()) throw BadInput("--disable: name at least one leg, e.g. R1");
   spec.disabled = parse_leg_flag(morph, o.disable, "--disable");
@@ -106,7 +112,9 @@ void register_landscape(CLI::App& app) {
       "landscape",
       "walk every combination of working-leg periods of one scenario and map which hold "
       "(resumable)");
-  cmd->add_option("--robot", o->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--robot", o->robot,
+                  "hexapod, quadruped, octopod or a robot file FILE.toml (docs/robots.md)")
+      ->capture_default_str();
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2")->required();
   cmd->add_option("--out", o->out, "directory for the runs, CSV, summary and figure (resumes)")
       ->required();

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
@@ -27,6 +28,7 @@ struct TunnelOptions {
   long max_steps = experiments::kTunnelMaxSteps;
   std::string video;  // .mp4 to film the tunnel walk; empty = none
   bool json = false;
+  bool scale_tunnel = false;
 };
 
 void run_tunnel(const TunnelOptions& o, bool periods_given) {
@@ -36,7 +38,15 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (!o.video.empty() && report::film_format(o.video) != report::FilmFormat::video) {
     throw BadInput("--video must name an .mp4 file");
   }
-  const experiments::RunSpec spec = run_spec(o.run, o.learn);
+  experiments::RunSpec spec = run_spec(o.run, o.learn);
+  std::optional<experiments::TunnelScale> scale;
+  if (o.scale_tunnel) {
+    try {
+      scale = experiments::scale_tunnel(spec);
+    } catch (const OptionError& e) {
+      throw BadInput("--scale-tunnel: " + e.key() + " " + e.what());
+    }
+  }
   const robot::Morphology& morph = experiments::morphology(spec);
   const sim::SimModel corridor = experiments::tunnel_model(spec);
   std::optional<report::Film> film;
@@ -45,21 +55,30 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
     report::FilmSpec film_spec;
     film_spec.out = o.video;
     film.emplace(corridor, film_spec);
-    observer.emplace(*film, "tunnel 3.0 m x 1.2 m");
+    std::ostringstream label;
+    label << std::fixed << std::setprecision(1) << "tunnel " << corridor.scene.tunnel_length
+          << " m x " << corridor.scene.tunnel_width << " m";
+    observer.emplace(*film, label.str());
   }
   const experiments::TunnelOutcome out =
       experiments::run_tunnel(spec, corridor, o.max_steps, observer ? &*observer : nullptr);
   if (film) film->finish();
   const experiments::TunnelRun& run = out.run;
   if (o.json) {
-    std::cout << experiments::tunnel_json(spec, out).dump(2) << "\n";
+    std::cout << experiments::tunnel_json(spec, out, scale).dump(2) << "\n";
     return;
   }
   const std::string result =
       run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
   std::cout << std::fixed << std::setprecision(2) << "tunnel " << corridor.scene.tunnel_length
             << " m x " << corridor.scene.tunnel_width << " m, disabled "
-            << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled)) << "\n";
+            << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled));
+  if (scale) {
+    std::cout << " (scaled " << std::setprecision(3) << scale->factor << ": robot "
+              << scale->robot_width_m << " m wide, the " << morph.name << " "
+              << scale->layout_width_m << " m)" << std::setprecision(2);
+  }
+  std::cout << "\n";
   if (const std::string other = experiments::other_faults_text(spec); !other.empty()) {
     std::cout << "faults " << other << "\n";
   }
@@ -96,6 +115,9 @@ void register_tunnel(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
   cmd->add_flag("--json", o->json, "print one JSON object");
+  cmd->add_flag("--scale-tunnel", o->scale_tunnel,
+                "scale the tunnel's length and width by the robot's width (its feet's span at the "
+                "start) over the built-in robot's of its layout");
   add_sim_flags(*cmd, o->run.sim, o->run.body);
   cmd->callback([o, periods] { run_tunnel(*o, periods->count() > 0); });
 }

@@ -14,6 +14,7 @@
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "experiments/run_json.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
@@ -143,7 +144,9 @@ void run_walk(const WalkOptions& o) {
   }
   if (csv) csv->commit();
   if (o.json) {
-    std::cout << to_json(run, result).dump(2) << "\n";
+    nlohmann::json json = to_json(run, result);
+    experiments::record_robot_file(json, run_spec);
+    std::cout << json.dump(2) << "\n";
   } else {
     print_summary(std::cout, run, result);
   }

@@ -116,8 +116,8 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
 experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   experiments::RunSpec spec;
   if (sim::is_robot_file(f.robot)) {
-    spec.robot_file = std::make_shared<const robot::RobotFile>(sim::load_robot_file(f.robot));
-    spec.robot = spec.robot_file->layout;
+    spec.robot_file = experiments::load_run_robot_file(f.robot);
+    spec.robot = spec.robot_file->file.layout;
   } else {
     spec.robot = robot::parse_robot(f.robot);
   }

@@ -12,6 +12,7 @@
 
 #include "common/errors.h"
 #include "experiments/experiment_limits.h"
+#include "sim/robot_file.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -342,6 +343,11 @@ Sweep parse_experiment_text(std::string_view text, const std::string& name, std:
   Lines lines;
   json document = to_json(table, "", 0, lines, name);
   if (runs) document["runs"] = *runs;
+  // A robot file is named relative to the experiment file, as a robot file names its model.
+  if (const auto robot = document.find("robot");
+      robot != document.end() && robot->is_string() && sim::is_robot_file(*robot)) {
+    *robot = (std::filesystem::path(name).parent_path() / robot->get<std::string>()).string();
+  }
   try {
     return resolve_sweep(document, limits);
   } catch (const OptionError& e) {

@@ -13,7 +13,8 @@
 
 namespace multicpg::experiments {
 
-// Reads and resolves FILE; `runs` (if given) replaces the file's runs. Throws BadInput as
+// Reads and resolves FILE; `runs` (if given) replaces the file's runs; `robot = "R.toml"` is a
+// robot file relative to FILE's folder. Throws BadInput as
 // "FILE:LINE: key message" for a bad value, type, key or leg (the line of the key, or of its
 // table when the key is not in the file), "FILE:LINE: message" for TOML syntax (a repeated key
 // among them) or nesting deeper than kMaxExperimentDepth, and "FILE: message" for a file that

@@ -50,16 +50,19 @@ nlohmann::json periods_json(const robot::Morphology& morph,
 
 nlohmann::json arguments(const LandscapeSpec& spec) {
   // The simulation options whole (sim/json.h), so a changed controller parameter is refused on
-  // resume like any other option.
-  return {{"experiment", "landscape"},
-          {"robot", robot::to_string(spec.kind)},
-          {"disabled", robot::leg_set_json(robot::morphology(spec.kind), spec.disabled)},
-          {"period_set", spec.period_set},
-          {"windows", spec.windows},
-          {"window_steps", spec.window_steps},
-          {"threshold_deg", spec.threshold_deg},
-          {"controller_warmup", sim::kControllerWarmup},
-          {"sim", spec.sim}};
+  // resume like any other option; a robot file by its record, so a changed file is too.
+  nlohmann::json args{
+      {"experiment", "landscape"},
+      {"robot", robot::to_string(spec.kind)},
+      {"disabled", robot::leg_set_json(robot::morphology(spec.kind), spec.disabled)},
+      {"period_set", spec.period_set},
+      {"windows", spec.windows},
+      {"window_steps", spec.window_steps},
+      {"threshold_deg", spec.threshold_deg},
+      {"controller_warmup", sim::kControllerWarmup},
+      {"sim", spec.sim}};
+  if (spec.robot_file) args["robot_file"] = spec.robot_file->record;
+  return args;
 }
 
 double share(std::size_t part, std::size_t whole) {
@@ -223,7 +226,9 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
     task.params = {{"periods", combinations[i]}};
     tasks.push_back(std::move(task));
   }
-  const sim::SimModel model = sim::make_sim_model(spec.kind, spec.sim);  // shared, read-only
+  const sim::SimModel model = spec.robot_file  // shared, read-only
+                                  ? sim::make_sim_model(spec.robot_file->file, spec.sim)
+                                  : sim::make_sim_model(spec.kind, spec.sim);
   const RunnerOutcome outcome = run_tasks(
       tasks,
       [&](const Task& task) {

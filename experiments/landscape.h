@@ -6,12 +6,14 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "common/limits.h"
+#include "experiments/run_robot.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "sim/deviation.h"
@@ -28,8 +30,9 @@ inline constexpr std::size_t kLandscapeTop = 10;
 
 // Everything that decides a landscape's results.
 struct LandscapeSpec {
-  robot::RobotKind kind = robot::RobotKind::hexapod;
-  std::vector<std::size_t> disabled;  // sorted, unique, not every leg
+  robot::RobotKind kind = robot::RobotKind::hexapod;  // with a robot file, its layout
+  std::shared_ptr<const RunRobotFile> robot_file;     // null: the built-in robot
+  std::vector<std::size_t> disabled;                  // sorted, unique, not every leg
   std::vector<int> period_set = learning::AnnealingParams{}.period_set;
   int windows = kDefaultLandscapeWindows;
   long window_steps = learning::kDefaultWindowSteps;

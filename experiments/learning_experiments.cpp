@@ -23,6 +23,9 @@ nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind
           {"record", {{"check_windows", spec.check_windows}}}};
 }
 
+// The one- and two-leg losses of a robot file's layout (SPEC §8 scenario tables for any body).
+constexpr std::size_t kRobotFileScenarioLegs = 2;
+
 ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& document) {
   SweepRunOptions options;
   options.out = spec.out;
@@ -36,6 +39,14 @@ ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& doc
 nlohmann::json scenario_table_document(const ExperimentSpec& spec) {
   nlohmann::json doc = preset_document(spec, spec.kind);
   doc["scenarios"] = "paper";
+  if (spec.robot_file) {
+    doc["robot_file"] = spec.robot_file->record;
+    doc["scenarios"] = nlohmann::json::array();
+    for (const Scenario& s :
+         leg_loss_scenarios(robot::morphology(spec.kind), kRobotFileScenarioLegs)) {
+      doc["scenarios"].push_back(s.name);
+    }
+  }
   return doc;
 }
 

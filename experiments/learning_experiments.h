@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string_view>
 #include <vector>
@@ -19,7 +20,8 @@ namespace multicpg::experiments {
 inline constexpr Limits<int> kRunsLimits{1, 100'000};
 
 struct ExperimentSpec {
-  robot::RobotKind kind = robot::RobotKind::hexapod;
+  robot::RobotKind kind = robot::RobotKind::hexapod;  // with a robot file, its layout
+  std::shared_ptr<const RunRobotFile> robot_file;     // null: the built-in robot
   int runs = 10;
   std::uint64_t seed = 1;
   int jobs = 0;  // 0 = every core
@@ -53,12 +55,13 @@ struct ExperimentTable {
 
 // The experiments as documents of experiments/sweep.h (what examples/paper-*.toml hold with
 // the default options), run through run_sweep.
-// Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each.
+// Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each; for a robot
+// file every one- and two-leg loss of its layout (leg_loss_scenarios).
 nlohmann::json scenario_table_document(const ExperimentSpec& spec);
 // R1+R2 disabled on the hexapod, spec.runs runs per beta.
 nlohmann::json beta_study_document(const ExperimentSpec& spec, const std::vector<double>& betas);
 
-// Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each.
+// The scenarios of scenario_table_document, spec.runs runs each.
 ExperimentTable run_scenario_table(const ExperimentSpec& spec);
 
 // R1+R2 disabled on the hexapod, spec.runs runs per beta.

@@ -26,12 +26,17 @@ nlohmann::json learning_record(const learning::CompensationOptions& options,
   return j;
 }
 
+void record_robot_file(nlohmann::json& json, const RunSpec& spec) {
+  if (spec.robot_file) json["robot_file"] = spec.robot_file->record;
+}
+
 nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& result) {
   const robot::Morphology& morph = morphology(spec);
   nlohmann::json json = learning::to_json(result, morph, sim::failing_legs(spec.faults));
   json["robot"] = morph.name;
   json["disable_at"] = spec.faults.empty() ? 0L : spec.faults.front().step;
   json["options"] = learning_record(*spec.learning, spec.faults);
+  record_robot_file(json, spec);
   return json;
 }
 
@@ -44,7 +49,8 @@ std::string other_faults_text(const RunSpec& spec) {
   return out;
 }
 
-nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o) {
+nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o,
+                           const std::optional<TunnelScale>& scale) {
   const robot::Morphology& morph = morphology(spec);
   const TunnelRun& run = o.run;
   nlohmann::json j{{"passed", run.passed},       {"touched_wall", run.touched_wall},
@@ -56,6 +62,12 @@ nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o) {
   if (o.learned) {
     j["learning"] = learning::to_json(*o.learned, morph, o.disabled);
     j["options"] = learning_record(*spec.learning, spec.faults);
+  }
+  record_robot_file(j, spec);
+  if (scale) {
+    j["tunnel"] = {{"length_m", spec.sim.scene.tunnel_length},
+                   {"width_m", spec.sim.scene.tunnel_width},
+                   {"scale", *scale}};
   }
   return j;
 }

@@ -17,13 +17,19 @@ namespace multicpg::experiments {
 nlohmann::json learning_record(const learning::CompensationOptions& options,
                                const sim::FaultTimeline& faults);
 
-// `learn --json`: learning::to_json of the result (failing legs named), with robot,
-// disable_at (the step of the first fault) and the options (learning_record).
+// `learn --json`: learning::to_json of the result (failing legs named), with robot (and
+// robot_file), disable_at (the step of the first fault) and the options (learning_record).
 nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& result);
 
 // `tunnel --json`: passed, touched_wall, steps, forward_m, lateral_m, deviation_deg, periods
-// (leg name -> period) and, after learning, the learning result and its options.
-nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& outcome);
+// (leg name -> period), robot_file with a robot file, the tunnel's size and `scale` when it was
+// scaled to the robot, and, after learning, the learning result and its options.
+nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& outcome,
+                           const std::optional<TunnelScale>& scale = std::nullopt);
+
+// Adds "robot_file" (RobotFileRecord) to `json` when the run walks a robot file; a built-in
+// robot's records stay as they were.
+void record_robot_file(nlohmann::json& json, const RunSpec& spec);
 
 // The run's faults other than whole legs failing, as the CLI writes them ("R2.CTr:locked@0,
 // imu:noise=1@0"); empty when there are none.

@@ -25,7 +25,7 @@ sim::SimModel make_run_model(const RunSpec& spec) {
 }
 
 sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options) {
-  return spec.robot_file ? sim::make_sim_model(*spec.robot_file, options)
+  return spec.robot_file ? sim::make_sim_model(spec.robot_file->file, options)
                          : sim::make_sim_model(spec.robot, options);
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "experiments/run_robot.h"
 #include "learning/compensation.h"
 #include "robot/morphology.h"
 #include "sim/events.h"
@@ -29,7 +30,7 @@ struct RunSpec {
   // The built-in robot, or with a robot file the built-in whose layout it has (its legs,
   // controller, servos and fault geometry; robot/robot_file.h).
   robot::RobotKind robot = robot::RobotKind::hexapod;
-  std::shared_ptr<const robot::RobotFile> robot_file;  // null: the built-in robot
+  std::shared_ptr<const RunRobotFile> robot_file;  // null: the built-in robot
   sim::SimOptions sim;        // time steps, servos, scene, the controller's parameters
   sim::StartSpec start;       // periods and warm-up
   sim::FaultTimeline faults;  // what fails, and recovers, when

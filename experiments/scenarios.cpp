@@ -55,7 +55,7 @@ std::vector<int> mirror_periods(const Morphology& morph, const std::vector<int>&
   return out;
 }
 
-std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_disabled) {
+std::vector<Scenario> leg_loss_scenarios(const Morphology& morph, std::size_t max_disabled) {
   std::vector<Legs> sets;
   const std::size_t n = morph.size();
   for (unsigned mask = 1; mask < (1U << n); ++mask) {
@@ -63,14 +63,21 @@ std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_
     for (std::size_t i = 0; i < n; ++i) {
       if (mask & (1U << i)) legs.push_back(i);
     }
-    if (legs.size() > max_disabled || holds_whole_side(morph, legs)) continue;
-    if (legs.size() == 1 || is_representative(morph, legs)) sets.push_back(legs);
+    if (legs.size() <= max_disabled && !holds_whole_side(morph, legs)) sets.push_back(legs);
   }
   std::sort(sets.begin(), sets.end(), [](const Legs& a, const Legs& b) {
     return a.size() != b.size() ? a.size() < b.size() : a < b;
   });
   std::vector<Scenario> out;
   for (const Legs& legs : sets) out.push_back({robot::leg_set_name(morph, legs), legs});
+  return out;
+}
+
+std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_disabled) {
+  std::vector<Scenario> out = leg_loss_scenarios(morph, max_disabled);
+  std::erase_if(out, [&](const Scenario& s) {
+    return s.disabled.size() > 1 && !is_representative(morph, s.disabled);
+  });
   return out;
 }
 

@@ -33,6 +33,10 @@ std::vector<int> mirror_periods(const robot::Morphology& morph, const std::vecto
 // paper's R1+R3, R1+R3+L2, R1+L2). Ordered by size, then by leg indices.
 std::vector<Scenario> mirror_scenarios(const robot::Morphology& morph, std::size_t max_disabled);
 
+// Every set of 1..max_disabled legs without a whole disabled side, mirror images apart (a robot
+// file's robot need not be symmetric). Ordered by size, then by leg indices.
+std::vector<Scenario> leg_loss_scenarios(const robot::Morphology& morph, std::size_t max_disabled);
+
 // Hexapod: mirror_scenarios(hexapod, 3) = 6 + 9 + 9 = 24. Quadruped: R1, R2, L1, L2 (Fig. 13).
 // Throws BadInput for the octopod, for which the paper reports none.
 std::vector<Scenario> paper_scenarios(robot::RobotKind kind);

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
@@ -22,6 +23,7 @@
 #include "robot/terrain.h"
 #include "sim/fault_spec.h"
 #include "sim/json.h"
+#include "sim/robot_file.h"
 #include "sim/sim.h"
 #include "sim/walk.h"
 
@@ -696,17 +698,85 @@ ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
   write_file_atomic(out / "trials.csv", to_csv(trials_table(sweep, results)));
   json rows = json::array();
   for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
-  const json summary{{"experiment", to_string(table.experiment)},
-                     {"robot", table.robot},
-                     {"arguments", sweep.resolved},
-                     {"rows", rows}};
+  json summary{{"experiment", to_string(table.experiment)},
+               {"robot", table.robot},
+               {"arguments", sweep.resolved},
+               {"rows", rows}};
+  if (sweep.robot_file) summary["robot_file"] = sweep.robot_file->record;
   write_file_atomic(out / "summary.json", summary.dump(kJsonIndent) + "\n");
   return table;
 }
 
-const std::set<std::string> kDocumentKeys{"kind",     "robot", "scenarios", "runs",     "seed",
-                                          "learning", "sim",   "record",    "landscape"};
-const std::set<std::string> kLandscapeKeys{"kind", "robot", "scenarios", "landscape", "sim"};
+const std::set<std::string> kDocumentKeys{"kind",   "robot",    "robot_file", "scenarios",
+                                          "runs",   "seed",     "learning",   "sim",
+                                          "record", "landscape"};
+const std::set<std::string> kLandscapeKeys{"kind",      "robot",     "robot_file",
+                                           "scenarios", "landscape", "sim"};
+
+// The document's robot: a built-in robot by name, or a robot file, as `robot = "FILE.toml"` or as
+// the record a resolved document keeps (`robot` its layout, `robot_file`), whose file must still
+// hold what was recorded.
+struct DocumentRobot {
+  robot::RobotKind kind = robot::RobotKind::hexapod;
+  std::shared_ptr<const RunRobotFile> file;
+};
+
+std::shared_ptr<const RunRobotFile> load_document_robot(const std::string& key,
+                                                        const fs::path& path) {
+  try {
+    // Absolute, so the record finds it again from any working directory (rerun, resume).
+    return load_run_robot_file(fs::absolute(path).lexically_normal());
+  } catch (const BadInput& e) {
+    throw OptionError(key, e.what());
+  }
+}
+
+DocumentRobot resolve_robot(const json& doc) {
+  const json name = doc.value("robot", json("hexapod"));
+  if (!name.is_string()) throw OptionError("robot", "must be a string, got " + name.dump());
+  const std::string text = name.get<std::string>();
+  DocumentRobot robot;
+  if (doc.contains("robot_file")) {
+    RobotFileRecord recorded;
+    try {
+      recorded = doc.at("robot_file").get<RobotFileRecord>();
+    } catch (const json::exception&) {
+      throw OptionError("robot_file",
+                        "must be a table of path, name, checksum_toml and checksum_model");
+    }
+    robot.file = load_document_robot("robot_file.path", recorded.path);
+    const RobotFileRecord& now = robot.file->record;
+    for (const auto& [key, was, is] :
+         {std::tuple{"name", recorded.name, now.name},
+          {"checksum_toml", recorded.checksum_toml, now.checksum_toml},
+          {"checksum_model", recorded.checksum_model, now.checksum_model}}) {
+      if (was != is) {
+        throw OptionError(
+            child("robot_file", key),
+            "'" + now.path + "' has changed since it was recorded (" + was + ", now " + is + ")");
+      }
+    }
+    if (text != robot::to_string(robot.file->file.layout)) {
+      throw OptionError("robot", "must be the robot file's layout, " +
+                                     std::string(robot::to_string(robot.file->file.layout)) +
+                                     ", got " + name.dump());
+    }
+  } else if (sim::is_robot_file(text)) {
+    robot.file = load_document_robot("robot", text);
+  }
+  try {
+    robot.kind = robot.file ? robot.file->file.layout : robot::parse_robot(text);
+  } catch (const BadInput& e) {
+    throw OptionError("robot", e.what());
+  }
+  return robot;
+}
+
+// The resolved document's robot: its layout's name, and the robot file's record.
+void add_robot(json& resolved, const DocumentRobot& robot) {
+  resolved["robot"] = robot::to_string(robot.kind);
+  if (robot.file) resolved["robot_file"] = robot.file->record;
+}
 
 json landscape_json(const LandscapeSpec& spec) {
   return {{"period_set", spec.period_set},
@@ -722,7 +792,8 @@ void refuse_grid(const std::vector<GridAxis>& grid) {
   }
 }
 
-Sweep resolve_landscape(const json& doc, robot::RobotKind kind, const SweepLimits& limits) {
+Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const SweepLimits& limits) {
+  const robot::RobotKind kind = robot.kind;
   for (const auto& item : doc.items()) {
     if (!kLandscapeKeys.count(item.key())) {
       throw OptionError(item.key(), "is not a landscape key (known: " +
@@ -736,6 +807,7 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind, const SweepLimit
   }
   LandscapeSpec spec;
   spec.kind = kind;
+  spec.robot_file = robot.file;
   spec.disabled = scenarios.front().disabled;
   std::vector<GridAxis> grid;
   const json defaults = landscape_json(spec);
@@ -759,6 +831,13 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind, const SweepLimit
     throw OptionError("landscape", e.what());
   }
   check_sim(spec.sim, kind);
+  if (robot.file) {
+    RunSpec walk;
+    walk.robot = kind;
+    walk.robot_file = robot.file;
+    walk.sim = spec.sim;
+    validate(walk);  // its body and ground, as for any run of the robot file
+  }
   const std::size_t working = robot::morphology(kind).size() - spec.disabled.size();
   check_count(multiply(std::vector<std::uint64_t>(working, spec.period_set.size())), "combinations",
               std::to_string(spec.period_set.size()) + " periods ^ " + std::to_string(working) +
@@ -766,11 +845,12 @@ Sweep resolve_landscape(const json& doc, robot::RobotKind kind, const SweepLimit
               limits);
   Sweep sweep;
   sweep.robot = kind;
+  sweep.robot_file = robot.file;
   sweep.resolved = {{"kind", "landscape"},
-                    {"robot", robot::to_string(kind)},
                     {"scenarios", {scenarios.front().name}},
                     {"landscape", landscape_json(spec)},
                     {"sim", sim_doc}};
+  add_robot(sweep.resolved, robot);
   sweep.landscape = spec;
   return sweep;
 }
@@ -799,11 +879,13 @@ std::string to_string(const Shard& shard) {
 }
 
 nlohmann::json landscape_document(const LandscapeSpec& spec) {
-  return {{"kind", "landscape"},
-          {"robot", robot::to_string(spec.kind)},
-          {"scenarios", {robot::leg_set_name(robot::morphology(spec.kind), spec.disabled)}},
-          {"landscape", landscape_json(spec)},
-          {"sim", spec.sim}};
+  json doc{{"kind", "landscape"},
+           {"robot", robot::to_string(spec.kind)},
+           {"scenarios", {robot::leg_set_name(robot::morphology(spec.kind), spec.disabled)}},
+           {"landscape", landscape_json(spec)},
+           {"sim", spec.sim}};
+  if (spec.robot_file) doc["robot_file"] = spec.robot_file->record;
+  return doc;
 }
 
 nlohmann::json learning_document(const learning::CompensationOptions& options, long fail_step) {
@@ -829,16 +911,10 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
   if (kind != "learning" && kind != "landscape") {
     throw OptionError("kind", "must be \"learning\" or \"landscape\", got " + kind_value.dump());
   }
-  const json robot_name = doc.value("robot", json("hexapod"));
-  if (!robot_name.is_string()) {
-    throw OptionError("robot", "must be a string, got " + robot_name.dump());
-  }
-  try {
-    sweep.robot = robot::parse_robot(robot_name.get<std::string>());
-  } catch (const BadInput& e) {
-    throw OptionError("robot", e.what());
-  }
-  if (kind == "landscape") return resolve_landscape(doc, sweep.robot, limits);
+  const DocumentRobot robot = resolve_robot(doc);
+  sweep.robot = robot.kind;
+  sweep.robot_file = robot.file;
+  if (kind == "landscape") return resolve_landscape(doc, robot, limits);
   if (doc.contains("landscape")) {
     throw OptionError("landscape", "belongs to kind = \"landscape\" files");
   }
@@ -885,14 +961,11 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
 
   json resolved_scenarios = json::array();
   for (const ScenarioSpec& s : scenarios) resolved_scenarios.push_back(s.resolved);
-  sweep.resolved = {{"kind", kind},
-                    {"robot", robot::to_string(sweep.robot)},
-                    {"scenarios", resolved_scenarios},
-                    {"runs", runs},
-                    {"seed", seed},
-                    {"learning", learning},
-                    {"sim", sim_doc},
+  sweep.resolved = {{"kind", kind},         {"scenarios", resolved_scenarios},
+                    {"runs", runs},         {"seed", seed},
+                    {"learning", learning}, {"sim", sim_doc},
                     {"record", record}};
+  add_robot(sweep.resolved, robot);
 
   // Tasks: grid point, scenario, run; each checked before any runs.
   const bool beta_table = sweep.grid.size() == 1 &&
@@ -929,6 +1002,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     for (const ScenarioSpec& s : scenarios) {
       RunSpec spec;
       spec.robot = sweep.robot;
+      spec.robot_file = sweep.robot_file;
       spec.sim = sim_options;
       spec.learning = base;
       spec.start = learning_start(base.mode);
@@ -974,6 +1048,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
                        {"learning", options},
                        {"sim", sim_options},
                        {"record", record}};
+        if (sweep.robot_file) task.params["robot_file"] = sweep.robot_file->record;
         sweep.tasks.push_back(std::move(task));
         sweep.specs.push_back(spec);
       }

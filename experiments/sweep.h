@@ -9,7 +9,10 @@
 //              "landscape": every period combination of one leg set walked without learning
 //              (landscape.h), with a "landscape" table (period_set, windows, window_steps,
 //              threshold_deg) and "sim", no grid
-//   robot      "hexapod" (default), "quadruped" or "octopod"
+//   robot      "hexapod" (default), "quadruped", "octopod" or a robot file "FILE.toml" (relative
+//              to the working directory; an experiment file's own folder, experiment_file.h),
+//              resolved as its layout's name and robot_file, its record (run_robot.h), which is
+//              checked against the file when a resolved document is read back
 //   scenarios  "paper" (paper_scenarios), "all" (mirror_scenarios up to 3 legs) or a list of
 //              disabled leg sets ("R1+R3") and fault timelines
 //              ({name, faults = [{step, legs, recover}]})
@@ -63,7 +66,8 @@ struct GridAxis {
 struct Sweep {
   nlohmann::json resolved;  // the document with every default filled in
   robot::RobotKind robot = robot::RobotKind::hexapod;
-  std::vector<GridAxis> grid;  // in key order; the first varies slowest
+  std::shared_ptr<const RunRobotFile> robot_file;  // null: the built-in robot
+  std::vector<GridAxis> grid;                      // in key order; the first varies slowest
   std::vector<Task> tasks;     // every task, grid point by grid point, scenario, run
   std::vector<RunSpec> specs;  // the run of each task, in the same order
   // table: no grid, one row per scenario (Figs. 11, 13); beta: beta alone swept on one

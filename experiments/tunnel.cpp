@@ -4,7 +4,9 @@
 #include <numbers>
 
 #include "common/errors.h"
+#include "common/limits.h"
 #include "experiments/learning_run.h"
+#include "sim/robot_width.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -77,6 +79,18 @@ sim::SimModel tunnel_model(const RunSpec& spec) {
   sim::SimOptions options = spec.sim;
   options.scene.tunnel = true;
   return make_run_model(spec, options);
+}
+
+TunnelScale scale_tunnel(RunSpec& spec) {
+  TunnelScale scale;
+  scale.robot_width_m = sim::foot_span(make_run_model(spec));
+  scale.layout_width_m = sim::foot_span(sim::make_sim_model(spec.robot));
+  scale.factor = scale.robot_width_m / scale.layout_width_m;
+  robot::Scene& scene = spec.sim.scene;
+  scene.tunnel_length *= scale.factor;
+  scene.tunnel_width *= scale.factor;
+  within("sim", [&] { sim::validate(spec.sim); });
+  return scale;
 }
 
 TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, long max_steps,

@@ -3,6 +3,7 @@
 // a wall, or runs out of steps.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
 
@@ -49,6 +50,20 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
 
 // The tunnel's model for a run: spec.sim with the corridor in its scene.
 sim::SimModel tunnel_model(const RunSpec& spec);
+
+// The tunnel scaled to a robot (`tunnel --scale-tunnel`): its length and width times the robot's
+// width (sim::foot_span) over that of the built-in robot of its layout, which the paper's
+// tunnel fits.
+struct TunnelScale {
+  double robot_width_m = 0.0;
+  double layout_width_m = 0.0;
+  double factor = 1.0;  // robot_width_m / layout_width_m
+};
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TunnelScale, robot_width_m, layout_width_m, factor)
+
+// The scale of spec's robot; spec.sim's tunnel length and width scaled by it. Throws OptionError
+// ("sim.scene.tunnel_length", "sim.scene.tunnel_width") when the scaled tunnel leaves its range.
+TunnelScale scale_tunnel(RunSpec& spec);
 
 // Paper §5 for a run description. Without learning options the robot walks spec.start with
 // spec.faults through the tunnel of `corridor` (tunnel_model(spec)). With them it first learns in

@@ -8,11 +8,13 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,7 @@
 #include "sim/checkpoint.h"
 #include "sim/json.h"
 #include "sim/mujoco_guard.h"
+#include "sim/robot_file.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -96,11 +99,13 @@ py::array_t<T> array(const std::vector<T>& values, std::vector<py::ssize_t> shap
 // ---- Robots -------------------------------------------------------------------------------
 
 // A robot and its simulation model, shared read-only by every Simulation of it. Two robots are
-// equal when they are made of the same kind and options (`key`), whichever object holds them.
+// equal when they are made of the same kind, robot file and options (`key`), whichever object
+// holds them.
 struct Robot {
-  robot::RobotKind kind;
+  robot::RobotKind kind;                                  // with a robot file, its layout
+  std::shared_ptr<const experiments::RunRobotFile> file;  // null: the built-in robot
   sim::SimOptions options;
-  std::string key;  // {"robot": name, "sim": options} as JSON text
+  std::string key;  // {"robot": name, "robot_file": its record, "sim": options} as JSON text
   std::shared_ptr<const sim::SimModel> model;
 
   const robot::Morphology& morph() const { return model->controller.morphology; }
@@ -109,13 +114,15 @@ struct Robot {
 // Equal robots share one compiled model while any of them lives (a compile takes tens of ms,
 // and unpickled states each need their robot's).
 std::shared_ptr<const sim::SimModel> shared_model(robot::RobotKind kind,
+                                                  const experiments::RunRobotFile* file,
                                                   const sim::SimOptions& options,
                                                   const std::string& key) {
   static std::mutex mutex;
   static std::map<std::string, std::weak_ptr<const sim::SimModel>> models;
   const std::lock_guard<std::mutex> lock(mutex);
   if (std::shared_ptr<const sim::SimModel> model = models[key].lock()) return model;
-  auto model = std::make_shared<const sim::SimModel>(sim::make_sim_model(kind, options));
+  auto model = std::make_shared<const sim::SimModel>(file ? sim::make_sim_model(file->file, options)
+                                                          : sim::make_sim_model(kind, options));
   models[key] = model;
   return model;
 }
@@ -177,25 +184,45 @@ void set_body(sim::SimOptions& options, py::handle model, py::handle body) {
   options.body = params.get<robot::BodyParams>();
 }
 
-std::shared_ptr<Robot> robot_of(robot::RobotKind kind, const sim::SimOptions& options) {
+std::shared_ptr<Robot> robot_of(robot::RobotKind kind, const sim::SimOptions& options,
+                                std::shared_ptr<const experiments::RunRobotFile> file = nullptr) {
   try {
     sim::validate(options, kind);
+    if (file) {
+      experiments::RunSpec walk;
+      walk.robot = kind;
+      walk.robot_file = file;
+      walk.sim = options;
+      experiments::validate(walk);
+    }
   } catch (const OptionError& e) {
-    value_error(sim_argument(e.key()), e.what());
+    value_error(sim_argument(e.key().starts_with("sim.") ? e.key().substr(4) : e.key()), e.what());
   }
   auto r = std::make_shared<Robot>();
   r->kind = kind;
+  r->file = std::move(file);
   r->options = options;
-  r->key = Json{{"robot", std::string(robot::to_string(kind))}, {"sim", options}}.dump();
-  r->model = shared_model(kind, options, r->key);
+  Json key{{"robot", std::string(robot::to_string(kind))}, {"sim", options}};
+  if (r->file) key["robot_file"] = r->file->record;
+  r->key = key.dump();
+  r->model = shared_model(kind, r->file.get(), options, r->key);
   return r;
 }
 
-std::shared_ptr<Robot> make_robot(py::handle name, py::handle tunnel, py::handle control_dt,
-                                  py::handle physics_dt, py::handle servo_gain, py::handle terrain,
-                                  py::handle model, py::handle body) {
-  const std::string robot_name = text(name, "name");
-  const robot::RobotKind kind = named("name", [&] { return robot::parse_robot(robot_name); });
+// Robot.from_file: a robot file (docs/robots.md "Your robot: robot files"); a bad one is a
+// ValueError with the CLI's one line (the file, the key, what is wrong).
+std::shared_ptr<const experiments::RunRobotFile> load_robot_file(const std::string& path) {
+  try {
+    return experiments::load_run_robot_file(path);
+  } catch (const BadInput& e) {
+    throw py::value_error(e.what());
+  }
+}
+
+// The simulation options of Robot's keyword arguments.
+sim::SimOptions sim_options(py::handle tunnel, py::handle control_dt, py::handle physics_dt,
+                            py::handle servo_gain, py::handle terrain, py::handle model,
+                            py::handle body) {
   sim::SimOptions options;
   options.scene.tunnel = flag(tunnel, "tunnel");
   options.scene.terrain = terrain_arg(terrain, "terrain");
@@ -207,15 +234,34 @@ std::shared_ptr<Robot> make_robot(py::handle name, py::handle tunnel, py::handle
   if (!servo_gain.is_none()) {
     options.servo_gain = real(servo_gain, "servo_gain", sim::kServoGainLimits);
   }
-  return robot_of(kind, options);
+  return options;
+}
+
+std::shared_ptr<Robot> make_robot(py::handle name, py::handle tunnel, py::handle control_dt,
+                                  py::handle physics_dt, py::handle servo_gain, py::handle terrain,
+                                  py::handle model, py::handle body) {
+  const std::string robot_name = text(name, "name");
+  const robot::RobotKind kind = named("name", [&] { return robot::parse_robot(robot_name); });
+  return robot_of(kind,
+                  sim_options(tunnel, control_dt, physics_dt, servo_gain, terrain, model, body));
 }
 
 // A robot read back from its key (a pickled Robot or State).
 std::shared_ptr<Robot> robot_from_key(const Json& key, std::string_view name) {
   try {
+    const sim::SimOptions options = key.at("sim").get<sim::SimOptions>();
+    if (key.contains("robot_file")) {
+      // The file must still hold the robot that was pickled.
+      const auto recorded = key.at("robot_file").get<experiments::RobotFileRecord>();
+      auto file = load_robot_file(recorded.path);
+      if (file->record != recorded) {
+        value_error(name, "'" + recorded.path + "' has changed since the robot was pickled");
+      }
+      return robot_of(file->file.layout, options, file);
+    }
     const robot::RobotKind kind =
         named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
-    return robot_of(kind, key.at("sim").get<sim::SimOptions>());
+    return robot_of(kind, options);
   } catch (const Json::exception& e) {
     value_error(name, std::string("not a multicpg robot: ") + e.what());
   }
@@ -225,15 +271,23 @@ std::shared_ptr<Robot> robot_from_key(const Json& key, std::string_view name) {
 std::shared_ptr<Robot> robot_arg(py::handle robot, std::string_view name = "robot") {
   if (py::isinstance<Robot>(robot)) return robot.cast<std::shared_ptr<Robot>>();
   if (!PyUnicode_Check(robot.ptr())) {
-    type_error(name, "a multicpg.Robot or a robot name (hexapod, quadruped, octopod)", robot);
+    type_error(name,
+               "a multicpg.Robot, a robot name (hexapod, quadruped, octopod) or a robot file "
+               "FILE.toml",
+               robot);
   }
-  const robot::RobotKind kind =
-      named(name, [&] { return robot::parse_robot(robot.cast<std::string>()); });
+  const std::string text = robot.cast<std::string>();
+  if (sim::is_robot_file(text)) {
+    auto file = load_robot_file(text);
+    return robot_of(file->file.layout, sim::SimOptions{}, file);
+  }
+  const robot::RobotKind kind = named(name, [&] { return robot::parse_robot(text); });
   return robot_of(kind, sim::SimOptions{});
 }
 
 std::string robot_repr(const Robot& r) {
   const sim::SimOptions defaults;
+  if (r.file) return "multicpg.Robot.from_file('" + r.file->record.path + "')";
   std::string out = "multicpg.Robot('" + r.morph().name + "'";
   if (r.options.scene.tunnel) out += ", tunnel=True";
   if (r.options.control_dt != defaults.control_dt) {
@@ -294,6 +348,7 @@ experiments::RunSpec run_spec(const Robot& robot, sim::StartSpec start, sim::Fau
                               std::optional<learning::CompensationOptions> learning) {
   experiments::RunSpec spec;
   spec.robot = robot.kind;
+  spec.robot_file = robot.file;
   spec.sim = robot.options;
   spec.faults = std::move(faults);
   if (learning) {
@@ -847,7 +902,7 @@ py::dict learn(py::handle robot_value, const FaultArgs& fault_args, const Learni
 }
 
 py::dict tunnel(const experiments::RunSpec& spec, long max_steps, const std::string& video,
-                const py::object& observer) {
+                const py::object& observer, const std::optional<experiments::TunnelScale>& scale) {
   const robot::Morphology& morph = experiments::morphology(spec);
   TrialCallback callback(observer, morph);
   experiments::TunnelOutcome out;
@@ -860,13 +915,16 @@ py::dict tunnel(const experiments::RunSpec& spec, long max_steps, const std::str
       report::FilmSpec film_spec;
       film_spec.out = video;
       film.emplace(corridor, film_spec);
-      film_observer.emplace(*film, "tunnel 3.0 m x 1.2 m");
+      std::ostringstream label;
+      label << std::fixed << std::setprecision(1) << "tunnel " << corridor.scene.tunnel_length
+            << " m x " << corridor.scene.tunnel_width << " m";
+      film_observer.emplace(*film, label.str());
     }
     out = experiments::run_tunnel(spec, corridor, max_steps,
                                   film_observer ? &*film_observer : nullptr, &callback);
     if (film) film->finish();
   }
-  py::dict result = to_python(experiments::tunnel_json(spec, out));
+  py::dict result = to_python(experiments::tunnel_json(spec, out, scale));
   if (out.learned) result["trace_arrays"] = trace_arrays(out.learned->trace, morph.size());
   result["path"] = path_arrays(out.run.record);
   return result;
@@ -1239,6 +1297,24 @@ PYBIND11_MODULE(_multicpg, m) {
            arg("model") =
                std::string(multicpg::robot::to_string(multicpg::robot::kDefaultBodyModel)),
            arg("body") = py::none())
+      .def_static(
+          "from_file",
+          [](const std::string& path) {
+            auto file = mp::load_robot_file(path);
+            return mp::robot_of(file->file.layout, {}, file);
+          },
+          arg("path"),
+          "The robot of a robot file (a TOML leg map over an MJCF, docs/robots.md \"Your robot:\n"
+          "robot files\"), usable wherever a Robot is; its name is its layout's. Raises "
+          "ValueError\n"
+          "(one line: the file, the key, what is wrong) for a bad file.")
+      .def_property_readonly(
+          "file",
+          [](const mp::Robot& r) -> py::object {
+            if (!r.file) return py::none();
+            return py::str(r.file->record.path);
+          },
+          "the robot file it was read from, or None for a built-in robot")
       .def_property_readonly(
           "name", [](const mp::Robot& r) { return r.morph().name; }, "robot name")
       .def_property_readonly(
@@ -1529,23 +1605,27 @@ PYBIND11_MODULE(_multicpg, m) {
 
   m.def(
       "tunnel",
-      [learning_args](py::object disable, py::object periods, py::object learn,
-                      py::object max_steps, py::object video, py::object mode, py::object steering,
-                      py::object hold_windows, py::object monitor_windows,
+      [learning_args](py::object robot_value, py::object disable, py::object periods,
+                      py::object learn, py::object max_steps, py::object video, py::object mode,
+                      py::object steering, py::object hold_windows, py::object monitor_windows,
                       py::object period_learning, py::object beta, py::object threshold,
                       py::object window, py::object settle, py::object max_trials, py::object seed,
                       py::object control_dt, py::object physics_dt, py::object servo_gain,
                       py::object observer, py::object faults, py::object terrain, py::object model,
-                      py::object body) {
+                      py::object body, py::object scale_tunnel) {
         const bool learns = mp::flag(learn, "learn");
         if (learns && !periods.is_none()) {
           throw py::value_error(
               "periods: periods and learn=True exclude each other: learning "
               "finds the periods");
         }
+        // The robot's kind or file; the tunnel's arguments set its simulation.
+        const std::shared_ptr<mp::Robot> base = mp::robot_arg(robot_value);
         const std::shared_ptr<mp::Robot> robot =
-            mp::make_robot(py::str("hexapod"), py::bool_(false), control_dt, physics_dt, servo_gain,
-                           terrain, model, body);
+            mp::robot_of(base->kind,
+                         mp::sim_options(py::bool_(false), control_dt, physics_dt, servo_gain,
+                                         terrain, model, body),
+                         base->file);
         const multicpg::robot::Morphology& morph = robot->morph();
         const long steps = mp::whole(max_steps, "max_steps", sim::kRunStepsLimits);
         std::string film;
@@ -1565,9 +1645,19 @@ PYBIND11_MODULE(_multicpg, m) {
         const sim::FaultTimeline timeline =
             mp::fault_timeline(morph, mp::FaultArgs{disable, py::int_(0), faults, py::none()});
         const py::object callback = mp::callable_or_none(observer, "observer");
-        return mp::tunnel(mp::run_spec(*robot, start, timeline, options), steps, film, callback);
+        multicpg::experiments::RunSpec spec = mp::run_spec(*robot, start, timeline, options);
+        std::optional<multicpg::experiments::TunnelScale> scale;
+        if (mp::flag(scale_tunnel, "scale_tunnel")) {
+          try {
+            scale = multicpg::experiments::scale_tunnel(spec);
+          } catch (const multicpg::OptionError& e) {
+            mp::value_error("scale_tunnel", e.key() + " " + e.what());
+          }
+        }
+        return mp::tunnel(spec, steps, film, callback, scale);
       },
-      py::kw_only(), arg("disable") = py::none(), arg("periods") = py::none(), arg("learn") = false,
+      py::kw_only(), arg("robot") = "hexapod", arg("disable") = py::none(),
+      arg("periods") = py::none(), arg("learn") = false,
       arg("max_steps") = multicpg::experiments::kTunnelMaxSteps, arg("video") = py::none(),
       arg("mode") = "robust", arg("steering") = "reflex",
       arg("hold_windows") = learning::kDefaultHoldWindows,
@@ -1579,14 +1669,17 @@ PYBIND11_MODULE(_multicpg, m) {
       arg("servo_gain") = py::none(), arg("observer") = py::none(), arg("faults") = py::none(),
       arg("terrain") = "flat",
       arg("model") = std::string(multicpg::robot::to_string(multicpg::robot::kDefaultBodyModel)),
-      arg("body") = py::none(),
-      "`multicpg tunnel`: the hexapod walks the 3.0 m x 1.2 m corridor of paper §5 with the\n"
+      arg("body") = py::none(), arg("scale_tunnel") = false,
+      "`multicpg tunnel`: the robot (a Robot's kind or robot file, a name or FILE.toml; its\n"
+      "simulation set by the arguments here) walks the 3.0 m x 1.2 m corridor of paper §5 with "
+      "the\n"
       "`disable`d legs and other `faults` (multicpg.Fault) from the start, on `terrain`, with\n"
       "the body `model` ('paper-sim' or 'real') and `body` parameters as for Robot, and\n"
       "given periods (as for Simulation; None: every leg 4), or (learn=True) after learning in\n"
       "the open field (learning arguments as for learn()). max_steps: 1..100000000. Returns the\n"
       "dict of `tunnel --json` plus path (time, x, y, yaw_deg) and, after learning,\n"
-      "trace_arrays. video='run.mp4' films the tunnel walk; observer as for learn().");
+      "trace_arrays. video='run.mp4' films the tunnel walk; observer as for learn().\n"
+      "scale_tunnel=True scales the tunnel to the robot's width (`tunnel --scale-tunnel`).");
 
   py::class_<mp::Annealer>(
       m, "Annealer",

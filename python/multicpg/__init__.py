@@ -5,7 +5,7 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 
 - ``Robot("hexapod" | "quadruped" | "octopod", terrain=..., model="paper-sim" | "real",
   body={...})``: legs, joints, ``mjcf()``; equal robots are interchangeable (``==``, ``hash``,
-  pickle).
+  pickle). ``Robot.from_file("R.toml")``: the robot of a robot file (docs/robots.md).
 - ``Terrain.flat()``, ``.slope(deg)``, ``.rough(height_m, seed)``, ``.steps(height_m, depth_m)``:
   the ground (the CLI's ``"slope:5"`` text is accepted too).
 - ``Simulation(robot, periods=..., disable=..., faults=[...], ...)``: ``step(n)``,

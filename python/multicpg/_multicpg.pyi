@@ -97,6 +97,12 @@ class Robot:
                  physics_dt: Optional[float] = None, servo_gain: Optional[float] = None,
                  terrain: Union["Terrain", str] = "flat", model: str = "paper-sim",
                  body: Optional[Mapping[str, Any]] = None) -> None: ...
+    @staticmethod
+    def from_file(path: str) -> "Robot":
+        """The robot of a robot file (docs/robots.md); ValueError for a bad file."""
+    @property
+    def file(self) -> Optional[str]:
+        """The robot file it was read from, or None for a built-in robot."""
     @property
     def name(self) -> str:
         """Robot name."""
@@ -230,7 +236,7 @@ def learn(robot: Union[Robot, str] = "hexapod", *, disable: Legs = None, disable
           seed: int = 1, record: bool = False, observer: Observer = None) -> Dict[str, Any]:
     """`multicpg learn`: the dict of `learn --json` plus trace_arrays (and path)."""
 
-def tunnel(*, disable: Legs = None, periods: Optional[Periods] = None, learn: bool = False,
+def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, periods: Optional[Periods] = None, learn: bool = False,
            max_steps: int = 12000, video: Optional[PathLike] = None, mode: str = "robust",
            steering: str = "reflex", hold_windows: int = 3, monitor_windows: int = 6,
            period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
@@ -238,7 +244,8 @@ def tunnel(*, disable: Legs = None, periods: Optional[Periods] = None, learn: bo
            seed: int = 1, control_dt: float = 0.037, physics_dt: Optional[float] = None,
            servo_gain: Optional[float] = None, observer: Observer = None, faults: Faults = None,
            terrain: Union["Terrain", str] = "flat", model: str = "paper-sim",
-           body: Optional[Mapping[str, Any]] = None) -> Dict[str, Any]:
+           body: Optional[Mapping[str, Any]] = None,
+           scale_tunnel: bool = False) -> Dict[str, Any]:
     """`multicpg tunnel`: the dict of `tunnel --json` plus path (and trace_arrays)."""
 
 class Annealer:

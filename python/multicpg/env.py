@@ -118,7 +118,12 @@ class CompensationEnv(_EnvBase):
             raise ValueError(f"mode: expected one of {MODES}, got {mode!r}")
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode: expected None or 'rgb_array', got {render_mode!r}")
-        self.robot = robot if isinstance(robot, Robot) else Robot(robot)
+        if isinstance(robot, Robot):
+            self.robot = robot
+        else:
+            # A robot name, or a robot file as every robot argument takes it.
+            is_file = isinstance(robot, str) and robot.endswith(".toml")
+            self.robot = Robot.from_file(robot) if is_file else Robot(robot)
         self.mode = mode
         # A Simulation checks every argument (names, ranges) before anything walks.
         probe = Simulation(self.robot, disable=disable, disable_at=disable_at, warmup=0,
