@@ -15,47 +15,77 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
-// The segment bodies a fault strikes, as named in the MJCF (robot/mjcf.h): "<leg>_coxa",
-// "_femur", "_tibia", "_foot". A whole leg adds its shoulder, a geom of the trunk.
+// The segments a fault strikes, found through the joints that move them (robot files name their
+// bodies as they like): a joint's segment is its body, the foot the foot geom's body. A whole leg
+// is every body from its first joint down, and its shoulder, a geom of the trunk (robot/mjcf.h).
 struct Parts {
-  std::vector<std::string> bodies;
-  bool shoulder = false;
+  std::vector<robot::Joint> segments;  // the bodies of these joints
+  bool foot = false;
+  bool whole_leg = false;
 };
 
 Parts parts_of(const sim::Fault& fault) {
-  static const std::array<const char*, robot::kJointsPerLeg> kSegmentOf{"_coxa", "_femur",
-                                                                        "_tibia"};
-  const auto whole_leg = [] { return Parts{{"_coxa", "_femur", "_tibia", "_foot"}, true}; };
-  return std::visit(
-      Overloaded{
-          [&](const sim::LegFault&) { return whole_leg(); },
-          [&](const sim::WeakMotor&) {
-            return fault.joint ? Parts{{kSegmentOf[static_cast<std::size_t>(*fault.joint)]}}
-                               : whole_leg();
-          },
-          [&](const sim::ShortTibia&) { return Parts{{"_tibia", "_foot"}}; },
-          [&](const sim::SlipperyFoot&) { return Parts{{"_foot"}}; },
-          [&](const sim::ImuDrift&) { return Parts{}; },
-          [&](const sim::ImuNoise&) { return Parts{}; },
-          [&](const auto&) {  // joint kinds: the segment the joint moves
-            return fault.joint ? Parts{{kSegmentOf[static_cast<std::size_t>(*fault.joint)]}}
-                               : whole_leg();
-          },
-      },
-      fault.kind);
+  const Parts whole{{}, false, true};
+  const auto joint_or_leg = [&] {
+    return fault.joint ? Parts{{*fault.joint}, false, false} : whole;
+  };
+  return std::visit(Overloaded{
+                        [&](const sim::LegFault&) { return whole; },
+                        [&](const sim::ShortTibia&) {
+                          return Parts{{robot::Joint::FTi}, true, false};
+                        },
+                        [&](const sim::SlipperyFoot&) {
+                          return Parts{{}, true, false};
+                        },
+                        [&](const sim::ImuDrift&) { return Parts{}; },
+                        [&](const sim::ImuNoise&) { return Parts{}; },
+                        [&](const auto&) { return joint_or_leg(); },  // the segment it moves
+                    },
+                    fault.kind);
+}
+
+// Whether `body` is `root` or below it.
+bool within(const mjModel* m, int body, int root) {
+  for (; body > 0; body = m->body_parentid[body]) {
+    if (body == root) return true;
+  }
+  return false;
+}
+
+// The leg's topmost segment: the body of the joint nearest the trunk.
+int leg_root(const mjModel* m, const sim::LegSlots& slots) {
+  int root = m->jnt_bodyid[slots.joints[0].joint];
+  for (const sim::JointSlot& j : slots.joints) {
+    if (within(m, root, m->jnt_bodyid[j.joint])) root = m->jnt_bodyid[j.joint];
+  }
+  return root;
 }
 
 }  // namespace
 
 Rgba kind_colour(const sim::Malfunction& kind) {
   return std::visit(Overloaded{
-                        [](const sim::LegFault&) { return Rgba{0.85F, 0.08F, 0.08F, 1.0F}; },
-                        [](const sim::LockedJoint&) { return Rgba{0.95F, 0.55F, 0.05F, 1.0F}; },
-                        [](const sim::PassiveJoint&) { return Rgba{0.95F, 0.9F, 0.1F, 1.0F}; },
-                        [](const sim::WeakMotor&) { return Rgba{0.6F, 0.25F, 0.85F, 1.0F}; },
-                        [](const sim::ShortTibia&) { return Rgba{0.15F, 0.35F, 0.95F, 1.0F}; },
-                        [](const sim::SlipperyFoot&) { return Rgba{0.1F, 0.85F, 0.9F, 1.0F}; },
-                        [](const auto&) { return Rgba{0.5F, 0.5F, 0.5F, 1.0F}; },
+                        [](const sim::LegFault&) {
+                          return Rgba{0.85F, 0.08F, 0.08F, 1.0F};
+                        },
+                        [](const sim::LockedJoint&) {
+                          return Rgba{0.95F, 0.55F, 0.05F, 1.0F};
+                        },
+                        [](const sim::PassiveJoint&) {
+                          return Rgba{0.95F, 0.9F, 0.1F, 1.0F};
+                        },
+                        [](const sim::WeakMotor&) {
+                          return Rgba{0.6F, 0.25F, 0.85F, 1.0F};
+                        },
+                        [](const sim::ShortTibia&) {
+                          return Rgba{0.15F, 0.35F, 0.95F, 1.0F};
+                        },
+                        [](const sim::SlipperyFoot&) {
+                          return Rgba{0.1F, 0.85F, 0.9F, 1.0F};
+                        },
+                        [](const auto&) {
+                          return Rgba{0.5F, 0.5F, 0.5F, 1.0F};
+                        },
                     },
                     kind);
 }
@@ -68,19 +98,22 @@ Colouring fault_colours(const sim::SimModel& model, const sim::FaultTimeline& in
     const Parts parts = parts_of(f);
     const Rgba rgba = kind_colour(f.kind);
     for (std::size_t leg : f.legs) {
-      const std::string& name = morph.legs[leg].name;
+      const sim::LegSlots& slots = model.legs[leg];
+      const int root = leg_root(m, slots);
       std::vector<int> bodies;
-      for (const std::string& part : parts.bodies) {
-        const int body = mj_name2id(m, mjOBJ_BODY, (name + part).c_str());
-        if (body >= 0) bodies.push_back(body);
+      for (robot::Joint joint : parts.segments) {
+        bodies.push_back(m->jnt_bodyid[slots.joints[static_cast<std::size_t>(joint)].joint]);
       }
+      if (parts.foot) bodies.push_back(slots.foot_body);
       for (int g = 0; g < m->ngeom; ++g) {
-        if (std::find(bodies.begin(), bodies.end(), m->geom_bodyid[g]) != bodies.end()) {
+        const int body = m->geom_bodyid[g];
+        if ((parts.whole_leg && within(m, body, root)) ||
+            std::find(bodies.begin(), bodies.end(), body) != bodies.end()) {
           out.push_back({g, rgba});
         }
       }
-      const int shoulder = mj_name2id(m, mjOBJ_GEOM, (name + "_shoulder").c_str());
-      if (parts.shoulder && shoulder >= 0) out.push_back({shoulder, rgba});
+      const int shoulder = mj_name2id(m, mjOBJ_GEOM, (morph.legs[leg].name + "_shoulder").c_str());
+      if (parts.whole_leg && shoulder >= 0) out.push_back({shoulder, rgba});
     }
   }
   return out;

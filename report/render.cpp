@@ -31,14 +31,13 @@ void aim_camera(const mjModel* m, const mjData* d, const CameraSpec& spec, mjvCa
   camera.distance = spec.distance;
   camera.azimuth = spec.azimuth;
   camera.elevation = spec.elevation;
-  if (spec.track_body.empty()) {
+  const int body = report::tracked_body(m, spec);
+  if (body < 0) {
     camera.type = mjCAMERA_FREE;
     std::copy(spec.lookat.begin(), spec.lookat.end(), camera.lookat);
     tracked_body = -1;
     return;
   }
-  const int body = mj_name2id(m, mjOBJ_BODY, spec.track_body.c_str());
-  if (body <= 0) throw BadInput("camera: the model has no body named '" + spec.track_body + "'");
   camera.type = mjCAMERA_TRACKING;
   camera.trackbodyid = body;
   // MuJoCo's tracking camera moves a fifth of the way to the target each frame; start on target.
@@ -120,6 +119,19 @@ void paint(mjvScene& scene, const Colouring& colours) {
       if (c.geom == g.objid) std::copy(c.rgba.begin(), c.rgba.end(), g.rgba);
     }
   }
+}
+
+int tracked_body(const mjModel* m, const CameraSpec& spec) {
+  if (spec.track_robot) {
+    for (int j = 0; j < m->njnt; ++j) {
+      if (m->jnt_type[j] == mjJNT_FREE) return m->jnt_bodyid[j];
+    }
+    throw BadInput("camera: the model has no free joint (the robot's trunk)");
+  }
+  if (spec.track_body.empty()) return -1;
+  const int body = mj_name2id(m, mjOBJ_BODY, spec.track_body.c_str());
+  if (body <= 0) throw BadInput("camera: the model has no body named '" + spec.track_body + "'");
+  return body;
 }
 
 Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const CameraSpec& camera,

@@ -34,10 +34,11 @@ inline constexpr int kDefaultFrameHeight = 480;
 // offscreen buffer holds.
 inline constexpr Limits<int> kFrameSideLimits{16, 4096};
 
-// Where the camera looks from. With a track body the camera follows that body's subtree centre
-// of mass smoothly (MuJoCo's tracking camera); without one it looks at `lookat`.
+// Where the camera looks from. It follows a body's subtree centre of mass smoothly (MuJoCo's
+// tracking camera): the robot's trunk, or the body named; with neither it looks at `lookat`.
 struct CameraSpec {
-  std::string track_body = "trunk";
+  bool track_robot = true;   // the trunk: the body of the model's free joint (any robot file's)
+  std::string track_body;    // without track_robot: this body, if named
   double distance = 1.5;     // m
   double azimuth = 45.0;     // deg: 0 looks along +x (the walking direction), 90 along +y
   double elevation = -30.0;  // deg, negative = looking down
@@ -65,8 +66,8 @@ class Renderer {
   GlBackend backend() const { return gl_.backend(); }
 
  private:
-  friend Image render_frame(Renderer&, const mjModel*, mjData*, const CameraSpec&,
-                            const Colouring&, const Overlay&);
+  friend Image render_frame(Renderer&, const mjModel*, mjData*, const CameraSpec&, const Colouring&,
+                            const Overlay&);
   const mjModel* model_;
   int width_;
   int height_;
@@ -82,6 +83,10 @@ class Renderer {
 // their colours (report/fault_colours.h). `model` must be the renderer's model or a copy of it
 // that a fault reshaped (the same bodies, geoms and visual assets: sim/fault_effects.h); another
 // model or an unknown track body throws BadInput.
+// The body a camera of `spec` follows in `m` (-1: none). Throws BadInput for a model without a
+// free joint or without the body named.
+int tracked_body(const mjModel* m, const CameraSpec& spec);
+
 Image render_frame(Renderer& renderer, const mjModel* model, mjData* data, const CameraSpec& camera,
                    const Colouring& colours, const Overlay& overlay = {});
 

@@ -104,8 +104,7 @@ class Viewer {
         synchronised_(neural::follows_master(state_.controller, kFirstClient)) {
     const mjModel* m = model_.mj.get();
     const CameraSpec view;  // the viewpoint of the rendered videos
-    const int trunk = mj_name2id(m, mjOBJ_BODY, view.track_body.c_str());
-    if (trunk <= 0) throw RuntimeFailure("view: the model has no body '" + view.track_body + "'");
+    const int trunk = tracked_body(m, view);
     mjv_defaultCamera(&camera_);
     camera_.type = mjCAMERA_TRACKING;
     camera_.trackbodyid = trunk;

@@ -442,14 +442,20 @@ double mjcf_value(double v) {
   return std::stod(num(v));
 }
 
-std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file,
-                            const std::vector<std::string>& servo_joints) {
+std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const RobotFile& file,
+                            const std::string& model_file) {
   Writer w;
   w.line(0, "<mujoco model=\"multicpg-robot-file\">");
   w.line(1, "<include file=\"" + model_file + "\"/>");
-  if (!servo_joints.empty()) {
+  if (file.add_ground) {
+    w.line(1, "<worldbody>");
+    w.line(2, "<geom name=\"multicpg_ground\" type=\"plane\" size=\"" + num(kTerrainSide / 2.0) +
+                  " " + num(kTerrainSide / 2.0) + " 0.1\"/>");
+    w.line(1, "</worldbody>");
+  }
+  if (!file.servo_joints.empty()) {
     w.line(1, "<actuator>");
-    for (const std::string& joint : servo_joints) {
+    for (const std::string& joint : file.servo_joints) {
       w.line(2, "<motor name=\"multicpg_" + joint + "\" joint=\"" + joint + "\"/>");
     }
     w.line(1, "</actuator>");

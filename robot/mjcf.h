@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "robot/body.h"
+#include "robot/robot_file.h"
 #include "robot/terrain.h"
 
 namespace multicpg::robot {
@@ -61,11 +62,11 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options);
 double mjcf_value(double v);
 
 // A robot file's world (docs/robots.md "Your robot: robot files"): a document that includes the
-// MJCF file `model_file`, adds a motor on each joint of `servo_joints` (the servo law's, for the
-// joints the model leaves without an actuator) and, with scene.tunnel, the tunnel's walls as
-// make_mjcf has them for `body` (the compiled walls differ only in their material's name;
-// collisions must then be "all", set on the compiled model).
-std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const std::string& model_file,
-                            const std::vector<std::string>& servo_joints);
+// file's MJCF as `model_file`, adds a motor on each of its servo_joints (the servo law's, for the
+// joints the model leaves without an actuator), a ground plane if it has none and, with
+// scene.tunnel, the tunnel's walls as make_mjcf has them for `body` (the compiled walls differ
+// only in their material's name; collisions must then be "all", set on the compiled model).
+std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const RobotFile& file,
+                            const std::string& model_file);
 
 }  // namespace multicpg::robot

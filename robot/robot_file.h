@@ -29,23 +29,26 @@ struct LegMap {
   Side side;
   int position;                                // 0 = front
   std::array<JointMap, kJointsPerLeg> joints;  // TC, CTr, FTi
-  std::string foot;                            // the geom that touches the ground
+  std::string foot;  // the geom that touches the ground, or the body whose first geom it is
 };
 
 // What a robot file says, checked against its model (sim/robot_file.h load_robot_file).
 struct RobotFile {
   std::filesystem::path path;  // the TOML, as given
   std::string name;
-  std::filesystem::path model;  // the MJCF, resolved against the TOML's folder
-  std::string model_xml;        // its text, read once
-  std::string trunk;            // the body with the free joint
-  std::string yaw;              // the body or site whose framequat sensor gives the yaw
-  std::string master;           // the leg whose CPG the others follow (paper §2.3)
-  std::vector<LegMap> legs;     // in morphology order (R1..Rn, L1..Ln)
+  std::filesystem::path model;  // the MJCF or URDF, resolved against the TOML's folder
+  // Its MJCF, read once (a URDF as MuJoCo's loader reads it, with a free joint on the trunk).
+  std::string model_xml;
+  std::string trunk;         // the body with the free joint
+  std::string yaw;           // the body or site whose framequat sensor gives the yaw
+  std::string master;        // the leg whose CPG the others follow (paper §2.3)
+  std::vector<LegMap> legs;  // in morphology order (R1..Rn, L1..Ln)
   std::optional<JointMap> backbone;
   // The joints of the map that the model leaves without an actuator: each gets a motor driven by
   // the servo law (found by load_robot_file).
   std::vector<std::string> servo_joints;
+  // The model has no ground plane (a URDF never has): a flat one is added (friction 1).
+  bool add_ground = false;
   // The built-in robot with the same leg layout: its controller tables, servos and fault
   // geometry serve this robot.
   RobotKind layout;

@@ -98,8 +98,9 @@ void shorten(const SimModel& model, SimState& state, const Fault& fault, double 
     const int tibia = slots.tibia_body;
     const int foot = slots.foot_body;
     if (original->geom_type[g] != mjGEOM_CAPSULE || foot == tibia) {
-      throw BadInput("a short tibia needs the tibia to be a capsule (the first geom of the foot's "
-                     "parent body) and the foot a body of its own (docs/robots.md)");
+      throw BadInput(
+          "a short tibia needs the tibia to be a capsule (the first geom of the foot's "
+          "parent body) and the foot a body of its own (docs/robots.md)");
     }
     const double r = original->geom_size[3 * g];
     const double h = 2.0 * original->geom_size[3 * g + 1];
@@ -139,8 +140,9 @@ void make_slippery(const SimModel& model, SimState& state, const Fault& fault, d
   for (std::size_t leg : fault.legs) {
     const LegSlots& slots = model.legs[leg];
     if (slots.foot_pair < 0) {
-      throw BadInput("a slippery foot needs the foot's contact pair with the ground (a <pair> in "
-                     "the robot file's model, docs/robots.md)");
+      throw BadInput(
+          "a slippery foot needs the foot's contact pair with the ground (a <pair> in "
+          "the robot file's model, docs/robots.md)");
     }
     for (int t = 0; t < 2; ++t) {  // the two tangential directions
       m->pair_friction[5 * slots.foot_pair + t] =

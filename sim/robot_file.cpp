@@ -101,9 +101,8 @@ robot::RobotKind layout_of(std::size_t legs, const Reader& r) {
                      "layout, SPEC §0)");
 }
 
-// The joints of the map (legs, backbone) that the model has but drives with no actuator.
-std::vector<std::string> unactuated_joints(const robot::RobotFile& file) {
-  const auto m = compile_mjcf(file.model_xml);
+// The joints of the map (legs, backbone) that the model `m` has but drives with no actuator.
+std::vector<std::string> unactuated_joints(const mjModel* m, const robot::RobotFile& file) {
   std::vector<std::string> names;
   for (const robot::LegMap& leg : file.legs) {
     for (const robot::JointMap& joint : leg.joints) names.push_back(joint.name);
@@ -111,7 +110,7 @@ std::vector<std::string> unactuated_joints(const robot::RobotFile& file) {
   if (file.backbone) names.push_back(file.backbone->name);
   std::vector<std::string> unactuated;
   for (const std::string& name : names) {
-    const int j = mj_name2id(m.get(), mjOBJ_JOINT, name.c_str());
+    const int j = mj_name2id(m, mjOBJ_JOINT, name.c_str());
     if (j < 0) continue;  // make_sim_model names the key
     bool actuated = false;
     for (int a = 0; a < m->nu; ++a) {
@@ -120,6 +119,28 @@ std::vector<std::string> unactuated_joints(const robot::RobotFile& file) {
     if (!actuated) unactuated.push_back(name);
   }
   return unactuated;
+}
+
+// Whether the world of `m` has a ground plane.
+bool has_ground(const mjModel* m) {
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] == 0 && m->geom_type[g] == mjGEOM_PLANE) return true;
+  }
+  return false;
+}
+
+// The MJCF of a URDF (MuJoCo's loader reads it) with a free joint on its trunk, which URDF fixes
+// to the world.
+std::string urdf_model(const std::string& urdf, const std::string& trunk, const Reader& r) {
+  std::string xml = urdf_as_mjcf(urdf);
+  const auto m = compile_mjcf(xml);
+  const int body = mj_name2id(m.get(), mjOBJ_BODY, trunk.c_str());
+  if (body < 0 || m->body_jntnum[body] > 0) return xml;  // make_sim_model says what is wrong
+  if (m->body_parentid[body] != 0) r.fail("trunk", "'" + trunk + "' is not the URDF's root link");
+  const std::size_t at = xml.find("<body name=\"" + trunk + "\"");
+  if (at == std::string::npos) r.fail("trunk", "cannot find '" + trunk + "' in the URDF's MJCF");
+  xml.insert(xml.find('>', at) + 1, "<freejoint name=\"" + trunk + "_free\"/>");
+  return xml;
 }
 
 }  // namespace
@@ -188,7 +209,11 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
 
   file.model_xml = read_text(file.model, kMaxModelBytes, r, "model");
   try {
-    file.servo_joints = unactuated_joints(file);
+    if (file.model.extension() == ".urdf")
+      file.model_xml = urdf_model(file.model_xml, file.trunk, r);
+    const auto raw = compile_mjcf(file.model_xml);
+    file.servo_joints = unactuated_joints(raw.get(), file);
+    file.add_ground = !has_ground(raw.get());
     make_sim_model(file);
   } catch (const OptionError& e) {
     r.fail(e.key(), e.what());

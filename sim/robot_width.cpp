@@ -12,7 +12,7 @@ double foot_span(const SimModel& model) {
   const mjModel* m = model.mj.get();
   const std::unique_ptr<mjData, MjDataDeleter> d(mj_makeData(m));
   if (!d) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
-  if (model.start_key >= 0) mj_resetDataKeyframe(m, d.get(), model.start_key);
+  reset_to_start(model, d.get());
   mj_kinematics(m, d.get());
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;

@@ -6,7 +6,7 @@
 
 namespace multicpg::sim {
 
-// The lateral span of the robot's feet in its start pose (keyframe "start"), m: the largest
+// The lateral span of the robot's feet in its start pose (reset_to_start), m: the largest
 // distance across the heading (+x at the start) between two foot geoms' centres.
 double foot_span(const SimModel& model);
 

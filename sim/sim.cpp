@@ -1,11 +1,15 @@
 #include "sim/sim.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <mutex>
 #include <numbers>
@@ -182,7 +186,18 @@ JointSlot joint_slot(const mjModel* m, const robot::JointMap& map, const std::st
 // the ground.
 void index_foot(const mjModel* m, const std::string& foot, const std::string& key,
                 LegSlots& slots) {
-  slots.foot_geom = id_of(m, mjOBJ_GEOM, foot, key, "geom");
+  slots.foot_geom = mj_name2id(m, mjOBJ_GEOM, foot.c_str());
+  if (slots.foot_geom < 0) {
+    const int body = mj_name2id(m, mjOBJ_BODY, foot.c_str());
+    if (body < 0 || m->body_geomnum[body] == 0) {
+      throw OptionError(key, fmt::format("the model has no geom '{}', nor a body of that name with "
+                                         "a geom (a URDF's fixed links are fused into their "
+                                         "parents unless its <mujoco><compiler fusestatic="
+                                         "\"false\"/></mujoco>)",
+                                         foot));
+    }
+    slots.foot_geom = m->body_geomadr[body];
+  }
   slots.foot_body = m->geom_bodyid[slots.foot_geom];
   slots.tibia_body = m->body_parentid[slots.foot_body];
   if (m->body_geomnum[slots.tibia_body] == 0) {
@@ -259,9 +274,13 @@ double ground_height(const mjModel* m) {
   return height;
 }
 
+// Feet above the trunk's lowest point by more than this stand on the trunk, not their legs.
+constexpr double kStartTolerance = 1e-3;  // m
+
 // The start pose of a model without a "start" keyframe: its qpos0 with the servo joints at
 // model.start_pose and the trunk lowered or raised until its lowest foot rests on the ground.
-std::vector<double> start_qpos(const SimModel& model) {
+// Throws OptionError ("legs") if a geom of the trunk's body hangs below the feet.
+std::vector<double> start_qpos(const SimModel& model, int trunk) {
   const mjModel* m = model.mj.get();
   const std::unique_ptr<mjData, MjDataDeleter> d(mj_makeData(m));
   if (!d) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
@@ -273,7 +292,20 @@ std::vector<double> start_qpos(const SimModel& model) {
   }
   mj_kinematics(m, d.get());
   double lowest = std::numeric_limits<double>::infinity();
-  for (const LegSlots& leg : model.legs) lowest = std::min(lowest, lowest_point(m, d.get(), leg.foot_geom));
+  for (const LegSlots& leg : model.legs) {
+    lowest = std::min(lowest, lowest_point(m, d.get(), leg.foot_geom));
+  }
+  // The legs must hold the trunk up: no geom of the trunk's body below the feet.
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_bodyid[g] != trunk) continue;
+    const double below = lowest - lowest_point(m, d.get(), g);
+    if (below > kStartTolerance) {
+      const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+      throw OptionError("legs", fmt::format("the feet do not reach the ground in the start pose: "
+                                            "the trunk's geom '{}' hangs {:.3f} m below them",
+                                            name != nullptr ? name : std::to_string(g), below));
+    }
+  }
   d->qpos[model.root_qpos + 2] += ground_height(m) - lowest;
   return {d->qpos, d->qpos + m->nq};
 }
@@ -311,7 +343,7 @@ void index_model(SimModel& model, const robot::RobotFile& map, const SimOptions&
   model.root_qpos = m->jnt_qposadr[m->body_jntadr[trunk]];
   index_yaw(m, map.yaw, model);
   model.start_key = mj_name2id(m, mjOBJ_KEY, "start");
-  if (model.start_key < 0) model.start_qpos = start_qpos(model);
+  if (model.start_key < 0) model.start_qpos = start_qpos(model, trunk);
 }
 
 // The control that makes the model's own actuator of `slot` exert no force at the joint's
@@ -324,8 +356,8 @@ double zero_force_ctrl(const mjModel* m, const mjData* d, const JointSlot& slot)
          m->actuator_gainprm[mjNGAIN * slot.actuator];
 }
 
-void drive(const SimModel& model, const mjModel* m, mjData* d, const JointSlot& slot,
-           double target, const JointCondition& condition = {}) {
+void drive(const SimModel& model, const mjModel* m, mjData* d, const JointSlot& slot, double target,
+           const JointCondition& condition = {}) {
   double& ctrl = d->ctrl[slot.actuator];
   if (slot.drive == Drive::servo) {
     ctrl = condition.servo == JointCondition::Servo::driven
@@ -435,28 +467,64 @@ void check_on_terrain(const SimModel& model, const SimState& state) {
 
 }  // namespace
 
-// The XML parser is not documented as thread-safe, so loads are serialised.
-std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml,
-                                                      const std::vector<robot::ModelFile>& files) {
+namespace {
+
+// The XML parser is not documented as thread-safe, and it keeps the last model it read (for
+// mj_saveLastXML), so loads are serialised.
+std::mutex& loader_mutex() {
   static std::mutex mutex;
-  const std::lock_guard<std::mutex> lock(mutex);
-  constexpr const char* kFile = "multicpg.xml";
+  return mutex;
+}
+
+// Loads `main` (MJCF or URDF, by its root element) with `files` beside it from MuJoCo's in-memory
+// file system. Call with loader_mutex() held.
+mjModel* load_in_memory(const std::string& name, const std::string& main,
+                        const std::vector<robot::ModelFile>& files) {
   auto vfs = std::make_unique<mjVFS>();
   mj_defaultVFS(vfs.get());
-  const auto add = [&](const std::string& name, const std::string& bytes) {
-    if (mj_makeEmptyFileVFS(vfs.get(), name.c_str(), static_cast<int>(bytes.size())) != 0) {
+  const auto add = [&](const std::string& file, const std::string& bytes) {
+    if (mj_makeEmptyFileVFS(vfs.get(), file.c_str(), static_cast<int>(bytes.size())) != 0) {
       mj_deleteVFS(vfs.get());
-      throw RuntimeFailure("MuJoCo: cannot make the in-memory model file " + name);
+      throw RuntimeFailure("MuJoCo: cannot make the in-memory model file " + file);
     }
-    std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), name.c_str())], bytes.data(), bytes.size());
+    std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), file.c_str())], bytes.data(), bytes.size());
   };
-  add(kFile, xml);
+  add(name, main);
   for (const robot::ModelFile& f : files) add(f.name, f.bytes);
   std::array<char, 1000> error{};
-  mjModel* m = mj_loadXML(kFile, vfs.get(), error.data(), static_cast<int>(error.size()));
+  mjModel* m = mj_loadXML(name.c_str(), vfs.get(), error.data(), static_cast<int>(error.size()));
   mj_deleteVFS(vfs.get());
   if (m == nullptr) throw RuntimeFailure(std::string("MuJoCo rejected the model: ") + error.data());
-  return std::unique_ptr<mjModel, MjModelDeleter>(m);
+  return m;
+}
+
+}  // namespace
+
+std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml,
+                                                      const std::vector<robot::ModelFile>& files) {
+  const std::lock_guard<std::mutex> lock(loader_mutex());
+  return std::unique_ptr<mjModel, MjModelDeleter>(load_in_memory("multicpg.xml", xml, files));
+}
+
+std::string urdf_as_mjcf(const std::string& urdf) {
+  const std::lock_guard<std::mutex> lock(loader_mutex());
+  const std::unique_ptr<mjModel, MjModelDeleter> m(load_in_memory("multicpg.urdf", urdf, {}));
+  // MuJoCo writes the model it read last only to a file.
+  static std::atomic<unsigned> count{0};
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     fmt::format("multicpg-urdf-{}-{}.xml", ::getpid(), count++);
+  std::array<char, 1000> error{};
+  const int saved =
+      mj_saveLastXML(path.string().c_str(), m.get(), error.data(), static_cast<int>(error.size()));
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::error_code ignored;
+  std::filesystem::remove(path, ignored);
+  if (saved == 0 || !in) {
+    throw RuntimeFailure(std::string("MuJoCo cannot write the URDF as MJCF: ") + error.data());
+  }
+  return text.str();
 }
 
 double default_physics_dt(double control_dt) {
@@ -541,6 +609,25 @@ void install_mujoco_handlers() {
 
 namespace {
 
+// A motor the servo law drives brings its servo's armature (docs/robots.md "Servos", departure 2)
+// to a joint that has none: the explicit velocity loop is stable only with it.
+void give_armature(SimModel& model, const std::vector<std::string>& servo_joints) {
+  mjModel* m = model.mj.get();
+  bool changed = false;
+  for (const std::string& name : servo_joints) {
+    const int dof = m->jnt_dofadr[mj_name2id(m, mjOBJ_JOINT, name.c_str())];
+    if (m->dof_armature[dof] == 0.0) {
+      m->dof_armature[dof] = model.body.tc_servo.armature;
+      changed = true;
+    }
+  }
+  if (!changed) return;
+  // The constants MuJoCo derives from inertias at compile time.
+  const std::unique_ptr<mjData, MjDataDeleter> scratch(mj_makeData(m));
+  if (!scratch) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
+  mj_setConst(m, scratch.get());
+}
+
 // The model of `kind` or of a robot file with the layout `kind`, before its MJCF is compiled.
 SimModel new_model(robot::RobotKind kind, const SimOptions& options, const robot::RobotFile& map) {
   install_mujoco_handlers();
@@ -580,14 +667,16 @@ SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options)
     throw OptionError("scene.terrain", "a robot file's model walks on its own flat ground");
   }
   SimModel model = new_model(file.layout, options, file);
-  if (options.scene.tunnel || !file.servo_joints.empty()) {
-    const std::string name = file.model.filename().string();
-    model.xml = robot::robot_file_mjcf(model.body, options.scene, name, file.servo_joints);
+  if (options.scene.tunnel || !file.servo_joints.empty() || file.add_ground) {
+    // Included as MJCF whatever it was (a URDF as MuJoCo's loader read it).
+    const std::string name = file.model.stem().string() + ".xml";
+    model.xml = robot::robot_file_mjcf(model.body, options.scene, file, name);
     model.files = {{name, file.model_xml}};
   } else {
     model.xml = file.model_xml;
   }
   model.mj = compile_mjcf(model.xml, model.files);
+  give_armature(model, file.servo_joints);
   // The physics step and, in the tunnel, the wall contacts, as make_mjcf writes them.
   model.mj->opt.timestep = robot::mjcf_value(model.physics_dt);
   if (options.scene.tunnel) model.mj->opt.collision = mjCOL_ALL;
@@ -595,17 +684,22 @@ SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options)
   return model;
 }
 
+void reset_to_start(const SimModel& model, mjData* d) {
+  const mjModel* m = model.mj.get();
+  if (model.start_key >= 0) {
+    mj_resetDataKeyframe(m, d, model.start_key);
+  } else {
+    mj_resetData(m, d);
+    std::copy(model.start_qpos.begin(), model.start_qpos.end(), d->qpos);
+  }
+}
+
 SimState make_sim_state(const SimModel& model, int period) {
   const mjModel* m = model.mj.get();
   SimState state;
   state.data.reset(mj_makeData(m));
   if (!state.data) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
-  if (model.start_key >= 0) {
-    mj_resetDataKeyframe(m, state.data.get(), model.start_key);
-  } else {
-    mj_resetData(m, state.data.get());
-    std::copy(model.start_qpos.begin(), model.start_qpos.end(), state.data->qpos);
-  }
+  reset_to_start(model, state.data.get());
   mj_forward(m, state.data.get());  // sensors and contacts of the start pose
   for (int w = 0; w < mjNWARNING; ++w) state.warnings[w] = state.data->warning[w].number;
   state.controller = neural::make_controller_state(model.controller, period);
@@ -644,8 +738,7 @@ void sim_step(const SimModel& model, SimState& state) {
   for (int s = 0; s < model.substeps; ++s) {
     for (std::size_t i = 0; i < model.legs.size(); ++i) {
       for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-        drive(model, m, d, model.legs[i].joints[j], state.targets[i][j],
-              state.faults.joints[i][j]);
+        drive(model, m, d, model.legs[i].joints[j], state.targets[i][j], state.faults.joints[i][j]);
       }
     }
     for (const JointSlot& slot : model.backbone) drive(model, m, d, slot, 0.0);  // held at 0

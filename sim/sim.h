@@ -157,6 +157,10 @@ void validate(const SimOptions& options, robot::RobotKind kind);
 std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(
     const std::string& xml, const std::vector<robot::ModelFile>& files = {});
 
+// The MJCF of a URDF, as MuJoCo's own loader reads it. Throws RuntimeFailure with MuJoCo's
+// message if it refuses the URDF.
+std::string urdf_as_mjcf(const std::string& urdf);
+
 // Routes MuJoCo's warnings (kept for sim_step's error) and fatal errors (one line on stderr,
 // exit 1) away from stdout, MUJOCO_LOG.TXT and its "Press Enter" prompt. Idempotent;
 // make_sim_model calls it, the CLI calls it first thing.
@@ -184,6 +188,9 @@ struct SimState {
   std::array<int, mjNWARNING> warnings{};  // MuJoCo warning counts already seen
   FaultEffects faults;                     // what the faults in force do to the physics
 };
+
+// Resets `d` to the model's start pose: its keyframe "start", or the computed start_qpos.
+void reset_to_start(const SimModel& model, mjData* d);
 
 // The model the run's physics steps now: its own while a fault reshapes the robot
 // (sim/fault_effects.h), else the shared one.

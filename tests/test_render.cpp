@@ -145,7 +145,7 @@ TEST_F(RenderTest, TrackingCameraFollowsTheTrunk) {
   CameraSpec tracking;
   tracking.azimuth = 90;  // looking along +y: x motion moves the trunk sideways in the picture
   CameraSpec fixed = tracking;
-  fixed.track_body.clear();
+  fixed.track_robot = false;
   fixed.lookat = {0.0, 0.0, 0.3};
   render_frame(renderer, model_.get(), data_.get(), tracking, {});
   data_->qpos[0] += 0.6;  // free joint x: the trunk walks 0.6 m
@@ -171,6 +171,7 @@ TEST_F(RenderTest, OtherSizesAndBadInput) {
   EXPECT_GT(share(image, count(image, is_trunk_blue)), kMinShare);
 
   CameraSpec nowhere;
+  nowhere.track_robot = false;
   nowhere.track_body = "no_such_body";
   EXPECT_THROW(render_frame(renderer, model_.get(), data_.get(), nowhere, {}), multicpg::BadInput);
   // A model of other parts (a reshaped copy of the renderer's own is drawn, sim/fault_effects.h).

@@ -137,6 +137,42 @@ TEST_F(RobotFile, CheckSaysWhatItReadAndThatTheRobotStands) {
   EXPECT_NE(weak.err.find("does not stand"), std::string::npos) << weak.err;
 }
 
+// Its joints without an actuator get the servo law's motors: the built-in hexapod without its
+// actuators walks as the built-in one to the bit. A velocity actuator of the model's own is given
+// the servo's commanded velocity, and a passive joint none.
+TEST_F(RobotFile, TheModelsOwnActuatorsOrTheServoLawsMotors) {
+  const std::string xml = read_file(dir_ + "/hexapod.xml");
+  const std::size_t from = xml.find("<actuator>");
+  const std::size_t to = xml.find("</actuator>") + std::string("</actuator>").size();
+  ASSERT_NE(from, std::string::npos);
+  write(dir_ + "/bare.xml", xml.substr(0, from) + xml.substr(to));
+  const std::string toml = read_file(dir_ + "/hexapod.toml");
+  write(dir_ + "/bare.toml", replaced(toml, "model = \"hexapod.xml\"", "model = \"bare.xml\""));
+  const CliResult builtin = run_cli("walk --json --robot hexapod");
+  const CliResult bare = run_cli("walk --json --robot " + dir_ + "/bare.toml");
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  EXPECT_EQ(builtin.out, without_record(bare.out));
+
+  std::string velocity = xml;
+  for (std::size_t at = velocity.find("<motor "); at != std::string::npos;
+       at = velocity.find("<motor ", at)) {
+    const std::size_t end = velocity.find("ctrllimited", at);
+    velocity.replace(at, end - at,
+                     velocity.substr(at, end - at).replace(0, 7, "<velocity ") +
+                         "kv=\"2.555\" forcelimited=\"true\" forcerange=\"-26.75 26.75\" ");
+  }
+  write(dir_ + "/velocity.xml", velocity);
+  write(dir_ + "/velocity.toml",
+        replaced(toml, "model = \"hexapod.xml\"", "model = \"velocity.xml\""));
+  const CliResult walked = run_cli("walk --json --robot " + dir_ + "/velocity.toml");
+  ASSERT_EQ(walked.exit_code, 0) << walked.err;
+  const nlohmann::json j = nlohmann::json::parse(walked.out);
+  EXPECT_GT(j.at("forward_m").get<double>(), 2.0);  // the built-in walks 3.5 m
+  const CliResult passive = run_cli("walk --json --steps 100 --fault R1.CTr:passive@0 --robot " +
+                                    dir_ + "/velocity.toml");
+  EXPECT_EQ(passive.exit_code, 0) << passive.err;
+}
+
 struct Broken {
   std::string from;  // text of the good hexapod.toml ...
   std::string to;    // ... replaced by this
@@ -147,6 +183,13 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
   const std::string good = read_file(dir_ + "/hexapod.toml");
   const std::string xml = read_file(dir_ + "/hexapod.xml");
   write(dir_ + "/refused.xml", "<mujoco><worldbody><geom type=\"nosuch\"/></worldbody></mujoco>");
+  write(dir_ + "/refused.urdf",
+        "<robot name=\"r\"><link name=\"a\"><collision><geometry><nosuch/></geometry>"
+        "</collision></link></robot>");
+  // An actuator whose gain depends on the joint's angle: not a motor, position or velocity servo.
+  write(dir_ + "/general.xml",
+        replaced(xml, "<motor name=\"R1_TC\" joint=\"R1_TC\"",
+                 "<general name=\"R1_TC\" joint=\"R1_TC\" gaintype=\"affine\" gainprm=\"1 1 0\""));
   write(dir_ + "/unlimited.xml",
         replaced(xml, "<joint name=\"R1_TC\"", "<joint name=\"R1_TC\" limited=\"false\""));
   const std::string last_leg = good.substr(good.rfind("\n[[legs]]"));
@@ -166,7 +209,9 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
       {"model = \"hexapod.xml\"", "model = \"refused.xml\"", "model"},  // MuJoCo refuses it
       {"model = \"hexapod.xml\"", "model = \"unlimited.xml\"", "legs[0].TC.joint"},  // no range
       {"model = \"hexapod.xml\"", "model = \"nosuch.xml\"", "model"},                // unreadable
-      {last_leg, "", "legs"},                                                        // five legs
+      {"model = \"hexapod.xml\"", "model = \"refused.urdf\"", "model"},  // a URDF MuJoCo refuses
+      {"model = \"hexapod.xml\"", "model = \"general.xml\"", "legs[0].TC.joint"},
+      {last_leg, "", "legs"},  // five legs
       {"master = \"R1\"", "master = \"L2\"", "master"},
       {"sign = 1", "sign = 2", "backbone.sign"},
       {"name = \"R1\"", "name = \"R2\"", "legs[0].name"},  // out of order
@@ -186,6 +231,14 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
       EXPECT_NE(r.err.find(path + ": " + c.key), std::string::npos) << c.key << ": " << r.err;
     }
   }
+  // Legs too short to hold the trunk up: its plate hangs below the feet in the start pose.
+  const std::string examples = std::string(MULTICPG_SOURCE_DIR) + "/examples/robots/";
+  write(dir_ + "/low.xml", replaced(read_file(examples + "hobby_hexapod.xml"),
+                                    "size=\"0.13 0.09 0.02\"", "size=\"0.13 0.09 0.3\""));
+  write(dir_ + "/low.toml", replaced(read_file(examples + "hobby_hexapod.toml"),
+                                     "model = \"hobby_hexapod.xml\"", "model = \"low.xml\""));
+  expect_bad_input("model --check " + dir_ + "/low.toml", dir_ + "/low.toml: legs");
+
   const CliResult missing = run_cli("model --check " + dir_ + "/nosuch.toml");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(count_lines(missing.err), 1) << missing.err;

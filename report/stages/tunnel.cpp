@@ -24,7 +24,7 @@ namespace {
 namespace paper = experiments::paper;
 
 // The tunnel films look down the corridor from behind the robot, far enough to see both walls.
-const CameraSpec kTunnelCamera{"trunk", 2.5, 0.0, -45.0, {}};
+const CameraSpec kTunnelCamera{true, {}, 2.5, 0.0, -45.0, {}};
 
 std::string file_stem(std::string text) {
   std::replace(text.begin(), text.end(), '+', '-');
