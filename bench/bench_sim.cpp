@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <memory>
 #include <numbers>
@@ -16,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "sim/robot_file.h"
 #include "sim/walk.h"
 
 namespace {
@@ -268,5 +270,69 @@ void BM_SideBySide(benchmark::State& state) {
   mj_deleteData(d);
 }
 BENCHMARK(BM_SideBySide)->Unit(benchmark::kMillisecond);
+
+// The example robots of examples/robots/ (docs/robots.md "Example robots").
+const std::array<const char*, 3> kExampleRobots{"hobby_hexapod.toml", "spider_quadruped.toml",
+                                                "spider_quadruped_urdf.toml"};
+
+std::string example(std::int64_t index) {
+  return std::string(MULTICPG_SOURCE_DIR) + "/examples/robots/" +
+         kExampleRobots.at(static_cast<std::size_t>(index));
+}
+
+// Making the built-in hexapod's simulation (its MJCF generated and compiled) ...
+void BM_LoadBuiltin(benchmark::State& state) {
+  for (auto _ : state) {
+    const sim::SimModel model = sim::make_sim_model(robot::RobotKind::hexapod);
+    benchmark::DoNotOptimize(model.mj->nq);
+  }
+}
+BENCHMARK(BM_LoadBuiltin)->Unit(benchmark::kMillisecond);
+
+// ... against reading an example robot's file (checked by compiling its model) and making its
+// simulation, as a command does.
+void BM_LoadRobotFile(benchmark::State& state) {
+  const std::string path = example(state.range(0));
+  for (auto _ : state) {
+    const robot::RobotFile file = sim::load_robot_file(path);
+    const sim::SimModel model = sim::make_sim_model(file);
+    benchmark::DoNotOptimize(model.mj->nq);
+  }
+  state.SetLabel(kExampleRobots.at(static_cast<std::size_t>(state.range(0))));
+}
+BENCHMARK(BM_LoadRobotFile)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+// A 400-step trial of an example robot against the plain MuJoCo hexapod for the same simulated
+// time, this thread's CPU time for each (as BM_SideBySide).
+void BM_ExampleTrial(benchmark::State& state) {
+  const sim::SimModel model = sim::make_sim_model(sim::load_robot_file(example(state.range(0))));
+  const mjModel* pm = plain_hexapod().model.get();
+  const auto plain_steps = std::lround(kTrialSteps * model.control_dt / pm->opt.timestep);
+  mjData* pd = mj_makeData(pm);
+  double ours = 0.0, plain = 0.0;
+  for (auto _ : state) {
+    sim::SimState s = sim::start_walk_state(model, {});
+    const double t0 = thread_seconds();
+    for (long k = 0; k < kTrialSteps; ++k) sim::sim_step(model, s);
+    const double t1 = thread_seconds();
+    ours += t1 - t0;
+    mj_resetData(pm, pd);
+    mj_forward(pm, pd);
+    const double t2 = thread_seconds();
+    for (long k = 0; k < plain_steps; ++k) {
+      plain_gait(plain_hexapod(), pd);
+      mj_step(pm, pd);
+    }
+    plain += thread_seconds() - t2;
+    benchmark::DoNotOptimize(s.data->qpos[0]);
+  }
+  const double n = static_cast<double>(state.iterations());
+  state.counters["trial_ms"] = 1e3 * ours / n;
+  state.counters["plain_ms"] = 1e3 * plain / n;
+  state.counters["trial/plain"] = ours / plain;
+  state.SetLabel(kExampleRobots.at(static_cast<std::size_t>(state.range(0))));
+  mj_deleteData(pd);
+}
+BENCHMARK(BM_ExampleTrial)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
