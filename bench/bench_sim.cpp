@@ -209,6 +209,31 @@ double thread_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// This thread's CPU time for a 400-step trial of `model` from the walk's start state.
+double trial_seconds(const sim::SimModel& model) {
+  sim::SimState s = sim::start_walk_state(model, {});
+  const double t0 = thread_seconds();
+  for (long k = 0; k < kTrialSteps; ++k) sim::sim_step(model, s);
+  const double t = thread_seconds() - t0;
+  benchmark::DoNotOptimize(s.data->qpos[0]);
+  return t;
+}
+
+// This thread's CPU time for the plain hexapod walking `steps` physics steps from its start;
+// adds its contacts per step to `contacts`.
+double plain_seconds(mjData* pd, long steps, long& contacts) {
+  const mjModel* pm = plain_hexapod().model.get();
+  mj_resetData(pm, pd);
+  mj_forward(pm, pd);
+  const double t0 = thread_seconds();
+  for (long k = 0; k < steps; ++k) {
+    plain_gait(plain_hexapod(), pd);
+    mj_step(pm, pd);
+    contacts += pd->ncon;
+  }
+  return thread_seconds() - t0;
+}
+
 // Each iteration runs, one after the other on this thread, (1) our 400-step trial (sim_step x
 // 400 from the walk's start state), (2) bare mj_step replaying that trial's ctrl on our model,
 // (3) the plain hexapod for the same simulated time. Times are this thread's CPU time, so other
@@ -226,11 +251,7 @@ void BM_SideBySide(benchmark::State& state) {
   double ours = 0.0, bare = 0.0, plain = 0.0;
   long our_contacts = 0, plain_contacts = 0;
   for (auto _ : state) {
-    sim::SimState s = sim::start_walk_state(model, {});
-    const double t0 = thread_seconds();
-    for (long k = 0; k < kTrialSteps; ++k) sim::sim_step(model, s);
-    const double t1 = thread_seconds();
-    ours += t1 - t0;
+    ours += trial_seconds(model);
 
     mj_resetDataKeyframe(m, d, model.start_key);
     mj_forward(m, d);
@@ -243,17 +264,7 @@ void BM_SideBySide(benchmark::State& state) {
     const double t3 = thread_seconds();
     bare += t3 - t2;
 
-    mj_resetData(pm, pd);
-    mj_forward(pm, pd);
-    const double t4 = thread_seconds();
-    for (long k = 0; k < plain_steps; ++k) {
-      plain_gait(plain_hexapod(), pd);
-      mj_step(pm, pd);
-      plain_contacts += pd->ncon;
-    }
-    const double t5 = thread_seconds();
-    plain += t5 - t4;
-    benchmark::DoNotOptimize(s.data->qpos[0]);
+    plain += plain_seconds(pd, plain_steps, plain_contacts);
     benchmark::DoNotOptimize(pd->qpos[0]);
   }
   const double n = static_cast<double>(state.iterations());
@@ -310,21 +321,10 @@ void BM_ExampleTrial(benchmark::State& state) {
   const auto plain_steps = std::lround(kTrialSteps * model.control_dt / pm->opt.timestep);
   mjData* pd = mj_makeData(pm);
   double ours = 0.0, plain = 0.0;
+  long plain_contacts = 0;
   for (auto _ : state) {
-    sim::SimState s = sim::start_walk_state(model, {});
-    const double t0 = thread_seconds();
-    for (long k = 0; k < kTrialSteps; ++k) sim::sim_step(model, s);
-    const double t1 = thread_seconds();
-    ours += t1 - t0;
-    mj_resetData(pm, pd);
-    mj_forward(pm, pd);
-    const double t2 = thread_seconds();
-    for (long k = 0; k < plain_steps; ++k) {
-      plain_gait(plain_hexapod(), pd);
-      mj_step(pm, pd);
-    }
-    plain += thread_seconds() - t2;
-    benchmark::DoNotOptimize(s.data->qpos[0]);
+    ours += trial_seconds(model);
+    plain += plain_seconds(pd, plain_steps, plain_contacts);
   }
   const double n = static_cast<double>(state.iterations());
   state.counters["trial_ms"] = 1e3 * ours / n;
