@@ -82,6 +82,16 @@ TEST_P(ExampleRobot, RobustLearningHoldsSixWindowsAfterLearning) {
   std::filesystem::remove_all(dir);
 }
 
+// Drawn with the camera on its trunk, whatever its name (docs/robots.md "Your robot").
+TEST_P(ExampleRobot, RendersWithItsFailedLeg) {
+  const std::string dir = make_temp_dir("example-render-");
+  const CliResult r = run_cli("render --robot " + example_path(GetParam()) +
+                              " --disable R1 --steps 5 --out " + dir + "/lame.png");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(std::filesystem::file_size(dir + "/lame.png"), 0U);
+  std::filesystem::remove_all(dir);
+}
+
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleRobot,
                          ::testing::Values(Example{"hobby_hexapod.toml", "R2"},
                                            Example{"spider_quadruped.toml", "R2"},

@@ -90,4 +90,13 @@ TEST(View, OtherRobotsFaultsAndFreeClientsUnderXvfb) {
   EXPECT_NE(r.out.find("viewed 10 steps"), std::string::npos) << r.out;
 }
 
+// A robot nobody designed the viewer around: its camera follows the body of its free joint.
+TEST(View, AnExampleRobotFromItsFileUnderXvfb) {
+  ASSERT_TRUE(have_xvfb()) << "xvfb-run is missing: scripts/setup.sh installs it (xvfb, xauth)";
+  const CliResult r = run_on_xvfb("view --robot " + std::string(MULTICPG_SOURCE_DIR) +
+                                  "/examples/robots/spider_quadruped.toml --disable R1 --steps 10");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("viewed 10 steps"), std::string::npos) << r.out;
+}
+
 }  // namespace
