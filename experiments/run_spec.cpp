@@ -31,13 +31,10 @@ sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options
 
 namespace {
 
-// A robot file's model is walked on its own flat ground, and its body is its MJCF: of the body
+// A robot file's body is its MJCF: of the body
 // parameters only those of the controller apply (the disabled legs' posture and the body lift,
 // robot/body_params.h).
 void validate_file_robot(const sim::SimOptions& options) {
-  if (options.scene.terrain.kind != robot::TerrainKind::flat) {
-    throw OptionError("sim.scene.terrain", "a robot file's model walks on its own flat ground");
-  }
   if (options.model != robot::kDefaultBodyModel) {
     throw OptionError("sim.model", "a robot file's body is its model (docs/robots.md)");
   }

@@ -48,9 +48,8 @@ sim::StartSpec learning_start(learning::Mode mode);
 // "start.periods", "start.warmup", "faults", "learning.annealing.beta", "record.check_windows"
 // (a value out of its range, a period that gives no gait or the wrong number of them, a fault
 // timeline that cannot happen, a learning run without a fault or with unequal start periods),
-// "learning.mode" for faults the learning mode cannot take; with a robot file "sim.scene.terrain"
-// for other than flat ground, "sim.model" and "sim.body.<key>" for a body parameter other than
-// the controller's (its body is its model).
+// "learning.mode" for faults the learning mode cannot take; with a robot file "sim.model" and
+// "sim.body.<key>" for a body parameter other than the controller's (its body is its model).
 void validate(const RunSpec& spec);
 
 // The leg layout of the run's robot.

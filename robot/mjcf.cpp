@@ -447,12 +447,40 @@ std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const Rob
   Writer w;
   w.line(0, "<mujoco model=\"multicpg-robot-file\">");
   w.line(1, "<include file=\"" + model_file + "\"/>");
-  if (file.add_ground) {
-    w.line(1, "<worldbody>");
-    w.line(2, "<geom name=\"multicpg_ground\" type=\"plane\" size=\"" + num(kTerrainSide / 2.0) +
-                  " " + num(kTerrainSide / 2.0) + " 0.1\"/>");
-    w.line(1, "</worldbody>");
+  // The ground (robot/terrain.h): a flat model keeps its own plane (or gets one), steps stand on
+  // it; a slope and rough ground replace it (make_sim_model turns the model's own off).
+  const Terrain& t = scene.terrain;
+  const std::string side = num(kTerrainSide / 2.0);
+  if (t.kind == TerrainKind::rough) {
+    w.line(1, "<asset>");
+    w.line(2, "<hfield name=\"multicpg_terrain\" file=\"" + std::string(kHeightfieldFile) +
+                  "\" size=\"" + side + " " + side + " " + num(t.height_m) + " " +
+                  num(kHeightfieldBase) + "\"/>");
+    w.line(1, "</asset>");
   }
+  w.line(1, "<worldbody>");
+  if (t.kind == TerrainKind::rough) {
+    w.line(2, "<geom name=\"" + std::string(kRobotFileGround) +
+                  "\" type=\"hfield\" hfield=\"multicpg_terrain\"/>");
+  } else if (t.kind == TerrainKind::slope || file.add_ground) {
+    w.line(2, "<geom name=\"" + std::string(kRobotFileGround) + "\" type=\"plane\" size=\"" + side +
+                  " " + side + " 0.1\"" +
+                  (t.kind == TerrainKind::slope ? " quat=\"" + quat(ground_rotation(t)) + "\""
+                                                : std::string()) +
+                  "/>");
+  }
+  if (t.kind == TerrainKind::steps) {
+    int n = 0;
+    for (double dir : {1.0, -1.0}) {
+      for (double x = kStepsStart; x + t.depth_m <= kTerrainSide / 2.0; x += 2.0 * t.depth_m) {
+        const Vec3 pos{dir * (x + t.depth_m / 2.0), 0.0, t.height_m / 2.0};
+        w.line(2, "<geom name=\"multicpg_step_" + std::to_string(n++) + "\" type=\"box\" pos=\"" +
+                      vec(pos) + "\" size=\"" + num(t.depth_m / 2.0) + " " + side + " " +
+                      num(t.height_m / 2.0) + "\"/>");
+      }
+    }
+  }
+  w.line(1, "</worldbody>");
   if (!file.servo_joints.empty()) {
     w.line(1, "<actuator>");
     for (const std::string& joint : file.servo_joints) {

@@ -61,9 +61,13 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options);
 // `v` as MuJoCo reads it back from make_mjcf's document (which writes 12 significant digits).
 double mjcf_value(double v);
 
+// The ground a robot file's world adds (robot_file_mjcf).
+inline constexpr const char* kRobotFileGround = "multicpg_ground";
+
 // A robot file's world (docs/robots.md "Your robot: robot files"): a document that includes the
 // file's MJCF as `model_file`, adds a motor on each of its servo_joints (the servo law's, for the
-// joints the model leaves without an actuator), a ground plane if it has none and, with
+// joints the model leaves without an actuator), the ground of scene.terrain (a plane if the model
+// has none and the terrain is flat, steps on it, a tilted plane, a heightfield) and, with
 // scene.tunnel, the tunnel's walls as make_mjcf has them for `body` (the compiled walls differ
 // only in their material's name; collisions must then be "all", set on the compiled model).
 std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const RobotFile& file,

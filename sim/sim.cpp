@@ -628,6 +628,48 @@ void give_armature(SimModel& model, const std::vector<std::string>& servo_joints
   mj_setConst(m, scratch.get());
 }
 
+// Other ground than a robot file's own flat one (robot::robot_file_mjcf): on a slope and rough
+// ground its own planes no longer collide nor show. Throws OptionError ("scene.terrain") for a
+// model whose contacts are only its <pair>s: they hold its feet to its own ground.
+void leave_own_ground(mjModel* m, const robot::Terrain& terrain, const robot::RobotFile& file) {
+  if (m->opt.collision == mjCOL_PAIR || m->npair > 0) {
+    throw OptionError("scene.terrain",
+                      fmt::format("{}: its model's <contact><pair>s hold the feet to its own "
+                                  "ground: it walks only there, not on {} (docs/robots.md)",
+                                  file.path.string(), robot::terrain_text(terrain)));
+  }
+  if (terrain.kind == robot::TerrainKind::steps) return;
+  const int ours = mj_name2id(m, mjOBJ_GEOM, robot::kRobotFileGround);
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (g == ours || m->geom_bodyid[g] != 0 || m->geom_type[g] != mjGEOM_PLANE) continue;
+    m->geom_contype[g] = 0;
+    m->geom_conaffinity[g] = 0;
+    m->geom_rgba[4 * g + 3] = 0.0F;
+  }
+}
+
+// A robot file's start on other ground, as make_mjcf places the built-in robots: above rough
+// ground's highest bump, or on a slope tilted with it about the start.
+void place_on_terrain(SimModel& model, const robot::Terrain& terrain) {
+  const mjModel* m = model.mj.get();
+  std::vector<double> qpos = model.start_qpos;
+  if (model.start_key >= 0) {
+    qpos.assign(m->key_qpos + model.start_key * m->nq, m->key_qpos + (model.start_key + 1) * m->nq);
+  }
+  double* root = qpos.data() + model.root_qpos;
+  if (terrain.kind == robot::TerrainKind::rough) root[2] += terrain.height_m;
+  if (terrain.kind == robot::TerrainKind::slope) {
+    const std::array<double, 4> q = robot::ground_rotation(terrain);
+    const std::array<double, 3> p = robot::rotate(q, {root[0], root[1], root[2]});
+    std::array<double, 4> tilted{};
+    mju_mulQuat(tilted.data(), q.data(), root + 3);
+    std::copy(p.begin(), p.end(), root);
+    std::copy(tilted.begin(), tilted.end(), root + 3);
+  }
+  model.start_key = -1;
+  model.start_qpos = std::move(qpos);
+}
+
 // The model of `kind` or of a robot file with the layout `kind`, before its MJCF is compiled.
 SimModel new_model(robot::RobotKind kind, const SimOptions& options, const robot::RobotFile& map) {
   install_mujoco_handlers();
@@ -663,15 +705,15 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
 }
 
 SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options) {
-  if (options.scene.terrain.kind != robot::TerrainKind::flat) {
-    throw OptionError("scene.terrain", "a robot file's model walks on its own flat ground");
-  }
   SimModel model = new_model(file.layout, options, file);
-  if (options.scene.tunnel || !file.servo_joints.empty() || file.add_ground) {
+  const robot::Terrain& terrain = options.scene.terrain;
+  const bool flat = terrain.kind == robot::TerrainKind::flat;
+  if (options.scene.tunnel || !file.servo_joints.empty() || file.add_ground || !flat) {
     // Included as MJCF whatever it was (a URDF as MuJoCo's loader read it).
     const std::string name = file.model.stem().string() + ".xml";
     model.xml = robot::robot_file_mjcf(model.body, options.scene, file, name);
-    model.files = {{name, file.model_xml}};
+    model.files = robot::scene_files(options.scene);
+    model.files.push_back({name, file.model_xml});
   } else {
     model.xml = file.model_xml;
   }
@@ -680,7 +722,9 @@ SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options)
   // The physics step and, in the tunnel, the wall contacts, as make_mjcf writes them.
   model.mj->opt.timestep = robot::mjcf_value(model.physics_dt);
   if (options.scene.tunnel) model.mj->opt.collision = mjCOL_ALL;
+  if (!flat) leave_own_ground(model.mj.get(), terrain, file);
   index_model(model, file, options);
+  if (!flat) place_on_terrain(model, terrain);
   return model;
 }
 

@@ -171,9 +171,10 @@ void install_mujoco_handlers();
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options = {});
 
 // The robot of a robot file (sim/robot_file.h load_robot_file) with its layout's controller,
-// servos and fault geometry. Its model is walked as written on flat ground, or inside the tunnel's
-// walls (options.scene.tunnel), at options' physics step. Throws OptionError ("scene.terrain")
-// for other ground, and with the file's key ("legs[0].TC.joint", "yaw", ...) for a name of the
+// servos and fault geometry. Its model is walked as written on its flat ground or options'
+// terrain, inside the tunnel's walls with options.scene.tunnel, at options' physics step. Throws
+// OptionError ("scene.terrain") for other ground under a model with contact pairs, and with the
+// file's key ("legs[0].TC.joint", "yaw", ...) for a name of the
 // leg map that its model lacks; RuntimeFailure if MuJoCo rejects the model.
 SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options = {});
 

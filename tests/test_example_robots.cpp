@@ -26,6 +26,7 @@ constexpr double kThresholdDeg = 8.0;
 struct Example {
   const char* file;        // in examples/robots/
   const char* second_leg;  // the middle (hexapod) or hind (quadruped) leg lost
+  bool climbs_steps;       // walks over 1 cm steps (docs/robots.md "Example robots")
 };
 
 // The test's name in ctest: the file.
@@ -82,6 +83,21 @@ TEST_P(ExampleRobot, RobustLearningHoldsSixWindowsAfterLearning) {
   std::filesystem::remove_all(dir);
 }
 
+// On other ground: the terrain replaces its own plane (a slope, rough ground) or stands on it
+// (steps), and it starts on it.
+TEST_P(ExampleRobot, WalksOnOtherGround) {
+  for (const std::string& terrain :
+       {std::string("slope:5"), std::string("rough:0.01"), std::string("steps:0.01:0.5")}) {
+    const json walked = walk(example_path(GetParam()), "--terrain " + terrain);
+    const double forward = walked.at("forward_m").get<double>();
+    if (terrain.starts_with("steps") && !GetParam().climbs_steps) {
+      EXPECT_LT(forward, 0.5) << terrain;  // stopped at the first step, 0.5 m ahead
+    } else {
+      EXPECT_GT(forward, 1.0) << terrain;  // past the first steps
+    }
+  }
+}
+
 // Drawn with the camera on its trunk, whatever its name (docs/robots.md "Your robot").
 TEST_P(ExampleRobot, RendersWithItsFailedLeg) {
   const std::string dir = make_temp_dir("example-render-");
@@ -93,9 +109,9 @@ TEST_P(ExampleRobot, RendersWithItsFailedLeg) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleRobot,
-                         ::testing::Values(Example{"hobby_hexapod.toml", "R2"},
-                                           Example{"spider_quadruped.toml", "R2"},
-                                           Example{"spider_quadruped_urdf.toml", "R2"}),
+                         ::testing::Values(Example{"hobby_hexapod.toml", "R2", true},
+                                           Example{"spider_quadruped.toml", "R2", true},
+                                           Example{"spider_quadruped_urdf.toml", "R2", false}),
                          [](const auto& info) {
                            const std::string file = info.param.file;
                            return file.substr(0, file.find('.'));

@@ -243,8 +243,10 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(count_lines(missing.err), 1) << missing.err;
   EXPECT_NE(missing.err.find("nosuch.toml: file"), std::string::npos) << missing.err;
-  // A robot file walks on its model's flat ground; a tunnel's model makes no robot file.
-  expect_bad_input("walk --terrain slope:5:0 --robot " + dir_ + "/hexapod.toml", "--terrain");
+  // The built-in robots' contact pairs hold their feet to their own ground; a tunnel's model
+  // makes no robot file.
+  expect_bad_input("walk --terrain slope:5:0 --robot " + dir_ + "/hexapod.toml",
+                   dir_ + "/hexapod.toml: its model's <contact><pair>s");
   // Its body is its model: body flags that would change the MJCF are refused.
   expect_bad_input("walk --trunk-mass 2 --robot " + dir_ + "/hexapod.toml", "--trunk-mass");
   expect_bad_input("learn --disable R1 --model real --robot " + dir_ + "/hexapod.toml", "--model");
