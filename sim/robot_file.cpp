@@ -124,7 +124,7 @@ std::vector<std::string> unactuated_joints(const mjModel* m, const robot::RobotF
 // Whether the world of `m` has a ground plane.
 bool has_ground(const mjModel* m) {
   for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_bodyid[g] == 0 && m->geom_type[g] == mjGEOM_PLANE) return true;
+    if (is_ground_plane(m, g)) return true;
   }
   return false;
 }
@@ -144,6 +144,10 @@ std::string urdf_model(const std::string& urdf, const std::string& trunk, const 
 }
 
 }  // namespace
+
+bool is_ground_plane(const mjModel* m, int g) {
+  return m->geom_bodyid[g] == 0 && m->geom_type[g] == mjGEOM_PLANE;
+}
 
 bool is_robot_file(const std::string& robot) {
   return std::filesystem::path(robot).extension() == ".toml";

@@ -1,6 +1,8 @@
 // Reading a robot file (robot/robot_file.h; docs/robots.md "Your robot: robot files").
 #pragma once
 
+#include <mujoco/mujoco.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -20,6 +22,9 @@ inline constexpr std::uintmax_t kMaxModelBytes = 16 << 20;
 // 8), legs out of order, a name the model lacks, a joint without range, a model MuJoCo refuses
 // (with MuJoCo's message).
 robot::RobotFile load_robot_file(const std::filesystem::path& path);
+
+// Whether geom `g` of `m` is a ground plane: a plane of the world body (a robot file's ground).
+bool is_ground_plane(const mjModel* m, int g);
 
 // True when the --robot text names a robot file rather than a built-in robot.
 bool is_robot_file(const std::string& robot);

@@ -19,6 +19,7 @@
 #include "common/limits.h"
 #include "robot/joint_map.h"
 #include "sim/mujoco_guard.h"
+#include "sim/robot_file.h"
 
 namespace multicpg::sim {
 namespace {
@@ -266,7 +267,7 @@ double ground_height(const mjModel* m) {
   double height = 0.0;
   bool found = false;
   for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_bodyid[g] != 0 || m->geom_type[g] != mjGEOM_PLANE) continue;
+    if (!is_ground_plane(m, g)) continue;
     const double z = m->geom_pos[3 * g + 2];
     height = found ? std::max(height, z) : z;
     found = true;
@@ -641,7 +642,7 @@ void leave_own_ground(mjModel* m, const robot::Terrain& terrain, const robot::Ro
   if (terrain.kind == robot::TerrainKind::steps) return;
   const int ours = mj_name2id(m, mjOBJ_GEOM, robot::kRobotFileGround);
   for (int g = 0; g < m->ngeom; ++g) {
-    if (g == ours || m->geom_bodyid[g] != 0 || m->geom_type[g] != mjGEOM_PLANE) continue;
+    if (g == ours || !is_ground_plane(m, g)) continue;
     m->geom_contype[g] = 0;
     m->geom_conaffinity[g] = 0;
     m->geom_rgba[4 * g + 3] = 0.0F;
