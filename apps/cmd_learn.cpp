@@ -57,9 +57,11 @@ void print_trace(std::ostream& out, const robot::Morphology& morph,
   for (const learning::TrialRecord& t : r.trace) {
     out << std::setw(5) << t.trial << period_cells(t.periods, disabled) << std::setw(10)
         << t.deviation_deg << "°  " << (t.accepted ? "kept" : "rejected");
-    if (t.acceptance_probability < 1.0) {
-      out << " (P = " << std::setprecision(3) << std::scientific << t.acceptance_probability
-          << std::fixed << std::setprecision(2) << ")";
+    // The annealing's acceptance probability of a worse combination (paper §3).
+    const double p = t.details.value("acceptance_probability", 1.0);
+    if (p < 1.0) {
+      out << " (P = " << std::setprecision(3) << std::scientific << p << std::fixed
+          << std::setprecision(2) << ")";
     }
     out << "\n";
   }
@@ -84,17 +86,22 @@ void print_episodes(std::ostream& out, const robot::Morphology& morph,
   out << "\n";
 }
 
+// trace.csv: the neutral columns, then the learner's own details (learning/learner.h).
 std::string trace_csv(const robot::Morphology& morph, const learning::LearningResult& r) {
+  const std::vector<std::string> details = learning::detail_keys(r.trace);
   std::ostringstream f;
   f << "trial";
   for (const robot::Leg& leg : morph.legs) f << "," << leg.name;
-  f << ",deviation_deg,accepted,acceptance_probability\n";
+  f << ",deviation_deg,accepted";
+  for (const std::string& key : details) f << "," << key;
+  f << "\n";
   f.precision(10);
   for (const learning::TrialRecord& t : r.trace) {
     f << t.trial;
     for (int p : t.periods) f << "," << p;
-    f << "," << t.deviation_deg << "," << (t.accepted ? 1 : 0) << "," << t.acceptance_probability
-      << "\n";
+    f << "," << t.deviation_deg << "," << (t.accepted ? 1 : 0);
+    for (const std::string& key : details) f << "," << learning::detail_number(t, key);
+    f << "\n";
   }
   return f.str();
 }

@@ -847,19 +847,18 @@ class TrialCallback final : public sim::Observer {
 };
 
 // The trace of a learning run as arrays: trial, periods [trials, legs], deviation_deg, accepted,
-// acceptance_probability.
+// and one array per detail of the learner (the annealing's acceptance_probability, ...; NaN
+// where a trial has none).
 py::dict trace_arrays(const std::vector<learning::TrialRecord>& trace, std::size_t legs) {
   std::vector<int> trial;
   std::vector<int> periods;
   std::vector<double> deviation;
-  std::vector<double> probability;
   py::array_t<bool> accepted(static_cast<py::ssize_t>(trace.size()));
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const learning::TrialRecord& t = trace[i];
     trial.push_back(t.trial);
     periods.insert(periods.end(), t.periods.begin(), t.periods.end());
     deviation.push_back(t.deviation_deg);
-    probability.push_back(t.acceptance_probability);
     accepted.mutable_at(static_cast<py::ssize_t>(i)) = t.accepted;
   }
   const auto n = static_cast<py::ssize_t>(trace.size());
@@ -868,7 +867,11 @@ py::dict trace_arrays(const std::vector<learning::TrialRecord>& trace, std::size
   out["periods"] = array(periods, {n, static_cast<py::ssize_t>(legs)});
   out["deviation_deg"] = array(deviation, {n});
   out["accepted"] = accepted;
-  out["acceptance_probability"] = array(probability, {n});
+  for (const std::string& key : learning::detail_keys(trace)) {
+    std::vector<double> values;
+    for (const learning::TrialRecord& t : trace) values.push_back(learning::detail_number(t, key));
+    out[py::str(key)] = array(values, {n});
+  }
   return out;
 }
 
@@ -1018,7 +1021,7 @@ void run_experiment(py::handle source_value, py::handle is_document, py::handle 
   options.progress = false;
   const experiments::Sweep sweep = document ? experiments::resolve_sweep(Json::parse(source))
                                             : experiments::load_experiment_file(source);
-  if (sweep.landscape) {
+  if (!sweep.landscapes.empty()) {
     throw py::value_error(
         "file_or_dict: a landscape has no tidy table; run it with `multicpg run`");
   }
