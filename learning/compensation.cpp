@@ -239,7 +239,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   const AnnealingParams& params = options.annealing;
   Walk walk(walker, options);
 
-  // Detection (SPEC §6): consecutive windows until one deviates more than the threshold.
+  // docs/learning.md "Detection": consecutive windows until one deviates more than the threshold.
   walk.steps(result.settle_steps);
   long windows_since_failure = 0;
   double e = 0.0;
@@ -266,7 +266,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   detected.periods = result.periods;
   walker.emit(detected);
 
-  // SPEC §5: a deviation desynchronises every client; then learning from C0 = current periods.
+  // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
   const std::unique_ptr<Learner> learner = make_learner(
       options.learner,
@@ -385,7 +385,7 @@ class RobustRun {
     walk_.steps(settle_for(p));
   }
 
-  // SPEC §5: every leg works again: all legs at the master's period, clients synchronised.
+  // Paper §2.3: every leg works again: all legs at the master's period, clients synchronised.
   void resynchronise() {
     neural::ControllerState& c = walker_.controller();
     neural::set_period(model_, c, c.legs.front().cpg.period);
@@ -423,7 +423,7 @@ class RobustRun {
     detected.periods = periods();
     walker_.emit(detected);
 
-    neural::set_synchronised(walker_.controller(), false);  // SPEC §5
+    neural::set_synchronised(walker_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
     const std::unique_ptr<Learner> learner =
