@@ -246,7 +246,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   sim::WindowMeasure detecting;
   for (;;) {
     detecting = walk.measured_window();
-    e = std::abs(detecting.yaw_deg);  // SPEC §6: |yaw(end) - yaw(start)| wrapped
+    e = std::abs(detecting.yaw_deg);  // docs/learning.md "Deviation"
     if (!sim::holds(e, params.threshold_deg)) break;
     if (walk.failed() && ++windows_since_failure >= options.detection_windows) break;
   }
