@@ -993,7 +993,7 @@ class Annealer {
   const std::shared_ptr<Robot>& robot() const { return robot_; }
   py::list trace() const {
     py::list out;
-    for (const learning::TrialRecord& t : state_.trace) {
+    for (const learning::AnnealingTrial& t : state_.trace) {
       out.append(
           py::dict(py::arg("trial") = t.trial, py::arg("periods") = t.periods,
                    py::arg("deviation_deg") = t.deviation_deg, py::arg("accepted") = t.accepted,
