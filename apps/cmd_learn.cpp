@@ -16,6 +16,7 @@
 #include "experiments/learning_run.h"
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
+#include "learning/learners.h"
 #include "robot/leg_sets.h"
 #include "sim/fault_spec.h"
 #include "sim/record_csv.h"
@@ -87,8 +88,9 @@ void print_episodes(std::ostream& out, const robot::Morphology& morph,
 }
 
 // trace.csv: the neutral columns, then the learner's own details (learning/learner.h).
-std::string trace_csv(const robot::Morphology& morph, const learning::LearningResult& r) {
-  const std::vector<std::string> details = learning::detail_keys(r.trace);
+std::string trace_csv(const robot::Morphology& morph, const learning::LearnerChoice& learner,
+                      const learning::LearningResult& r) {
+  const std::vector<std::string> details = learning::detail_columns(learner.name, r.trace);
   std::ostringstream f;
   f << "trial";
   for (const robot::Leg& leg : morph.legs) f << "," << leg.name;
@@ -130,7 +132,7 @@ void run_learn(const LearnOptions& o) {
 
   if (!o.out.empty()) {
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
-    write_file_atomic(dir / "trace.csv", trace_csv(morph, r));
+    write_file_atomic(dir / "trace.csv", trace_csv(morph, options.learner, r));
     steps->commit();
   }
   if (o.json) {
@@ -144,8 +146,8 @@ void run_learn(const LearnOptions& o) {
   }
   std::cout << ", faults";
   for (const sim::Fault& f : spec.faults) {
-    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail")
-              << "@" << f.step;
+    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
+              << f.step;
   }
   std::cout << ", beta " << options.annealing.beta << ", threshold "
             << options.annealing.threshold_deg << "°, window " << options.window_steps

@@ -809,8 +809,7 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
   const std::vector<ScenarioSpec> scenarios = resolve_scenarios(kind, doc);
   for (const ScenarioSpec& s : scenarios) {
     if (!s.faults.empty() || s.malfunction) {
-      throw OptionError(s.path,
-                        "a landscape takes disabled leg sets, e.g. [\"R1\"] or \"every\"");
+      throw OptionError(s.path, "a landscape takes disabled leg sets, e.g. [\"R1\"] or \"every\"");
     }
   }
   LandscapeSpec spec;
@@ -850,6 +849,9 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
   sweep.robot = kind;
   sweep.robot_file = robot.file;
   json names = json::array();
+  const auto working_legs = [&](const ScenarioSpec& s) {
+    return robot::morphology(kind).size() - s.disabled.size();
+  };
   Product combinations{0, false, 0};
   for (const ScenarioSpec& s : scenarios) {
     spec.disabled = s.disabled;
@@ -858,16 +860,22 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
     } catch (const BadInput& e) {
       throw OptionError(s.path, e.what());
     }
-    const std::size_t working = robot::morphology(kind).size() - spec.disabled.size();
-    const Product p = multiply(std::vector<std::uint64_t>(working, spec.period_set.size()));
-    combinations.overflow = combinations.overflow || p.overflow ||
-                            __builtin_add_overflow(combinations.value, p.value, &combinations.value);
+    const Product p = multiply(std::vector<std::uint64_t>(working_legs(s), spec.period_set.size()));
+    combinations.overflow =
+        combinations.overflow || p.overflow ||
+        __builtin_add_overflow(combinations.value, p.value, &combinations.value);
     combinations.approximate += p.approximate;
     sweep.landscapes.push_back(spec);
     names.push_back(s.name);
   }
-  std::string parts = std::to_string(spec.period_set.size()) + " periods ^ working legs";
-  if (scenarios.size() > 1) parts += ", summed over " + std::to_string(scenarios.size()) + " scenarios";
+  std::string parts = std::to_string(spec.period_set.size()) + " periods ^ ";
+  const bool same_count = std::all_of(
+      scenarios.begin(), scenarios.end(),
+      [&](const ScenarioSpec& s) { return working_legs(s) == working_legs(scenarios.front()); });
+  parts += same_count ? std::to_string(working_legs(scenarios.front())) + " working legs"
+                      : "working legs";
+  if (scenarios.size() > 1)
+    parts += ", summed over " + std::to_string(scenarios.size()) + " scenarios";
   check_count(combinations, "combinations", parts, limits);
   sweep.resolved = {{"kind", "landscape"},
                     {"scenarios", names},

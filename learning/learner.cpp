@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <set>
 
 namespace multicpg::learning {
 
@@ -12,14 +11,6 @@ std::vector<std::size_t> LearnerSetup::working() const {
     if (std::find(fixed.begin(), fixed.end(), leg) == fixed.end()) out.push_back(leg);
   }
   return out;
-}
-
-std::vector<std::string> detail_keys(const std::vector<TrialRecord>& trace) {
-  std::set<std::string> keys;
-  for (const TrialRecord& t : trace) {
-    for (const auto& [key, value] : t.details.items()) keys.insert(key);
-  }
-  return {keys.begin(), keys.end()};
 }
 
 double detail_number(const TrialRecord& trial, const std::string& key) {

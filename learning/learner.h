@@ -38,7 +38,7 @@ struct LearnerSetup {
   Periods start;  // C0: the combination walking when the deviation was seen (every leg)
   // Legs whose period never changes: the failed legs (paper §3: never picked).
   std::vector<std::size_t> fixed;
-  double start_deviation_deg = 0.0;  // E of C0 (the detecting window)
+  double start_deviation_deg = 0.0;               // E of C0 (the detecting window)
   std::vector<sim::WindowMeasure> start_windows;  // the detecting window, signed
   // What E is made of: the paper's |yaw change| alone, or robust mode's worst of |yaw change| and
   // |path angle| (sim::WindowMeasure::worst_deg).
@@ -71,8 +71,6 @@ struct TrialRecord {
   nlohmann::json details = nlohmann::json::object();
 };
 
-// The keys of the learners' details in `trace`, sorted (the columns of trace tables).
-std::vector<std::string> detail_keys(const std::vector<TrialRecord>& trace);
 // A detail as a number: a boolean as 1 or 0, NaN when the trial has no number under `key`.
 double detail_number(const TrialRecord& trial, const std::string& key);
 

@@ -1,6 +1,7 @@
 #include "learning/learners.h"
 
 #include <algorithm>
+#include <set>
 
 namespace multicpg::learning {
 
@@ -32,20 +33,26 @@ struct Entry {
 // The one list of learners.
 const std::vector<Entry>& table() {
   static const std::vector<Entry> entries{
-      {{"annealing", "the paper's simulated annealing over one-leg changes (paper §3, Table 2)"},
+      {{"annealing",
+        "the paper's simulated annealing over one-leg changes (paper §3, Table 2)",
+        {"acceptance_probability", "legs_changed", "redraws", "tabu_redraw"}},
        annealing_options,
        make_annealing},
-      {{"random", "random search without replacement over every combination"},
+      {{"random", "random search without replacement over every combination", {}},
        random_options,
        make_random},
-      {{"greedy", "greedy search over one-leg changes of the best combination so far"},
+      {{"greedy",
+        "greedy search over one-leg changes of the best combination so far",
+        {"legs_changed"}},
        greedy_options,
        make_greedy},
-      {{"bayes", "Gaussian-process Bayesian optimisation over the period grid"},
+      {{"bayes", "Gaussian-process Bayesian optimisation over the period grid", {"acquisition"}},
        bayes_options,
        make_bayes},
-      {{"prior", "a GP whose prior mean is what the other leg losses' landscapes predict "
-                 "(Intelligent Trial and Error)"},
+      {{"prior",
+        "a GP whose prior mean is what the other leg losses' landscapes predict "
+        "(Intelligent Trial and Error)",
+        {"acquisition"}},
        prior_options,
        make_prior,
        check_prior},
@@ -55,7 +62,8 @@ const std::vector<Entry>& table() {
 
 const Entry& entry(const std::string& name) {
   const std::vector<Entry>& t = table();
-  const auto it = std::find_if(t.begin(), t.end(), [&](const Entry& e) { return e.info.name == name; });
+  const auto it =
+      std::find_if(t.begin(), t.end(), [&](const Entry& e) { return e.info.name == name; });
   if (it == t.end()) {
     throw OptionError("name", "unknown learner '" + name + "' (" + learner_names() + ")");
   }
@@ -74,6 +82,18 @@ std::string learner_names() {
   std::string out;
   for (const Entry& e : table()) out += (out.empty() ? "" : ", ") + std::string(e.info.name);
   return out;
+}
+
+std::vector<std::string> detail_columns(std::string_view learner,
+                                        const std::vector<TrialRecord>& trace) {
+  std::set<std::string> keys;
+  for (const Entry& e : table()) {
+    if (e.info.name == learner) keys.insert(e.info.details.begin(), e.info.details.end());
+  }
+  for (const TrialRecord& t : trace) {
+    for (const auto& [key, value] : t.details.items()) keys.insert(key);
+  }
+  return {keys.begin(), keys.end()};
 }
 
 LearnerChoice resolve_learner(const LearnerChoice& asked) {

@@ -31,11 +31,19 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(LearnerChoice, name, options)
 struct LearnerInfo {
   std::string_view name;
   std::string_view summary;  // one line, for --help and the report
+  // The keys of the details its trials carry (TrialRecord::details): the columns of trace
+  // tables, there even when an episode tried nothing.
+  std::vector<std::string_view> details;
 };
 // Every learner, in the order of the table.
 std::vector<LearnerInfo> learner_list();
 // "annealing, random, ...": the names, for messages.
 std::string learner_names();
+
+// The columns of `learner`'s details for a trace table: the ones it declares, and any other key
+// a record of `trace` carries, sorted.
+std::vector<std::string> detail_columns(std::string_view learner,
+                                        const std::vector<TrialRecord>& trace);
 
 // The choice with every default filled in. Throws OptionError: key "name" for an unknown
 // learner (naming the known ones), "options.<key>" for an unknown option or a bad value.
@@ -55,7 +63,9 @@ std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const Learner
 struct NoLearnerOptions {
   bool operator==(const NoLearnerOptions&) const = default;
 };
-inline void to_json(nlohmann::json& j, const NoLearnerOptions&) { j = nlohmann::json::object(); }
+inline void to_json(nlohmann::json& j, const NoLearnerOptions&) {
+  j = nlohmann::json::object();
+}
 inline void from_json(const nlohmann::json&, NoLearnerOptions&) {}
 inline void validate(const NoLearnerOptions&) {}
 
@@ -79,8 +89,8 @@ nlohmann::json read_learner_options(const nlohmann::json& asked) {
     try {
       (void)probe.get<Options>();
     } catch (const nlohmann::json::exception&) {
-      throw OptionError(key, "must be a " + std::string(defaults.at(key).type_name()) + ", got " +
-                                 value.dump());
+      throw OptionError(
+          key, "must be a " + std::string(defaults.at(key).type_name()) + ", got " + value.dump());
     }
   }
   const Options options = asked.get<Options>();

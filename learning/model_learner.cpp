@@ -8,7 +8,9 @@
 
 namespace multicpg::learning {
 
-std::string_view to_string(Acquisition a) { return a == Acquisition::pi ? "pi" : "ucb"; }
+std::string_view to_string(Acquisition a) {
+  return a == Acquisition::pi ? "pi" : "ucb";
+}
 
 Acquisition parse_acquisition(std::string_view text) {
   if (text == "pi") return Acquisition::pi;
@@ -41,7 +43,8 @@ ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& 
       best_(setup) {
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
-  for (const sim::WindowMeasure& w : setup.start_windows) model_.observe(start, w.yaw_deg, w.path_deg);
+  for (const sim::WindowMeasure& w : setup.start_windows)
+    model_.observe(start, w.yaw_deg, w.path_deg);
 }
 
 double ModelLearner::window_holds(const Prediction& p) const {
@@ -87,8 +90,7 @@ TrialRecord ModelLearner::observe(const Measurement& m) {
   for (const sim::WindowMeasure& w : m.windows) model_.observe(pending_, w.yaw_deg, w.path_deg);
   const Periods periods = space_.periods(pending_);
   const bool accepted = best_.record(periods, m.deviation_deg);
-  const char* key = params_.acquisition == Acquisition::pi ? "predicted_hold" : "score";
-  return {best_.trials(), periods, m.deviation_deg, accepted, {{key, pending_score_}}};
+  return {best_.trials(), periods, m.deviation_deg, accepted, {{"acquisition", pending_score_}}};
 }
 
 }  // namespace multicpg::learning

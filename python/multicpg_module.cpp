@@ -32,6 +32,7 @@
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "learning/json.h"
+#include "learning/learners.h"
 #include "learning/steering.h"
 #include "python/args.h"
 #include "report/film.h"
@@ -850,7 +851,8 @@ class TrialCallback final : public sim::Observer {
 // The trace of a learning run as arrays: trial, periods [trials, legs], deviation_deg, accepted,
 // and one array per detail of the learner (the annealing's acceptance_probability, ...; NaN
 // where a trial has none).
-py::dict trace_arrays(const std::vector<learning::TrialRecord>& trace, std::size_t legs) {
+py::dict trace_arrays(std::string_view learner, const std::vector<learning::TrialRecord>& trace,
+                      std::size_t legs) {
   std::vector<int> trial;
   std::vector<int> periods;
   std::vector<double> deviation;
@@ -868,7 +870,7 @@ py::dict trace_arrays(const std::vector<learning::TrialRecord>& trace, std::size
   out["periods"] = array(periods, {n, static_cast<py::ssize_t>(legs)});
   out["deviation_deg"] = array(deviation, {n});
   out["accepted"] = accepted;
-  for (const std::string& key : learning::detail_keys(trace)) {
+  for (const std::string& key : learning::detail_columns(learner, trace)) {
     std::vector<double> values;
     for (const learning::TrialRecord& t : trace) values.push_back(learning::detail_number(t, key));
     out[py::str(key)] = array(values, {n});
@@ -900,7 +902,7 @@ py::dict learn(py::handle robot_value, const FaultArgs& fault_args, const Learni
     run = experiments::run_learning(*robot->model, spec, 0, &callback);
   }
   py::dict out = to_python(experiments::learn_json(spec, run.result));
-  out["trace_arrays"] = trace_arrays(run.result.trace, morph.size());
+  out["trace_arrays"] = trace_arrays(spec.learning->learner.name, run.result.trace, morph.size());
   if (spec.record.steps) out["path"] = path_arrays(run.record);
   return out;
 }
@@ -929,7 +931,9 @@ py::dict tunnel(const experiments::RunSpec& spec, long max_steps, const std::str
     if (film) film->finish();
   }
   py::dict result = to_python(experiments::tunnel_json(spec, out, scale));
-  if (out.learned) result["trace_arrays"] = trace_arrays(out.learned->trace, morph.size());
+  if (out.learned)
+    result["trace_arrays"] =
+        trace_arrays(spec.learning->learner.name, out.learned->trace, morph.size());
   result["path"] = path_arrays(out.run.record);
   return result;
 }
