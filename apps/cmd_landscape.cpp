@@ -27,6 +27,7 @@ namespace {
 struct LandscapeOptions {
   std::string robot = "hexapod";
   std::string disable;
+  bool every_loss = false;
   std::string out;
   std::optional<int> jobs;  // empty = every core
   int windows = experiments::kDefaultLandscapeWindows;
@@ -59,35 +60,41 @@ void run(const LandscapeOptions& o) {
     spec.kind = robot::parse_robot(o.robot);
   }
   const robot::Morphology& morph = robot::morphology(spec.kind);
-  if (o.disable.empty()) throw BadInput("--disable: name at least one leg, e.g. R1");
-  spec.disabled = parse_leg_flag(morph, o.disable, "--disable");
+  if (o.every_loss && !o.disable.empty()) {
+    throw BadInput("--every-loss: walks every leg set itself; leave out --disable");
+  }
+  if (o.every_loss && !o.learned.empty()) {
+    throw BadInput("--learned: marks combinations of one scenario; it does not go with --every-loss");
+  }
+  if (!o.every_loss && o.disable.empty()) {
+    throw BadInput("--disable: name at least one leg, e.g. R1 (or --every-loss)");
+  }
+  if (!o.every_loss) spec.disabled = parse_leg_flag(morph, o.disable, "--disable");
   spec.period_set = o.period_set;
   spec.windows = o.windows;
   spec.threshold_deg = o.threshold;
   spec.sim = sim_options(o.sim, o.body, spec.kind);
-  experiments::validate(spec);
+  if (!o.every_loss) experiments::validate(spec);
   if (o.jobs && *o.jobs < 1) {
     throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
   }
   const std::vector<learning::Periods> learned = read_learned(o.learned, spec);
   // The same document an experiment file of kind "landscape" holds, resolved the same way.
+  nlohmann::json document = experiments::landscape_document(spec);
+  if (o.every_loss) document["scenarios"] = "every";
   const experiments::Sweep sweep =
-      experiments::resolve_sweep(experiments::landscape_document(spec), {o.max_runs, "--max-runs"});
+      experiments::resolve_sweep(document, {o.max_runs, "--max-runs"});
   if (experiments::is_primary_process()) ensure_writable_dir(o.out);
-  run_landscape_and_report(*sweep.landscape, o.out, o.jobs.value_or(experiments::default_jobs()),
-                           learned);
+  run_landscapes_and_report(sweep.landscapes, o.out,
+                            o.jobs.value_or(experiments::default_jobs()), learned);
 }
 
-}  // namespace
-
-void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std::string& out,
-                              int jobs, const std::vector<learning::Periods>& learned) {
+// One landscape: what holds and the best.
+void report_landscape(const experiments::Landscape& landscape,
+                      const std::vector<learning::Periods>& learned, const std::string& out) {
+  const experiments::LandscapeSpec& spec = landscape.spec;
   const robot::Morphology& morph = robot::morphology(spec.kind);
-  const experiments::Landscape landscape =
-      experiments::run_landscape(spec, out, jobs, /*progress=*/true, learned);
-  if (!experiments::is_primary_process()) return;  // the primary draws, writes and prints
   const report::FigureFiles figure = report::draw_landscape(landscape, learned, out);
-
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);
   std::cout << std::fixed << std::setprecision(1) << morph.name << ", "
             << robot::leg_set_name(morph, spec.disabled) << " disabled: " << summary.at("count")
@@ -106,6 +113,37 @@ void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std:
             << "\n";
 }
 
+}  // namespace
+
+void run_landscapes_and_report(const std::vector<experiments::LandscapeSpec>& specs,
+                               const std::string& out, int jobs,
+                               const std::vector<learning::Periods>& learned) {
+  if (specs.size() == 1) {
+    const experiments::Landscape landscape =
+        experiments::run_landscape(specs.front(), out, jobs, /*progress=*/true, learned);
+    if (experiments::is_primary_process()) report_landscape(landscape, learned, out);
+    return;
+  }
+  const std::vector<experiments::Landscape> landscapes =
+      experiments::run_landscape_set(specs, out, jobs, /*progress=*/true);
+  if (!experiments::is_primary_process()) return;  // the primary draws, writes and prints
+  for (const experiments::Landscape& l : landscapes) {
+    report::draw_landscape(l, {}, experiments::landscape_set_dir(out, l.spec));
+  }
+  const robot::Morphology& morph = robot::morphology(specs.front().kind);
+  std::cout << morph.name << ", " << specs.size() << " scenarios (share of combinations that hold):\n";
+  std::cout << std::fixed << std::setprecision(1);
+  for (const experiments::Landscape& l : landscapes) {
+    const nlohmann::json summary = experiments::landscape_summary(l, {});
+    std::cout << "  " << std::left << std::setw(10) << robot::leg_set_name(morph, l.spec.disabled)
+              << std::right << std::setw(6) << summary.at("holding").get<std::size_t>() << " of "
+              << std::setw(5) << summary.at("count").get<std::size_t>() << "  ("
+              << 100.0 * summary.at("share_holding").get<double>() << "%)\n";
+  }
+  std::cout << "wrote " << out << "/<scenario>/ and the dataset "
+            << experiments::landscape_set_dataset(out).string() << ".{csv.gz,json}\n";
+}
+
 void register_landscape(CLI::App& app) {
   auto o = std::make_shared<LandscapeOptions>();
   CLI::App* cmd = app.add_subcommand(
@@ -115,7 +153,10 @@ void register_landscape(CLI::App& app) {
   cmd->add_option("--robot", o->robot,
                   "hexapod, quadruped, octopod or a robot file FILE.toml (docs/robots.md)")
       ->capture_default_str();
-  cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2")->required();
+  cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2");
+  cmd->add_flag("--every-loss", o->every_loss,
+                "every loss of one to three legs, each in OUT/<legs>, and their dataset "
+                "OUT/landscapes.{csv.gz,json} (docs/learning.md \"The landscape dataset\")");
   cmd->add_option("--out", o->out, "directory for the runs, CSV, summary and figure (resumes)")
       ->required();
   cmd->add_option("--jobs", o->jobs, "parallel combinations (default: every core)")

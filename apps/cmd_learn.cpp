@@ -16,6 +16,7 @@
 #include "experiments/learning_run.h"
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
+#include "learning/learners.h"
 #include "robot/leg_sets.h"
 #include "sim/fault_spec.h"
 #include "sim/record_csv.h"
@@ -57,9 +58,11 @@ void print_trace(std::ostream& out, const robot::Morphology& morph,
   for (const learning::TrialRecord& t : r.trace) {
     out << std::setw(5) << t.trial << period_cells(t.periods, disabled) << std::setw(10)
         << t.deviation_deg << "°  " << (t.accepted ? "kept" : "rejected");
-    if (t.acceptance_probability < 1.0) {
-      out << " (P = " << std::setprecision(3) << std::scientific << t.acceptance_probability
-          << std::fixed << std::setprecision(2) << ")";
+    // The annealing's acceptance probability of a worse combination (paper §3).
+    const double p = t.details.value("acceptance_probability", 1.0);
+    if (p < 1.0) {
+      out << " (P = " << std::setprecision(3) << std::scientific << p << std::fixed
+          << std::setprecision(2) << ")";
     }
     out << "\n";
   }
@@ -84,17 +87,23 @@ void print_episodes(std::ostream& out, const robot::Morphology& morph,
   out << "\n";
 }
 
-std::string trace_csv(const robot::Morphology& morph, const learning::LearningResult& r) {
+// trace.csv: the neutral columns, then the learner's own details (learning/learner.h).
+std::string trace_csv(const robot::Morphology& morph, const learning::LearnerChoice& learner,
+                      const learning::LearningResult& r) {
+  const std::vector<std::string> details = learning::detail_columns(learner.name, r.trace);
   std::ostringstream f;
   f << "trial";
   for (const robot::Leg& leg : morph.legs) f << "," << leg.name;
-  f << ",deviation_deg,accepted,acceptance_probability\n";
+  f << ",deviation_deg,accepted";
+  for (const std::string& key : details) f << "," << key;
+  f << "\n";
   f.precision(10);
   for (const learning::TrialRecord& t : r.trace) {
     f << t.trial;
     for (int p : t.periods) f << "," << p;
-    f << "," << t.deviation_deg << "," << (t.accepted ? 1 : 0) << "," << t.acceptance_probability
-      << "\n";
+    f << "," << t.deviation_deg << "," << (t.accepted ? 1 : 0);
+    for (const std::string& key : details) f << "," << learning::detail_number(t, key);
+    f << "\n";
   }
   return f.str();
 }
@@ -123,7 +132,7 @@ void run_learn(const LearnOptions& o) {
 
   if (!o.out.empty()) {
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
-    write_file_atomic(dir / "trace.csv", trace_csv(morph, r));
+    write_file_atomic(dir / "trace.csv", trace_csv(morph, options.learner, r));
     steps->commit();
   }
   if (o.json) {
@@ -137,8 +146,8 @@ void run_learn(const LearnOptions& o) {
   }
   std::cout << ", faults";
   for (const sim::Fault& f : spec.faults) {
-    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail")
-              << "@" << f.step;
+    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
+              << f.step;
   }
   std::cout << ", beta " << options.annealing.beta << ", threshold "
             << options.annealing.threshold_deg << "°, window " << options.window_steps

@@ -46,16 +46,23 @@ void run(const RunOptions& o) {
   if (o.out.empty() && !o.check) {
     throw BadInput("--out: name the directory for the runs (or use --check)");
   }
-  if (sweep.landscape) {
-    const std::size_t count = experiments::landscape_combinations(*sweep.landscape).size();
+  if (!sweep.landscapes.empty()) {
+    std::size_t count = 0;
+    for (const experiments::LandscapeSpec& spec : sweep.landscapes) {
+      count += experiments::landscape_combinations(spec).size();
+    }
     if (shard.count > 1) throw BadInput("--shard: a landscape runs whole (no shards)");
     if (o.check) {
       if (experiments::is_primary_process()) {
-        std::cout << o.file << ": a landscape of " << count << " combinations\n";
+        std::cout << o.file << ": "
+                  << (sweep.landscapes.size() == 1
+                          ? std::string("a landscape")
+                          : std::to_string(sweep.landscapes.size()) + " landscapes")
+                  << " of " << count << " combinations\n";
       }
       return;
     }
-    run_landscape_and_report(*sweep.landscape, o.out, jobs);
+    run_landscapes_and_report(sweep.landscapes, o.out, jobs);
     return;
   }
   std::size_t in_shard = 0;

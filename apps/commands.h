@@ -22,12 +22,15 @@ void register_tunnel(CLI::App& app);
 void register_reproduce(CLI::App& app);
 void register_figure(CLI::App& app);
 void register_landscape(CLI::App& app);
+void register_learner_benchmark(CLI::App& app);
 void register_calibrate(CLI::App& app);
 void register_run(CLI::App& app);  // run, rerun, merge
 
-// Walks a landscape in OUT (resumable), draws its map and prints what holds: `landscape` and
-// `run` of a kind = "landscape" file.
-void run_landscape_and_report(const experiments::LandscapeSpec& spec, const std::string& out,
-                              int jobs, const std::vector<learning::Periods>& learned = {});
+// Walks the landscapes in OUT (resumable), draws their maps and prints what holds: `landscape`
+// and `run` of a kind = "landscape" file. One landscape fills OUT; several (a dataset) each fill
+// OUT/<scenario>, and their dataset goes to OUT/landscapes.{csv.gz,json}.
+void run_landscapes_and_report(const std::vector<experiments::LandscapeSpec>& specs,
+                               const std::string& out, int jobs,
+                               const std::vector<learning::Periods>& learned = {});
 
 }  // namespace multicpg::apps

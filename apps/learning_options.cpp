@@ -4,6 +4,7 @@
 
 #include "apps/flag_checks.h"
 #include "common/errors.h"
+#include "learning/learners.h"
 
 namespace multicpg::apps {
 
@@ -16,6 +17,13 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
          "robust (yaw and path angle, several windows to accept, monitoring, steering) "
          "or paper (paper §3 exactly: one window, yaw only)")
       ->default_str(std::string(learning::to_string(o.mode)));
+  cmd.add_option("--learner", o.learner.name,
+                 "which learner searches: " + learning::learner_names() +
+                     " (docs/learning.md \"Learners\")")
+      ->capture_default_str();
+  cmd.add_option("--learner-option", f.learner_options,
+                 "KEY=VALUE, one of the learner's options (repeatable; VALUE is read as JSON "
+                 "when it is JSON, else as text), e.g. acquisition=ucb");
   cmd.add_option_function<std::string>(
          "--steering",
          [&f](const std::string& text) {
@@ -67,6 +75,19 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
 
 learning::CompensationOptions learning_options(const LearningFlags& f) {
   learning::CompensationOptions o = f.options;
+  for (const std::string& item : f.learner_options) {
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw BadInput("--learner-option: expected KEY=VALUE, got '" + item + "'");
+    }
+    const std::string key = item.substr(0, eq);
+    const std::string value = item.substr(eq + 1);
+    if (o.learner.options.contains(key)) {
+      throw BadInput("--learner-option: " + key + " is given twice");
+    }
+    const nlohmann::json parsed = nlohmann::json::parse(value, nullptr, /*allow_exceptions=*/false);
+    o.learner.options[key] = parsed.is_discarded() ? nlohmann::json(value) : parsed;
+  }
   if (o.mode == learning::Mode::paper) {
     if (f.robust_only) {
       throw BadInput(

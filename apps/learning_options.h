@@ -3,6 +3,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
 
 #include "learning/compensation.h"
 #include "sim/stepper.h"
@@ -12,15 +14,17 @@ namespace multicpg::apps {
 struct LearningFlags {
   learning::CompensationOptions options;  // every flag writes its field here
   bool robust_only = false;  // a robust-mode flag (--steering, --hold-windows, ...) was given
+  std::vector<std::string> learner_options;  // --learner-option KEY=VALUE, repeatable
 };
 
-// Adds --mode --steering --hold-windows --monitor-windows --no-period-learning --beta
-// --threshold --window --settle --max-trials --seed, each range shown in --help and checked at
+// Adds --mode --learner --learner-option --steering --hold-windows --monitor-windows
+// --no-period-learning --beta --threshold --window --settle --max-trials --seed, each range shown in --help and checked at
 // parse time (without --beta when `with_beta` is false: the beta study sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);
 
-// The options the flags give (checked with the run, experiments::validate). Throws BadInput (one
-// line) for robust-mode flags in paper mode.
+// The options the flags give (checked with the run, experiments::validate; the learner's options
+// as given, resolved by learning::resolve_learner). Throws BadInput (one line) for robust-mode
+// flags in paper mode or a --learner-option that is not KEY=VALUE.
 learning::CompensationOptions learning_options(const LearningFlags& flags);
 
 }  // namespace multicpg::apps

@@ -69,6 +69,7 @@ experiments::Ending run(int argc, char** argv) {
   apps::register_reproduce(app);
   apps::register_figure(app);
   apps::register_landscape(app);
+  apps::register_learner_benchmark(app);
   apps::register_calibrate(app);
   apps::register_run(app);
   apps::refuse_empty_values(app);

@@ -105,6 +105,9 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
       {"learning.settle_steps", "--settle"},
   };
   if (key == "faults") return fault_flags(f);
+  const std::string option = "learning.learner.options.";
+  if (key.rfind(option, 0) == 0) return "--learner-option " + key.substr(option.size());
+  if (key.rfind("learning.learner", 0) == 0) return "--learner";
   if (const auto it = kFlags.find(key); it != kFlags.end()) return it->second;
   if (key.rfind("sim.", 0) == 0) return sim_flag(key.substr(4));
   // sim.control_dt -> --control-dt, learning.hold_windows -> --hold-windows, steps -> --steps
@@ -127,6 +130,11 @@ experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   if (learn) {
     spec.learning = learning_options(f.learning);
     spec.start = experiments::learning_start(spec.learning->mode);
+    try {
+      spec.learning->learner = learning::resolve_learner(spec.learning->learner);
+    } catch (const OptionError& e) {
+      throw BadInput(flag_of("learning.learner." + e.key(), f) + ": " + e.what());
+    }
   } else {
     spec.start = {parse_periods_flag(morph, f.periods, "--periods"), f.cold ? 0 : f.warmup};
   }

@@ -106,7 +106,7 @@ Scenarios table1_scenarios(const robot::Morphology& morph) {
     s.fit.push_back({name, disabled, all4, "all 4"});
     s.paper_periods.push_back(
         {name, disabled, robot::parse_period_map(morph, learned, learning::kStartPeriod), learned});
-    const std::vector<std::size_t> mirrored = mirror(morph, disabled);
+    const std::vector<std::size_t> mirrored = robot::mirror(morph, disabled);
     s.mirrors.push_back({robot::leg_set_name(morph, mirrored), mirrored, all4, "all 4"});
   }
   return s;

@@ -124,10 +124,10 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
     stepper.steps(window_steps);
     const sim::WindowMeasure window = sim::measure_window(start, stepper.pose());
     m.worst_deg = std::max(m.worst_deg, window.worst_deg());
-    m.holds = m.holds && window.worst_deg() < threshold_deg;
+    m.holds = m.holds && sim::holds(window.worst_deg(), threshold_deg);
     m.windows.push_back(window);
   }
-  m.first_window_passes = std::abs(m.windows.front().yaw_deg) < threshold_deg;
+  m.first_window_passes = sim::holds(std::abs(m.windows.front().yaw_deg), threshold_deg);
   return m;
 }
 
@@ -248,6 +248,56 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
   write_file_atomic(out / "summary.json",
                     landscape_summary(landscape, learned).dump(kJsonIndent) + "\n");
   return landscape;
+}
+
+std::filesystem::path landscape_set_dir(const std::filesystem::path& out, const LandscapeSpec& spec) {
+  return out / robot::leg_set_name(robot::morphology(spec.kind), spec.disabled);
+}
+
+std::filesystem::path landscape_set_dataset(const std::filesystem::path& out) {
+  return out / "landscapes";
+}
+
+std::vector<Landscape> run_landscape_set(const std::vector<LandscapeSpec>& specs,
+                                         const std::filesystem::path& out, int jobs,
+                                         bool progress) {
+  std::vector<Landscape> landscapes;
+  for (const LandscapeSpec& spec : specs) {
+    landscapes.push_back(run_landscape(spec, landscape_set_dir(out, spec), jobs, progress));
+  }
+  if (is_primary_process()) {
+    learning::write_landscape_dataset(landscape_dataset(landscapes), landscape_set_dataset(out));
+  }
+  return landscapes;
+}
+
+learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& landscapes) {
+  learning::LandscapeDataset d;
+  if (landscapes.empty()) return d;
+  const LandscapeSpec& first = landscapes.front().spec;
+  d.robot = first.kind;
+  d.period_set = first.period_set;
+  d.windows = first.windows;
+  d.window_steps = first.window_steps;
+  d.threshold_deg = first.threshold_deg;
+  d.sim = first.sim;
+  for (const Landscape& l : landscapes) {
+    learning::ScenarioLandscape s;
+    s.failed = l.spec.disabled;
+    for (const CombinationMeasure& m : l.combinations) {
+      learning::LandscapePoint p;
+      p.periods = m.periods;
+      for (const sim::WindowMeasure& w : m.windows) {
+        p.yaw_deg.push_back(w.yaw_deg);
+        p.path_deg.push_back(w.path_deg);
+      }
+      p.worst_deg = m.worst_deg;
+      p.holds = m.holds;
+      s.points.push_back(std::move(p));
+    }
+    d.scenarios.push_back(std::move(s));
+  }
+  return d;
 }
 
 std::string landscape_csv(const Landscape& landscape) {

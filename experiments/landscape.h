@@ -16,6 +16,7 @@
 #include "experiments/run_robot.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
+#include "learning/landscapes.h"
 #include "sim/deviation.h"
 #include "sim/sim.h"
 
@@ -91,6 +92,19 @@ std::vector<std::size_t> ranked_combinations(const Landscape& landscape);
 // `learned`: combinations a learner found (every leg's period), placed in the summary.
 Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
                         bool progress, const std::vector<learning::Periods>& learned = {});
+
+// Every scenario of `specs` (one landscape each, the same settings; experiments/sweep.h "every"),
+// each in OUT/<scenario> as run_landscape does (resumable), then the dataset of them all in
+// OUT/landscapes.{csv.gz,json} (learning/landscapes.h).
+std::vector<Landscape> run_landscape_set(const std::vector<LandscapeSpec>& specs,
+                                         const std::filesystem::path& out, int jobs,
+                                         bool progress);
+// The landscapes as one dataset (learning/landscapes.h), in the order given.
+learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& landscapes);
+// OUT/<scenario> of one landscape of a set.
+std::filesystem::path landscape_set_dir(const std::filesystem::path& out, const LandscapeSpec& spec);
+// The stem of a set's dataset files: OUT/landscapes.
+std::filesystem::path landscape_set_dataset(const std::filesystem::path& out);
 
 // landscape.csv: one row per combination: each working leg's period, per window yaw_deg and
 // path_deg, worst_deg, holds, first_window_passes (1/0). Numbers in shortest round-trip form.

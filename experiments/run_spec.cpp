@@ -80,6 +80,9 @@ void validate(const RunSpec& spec) {
   within("learning", [&] {
     learning::validate(*spec.learning);
     learning::validate_faults(*spec.learning, spec.faults);
+    within("learner", [&] {
+      learning::check_learner(spec.learning->learner, spec.robot, sim::failing_legs(spec.faults));
+    });
   });
   if (spec.faults.empty()) {
     throw OptionError("faults", "a learning run needs a leg that fails: there is nothing to learn");

@@ -13,14 +13,6 @@ using robot::Morphology;
 using robot::Side;
 using Legs = std::vector<std::size_t>;
 
-std::size_t mirror_leg(const Morphology& morph, std::size_t leg) {
-  const robot::Leg& l = morph.legs[leg];
-  for (std::size_t j = 0; j < morph.size(); ++j) {
-    if (morph.legs[j].position == l.position && morph.legs[j].side != l.side) return j;
-  }
-  return leg;
-}
-
 std::size_t right_legs(const Morphology& morph, const Legs& legs) {
   return static_cast<std::size_t>(std::count_if(
       legs.begin(), legs.end(), [&](std::size_t l) { return morph.legs[l].side == Side::right; }));
@@ -34,7 +26,7 @@ bool holds_whole_side(const Morphology& morph, const Legs& legs) {
 
 // The representative of {legs, mirror(legs)}: more right legs, then smaller indices.
 bool is_representative(const Morphology& morph, const Legs& legs) {
-  const Legs other = mirror(morph, legs);
+  const Legs other = robot::mirror(morph, legs);
   const std::size_t mine = right_legs(morph, legs);
   const std::size_t theirs = right_legs(morph, other);
   return mine > theirs || (mine == theirs && legs <= other);
@@ -42,20 +34,11 @@ bool is_representative(const Morphology& morph, const Legs& legs) {
 
 }  // namespace
 
-std::vector<std::size_t> mirror(const Morphology& morph, const std::vector<std::size_t>& legs) {
-  Legs out;
-  for (std::size_t leg : legs) out.push_back(mirror_leg(morph, leg));
-  std::sort(out.begin(), out.end());
-  return out;
-}
+namespace {
 
-std::vector<int> mirror_periods(const Morphology& morph, const std::vector<int>& periods) {
-  std::vector<int> out(periods.size());
-  for (std::size_t leg = 0; leg < periods.size(); ++leg) out[mirror_leg(morph, leg)] = periods[leg];
-  return out;
-}
-
-std::vector<Scenario> leg_loss_scenarios(const Morphology& morph, std::size_t max_disabled) {
+// Every set of 1..max_disabled legs (a whole side too, when `whole_sides`), by size, then indices.
+std::vector<Scenario> leg_sets(const Morphology& morph, std::size_t max_disabled,
+                               bool whole_sides) {
   std::vector<Legs> sets;
   const std::size_t n = morph.size();
   for (unsigned mask = 1; mask < (1U << n); ++mask) {
@@ -63,7 +46,9 @@ std::vector<Scenario> leg_loss_scenarios(const Morphology& morph, std::size_t ma
     for (std::size_t i = 0; i < n; ++i) {
       if (mask & (1U << i)) legs.push_back(i);
     }
-    if (legs.size() <= max_disabled && !holds_whole_side(morph, legs)) sets.push_back(legs);
+    if (legs.size() <= max_disabled && (whole_sides || !holds_whole_side(morph, legs))) {
+      sets.push_back(legs);
+    }
   }
   std::sort(sets.begin(), sets.end(), [](const Legs& a, const Legs& b) {
     return a.size() != b.size() ? a.size() < b.size() : a < b;
@@ -71,6 +56,16 @@ std::vector<Scenario> leg_loss_scenarios(const Morphology& morph, std::size_t ma
   std::vector<Scenario> out;
   for (const Legs& legs : sets) out.push_back({robot::leg_set_name(morph, legs), legs});
   return out;
+}
+
+}  // namespace
+
+std::vector<Scenario> leg_loss_scenarios(const Morphology& morph, std::size_t max_disabled) {
+  return leg_sets(morph, max_disabled, /*whole_sides=*/false);
+}
+
+std::vector<Scenario> every_leg_loss(const Morphology& morph, std::size_t max_disabled) {
+  return leg_sets(morph, max_disabled, /*whole_sides=*/true);
 }
 
 std::vector<Scenario> mirror_scenarios(const Morphology& morph, std::size_t max_disabled) {

@@ -22,12 +22,6 @@ inline constexpr int kBetaRuns = 50;      // runs per beta, paper Fig. 14
 // Beta study (paper Fig. 14): 0 = random search, 10 ~ greedy.
 inline const std::vector<double> kBetaStudyValues{0.0, 0.1, 0.3, 0.5, 1.0, 5.0, 10.0};
 
-// The legs' left-right mirror images (R1 <-> L1, ...), sorted.
-std::vector<std::size_t> mirror(const robot::Morphology& morph,
-                                const std::vector<std::size_t>& legs);
-// Periods per leg (morphology order) with each leg's period moved to its mirror image.
-std::vector<int> mirror_periods(const robot::Morphology& morph, const std::vector<int>& periods);
-
 // Every set of 1..max_disabled legs up to left-right mirror, without a whole disabled side.
 // Single legs are all listed (the paper's six one-leg rows); a larger set and its mirror image
 // appear once, as the one with more right legs, ties going to the smaller leg indices (the
@@ -37,6 +31,10 @@ std::vector<Scenario> mirror_scenarios(const robot::Morphology& morph, std::size
 // Every set of 1..max_disabled legs without a whole disabled side, mirror images apart (a robot
 // file's robot need not be symmetric). Ordered by size, then by leg indices.
 std::vector<Scenario> leg_loss_scenarios(const robot::Morphology& morph, std::size_t max_disabled);
+
+// Every set of 1..max_disabled legs, mirror images and whole sides included: the landscape
+// dataset's scenarios (docs/learning.md "The landscape dataset"; hexapod, 3 legs: 6 + 15 + 20).
+std::vector<Scenario> every_leg_loss(const robot::Morphology& morph, std::size_t max_disabled);
 
 // Hexapod: mirror_scenarios(hexapod, 3) = 6 + 9 + 9 = 24. Quadruped: R1, R2, L1, L2 (Fig. 13).
 // Throws BadInput for the octopod, for which the paper reports none.

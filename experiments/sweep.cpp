@@ -389,7 +389,8 @@ ScenarioSpec fault_scenario(const robot::Morphology& morph, const json& text,
 std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& doc) {
   const robot::Morphology& morph = robot::morphology(kind);
   if (!doc.contains("scenarios")) {
-    throw OptionError("scenarios", "is missing: \"paper\", \"all\" or a list of leg sets");
+    throw OptionError("scenarios",
+                      "is missing: \"paper\", \"all\", \"every\" or a list of leg sets");
   }
   const json& s = doc.at("scenarios");
   std::vector<ScenarioSpec> out;
@@ -400,8 +401,11 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
         named = paper_scenarios(kind);
       } else if (s == "all") {
         named = mirror_scenarios(morph, kMaxScenarioLegs);
+      } else if (s == "every") {
+        named = every_leg_loss(morph, kMaxScenarioLegs);
       } else {
-        throw OptionError("scenarios", "must be \"paper\", \"all\" or a list, got " + s.dump());
+        throw OptionError("scenarios",
+                          "must be \"paper\", \"all\", \"every\" or a list, got " + s.dump());
       }
     } catch (const OptionError&) {
       throw;
@@ -432,7 +436,8 @@ std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& d
       }
     }
   } else {
-    throw OptionError("scenarios", "must be \"paper\", \"all\" or a list, got " + s.dump());
+    throw OptionError("scenarios",
+                      "must be \"paper\", \"all\", \"every\" or a list, got " + s.dump());
   }
   return out;
 }
@@ -643,7 +648,7 @@ json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer*
     bool holds = true;
     for (const sim::WindowMeasure& m : run.after_windows) {
       windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
-      holds = holds && m.worst_deg() <= options.annealing.threshold_deg;
+      holds = holds && sim::holds(m.worst_deg(), options.annealing.threshold_deg);
     }
     out["after_windows"] = windows;
     out["holds_after"] = holds;
@@ -802,8 +807,10 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
     }
   }
   const std::vector<ScenarioSpec> scenarios = resolve_scenarios(kind, doc);
-  if (scenarios.size() != 1 || !scenarios.front().faults.empty()) {
-    throw OptionError("scenarios", "a landscape takes one disabled leg set, e.g. [\"R1\"]");
+  for (const ScenarioSpec& s : scenarios) {
+    if (!s.faults.empty() || s.malfunction) {
+      throw OptionError(s.path, "a landscape takes disabled leg sets, e.g. [\"R1\"] or \"every\"");
+    }
   }
   LandscapeSpec spec;
   spec.kind = kind;
@@ -838,20 +845,43 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
     walk.sim = spec.sim;
     validate(walk);  // its body and ground, as for any run of the robot file
   }
-  const std::size_t working = robot::morphology(kind).size() - spec.disabled.size();
-  check_count(multiply(std::vector<std::uint64_t>(working, spec.period_set.size())), "combinations",
-              std::to_string(spec.period_set.size()) + " periods ^ " + std::to_string(working) +
-                  " working legs",
-              limits);
   Sweep sweep;
   sweep.robot = kind;
   sweep.robot_file = robot.file;
+  json names = json::array();
+  const auto working_legs = [&](const ScenarioSpec& s) {
+    return robot::morphology(kind).size() - s.disabled.size();
+  };
+  Product combinations{0, false, 0};
+  for (const ScenarioSpec& s : scenarios) {
+    spec.disabled = s.disabled;
+    try {
+      validate(spec);
+    } catch (const BadInput& e) {
+      throw OptionError(s.path, e.what());
+    }
+    const Product p = multiply(std::vector<std::uint64_t>(working_legs(s), spec.period_set.size()));
+    combinations.overflow =
+        combinations.overflow || p.overflow ||
+        __builtin_add_overflow(combinations.value, p.value, &combinations.value);
+    combinations.approximate += p.approximate;
+    sweep.landscapes.push_back(spec);
+    names.push_back(s.name);
+  }
+  std::string parts = std::to_string(spec.period_set.size()) + " periods ^ ";
+  const bool same_count = std::all_of(
+      scenarios.begin(), scenarios.end(),
+      [&](const ScenarioSpec& s) { return working_legs(s) == working_legs(scenarios.front()); });
+  parts += same_count ? std::to_string(working_legs(scenarios.front())) + " working legs"
+                      : "working legs";
+  if (scenarios.size() > 1)
+    parts += ", summed over " + std::to_string(scenarios.size()) + " scenarios";
+  check_count(combinations, "combinations", parts, limits);
   sweep.resolved = {{"kind", "landscape"},
-                    {"scenarios", {scenarios.front().name}},
+                    {"scenarios", names},
                     {"landscape", landscape_json(spec)},
                     {"sim", sim_doc}};
   add_robot(sweep.resolved, robot);
-  sweep.landscape = spec;
   return sweep;
 }
 
@@ -1231,8 +1261,18 @@ Table trials_table(const Sweep& sweep, const std::vector<json>& results) {
   for (const std::string& c : run_columns(sweep)) t.columns.push_back({c});
   t.columns.push_back({"trial"});
   for (const robot::Leg& leg : morph.legs) t.columns.push_back({"period_" + leg.name});
-  const std::vector<std::string> fields{"deviation_deg", "accepted", "acceptance_probability",
-                                        "legs_changed", "redraws"};
+  // The neutral fields of a trial, then every learner's own details (learning/learner.h).
+  std::set<std::string> details;
+  for (const json& r : results) {
+    for (const json& trial : r.value("trace", json::array())) {
+      for (const auto& item : trial.items()) details.insert(item.key());
+    }
+  }
+  std::vector<std::string> fields{"deviation_deg", "accepted"};
+  for (const char* neutral : {"trial", "periods", "deviation_deg", "accepted"}) {
+    details.erase(neutral);
+  }
+  fields.insert(fields.end(), details.begin(), details.end());
   for (const std::string& c : fields) t.columns.push_back({c});
   for (std::size_t i = 0; i < results.size(); ++i) {
     for (const json& trial : results[i].value("trace", json::array())) {
@@ -1241,7 +1281,7 @@ Table trials_table(const Sweep& sweep, const std::vector<json>& results) {
       for (const robot::Leg& leg : morph.legs) {
         cells.push_back(cell(trial.at("periods").at(leg.name)));
       }
-      for (const std::string& c : fields) cells.push_back(cell(trial.at(c)));
+      for (const std::string& c : fields) cells.push_back(cell(trial.value(c, json())));
       t.add_row(std::move(cells));
     }
   }

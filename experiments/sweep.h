@@ -6,15 +6,17 @@
 //
 // Document keys:
 //   kind       "learning" (default): learning runs, tables per scenario or grid point;
-//              "landscape": every period combination of one leg set walked without learning
+//              "landscape": every period combination of each leg set walked without learning
 //              (landscape.h), with a "landscape" table (period_set, windows, window_steps,
-//              threshold_deg) and "sim", no grid
+//              threshold_deg) and "sim", no grid; several leg sets make a landscape dataset
+//              (landscape.h run_landscape_set)
 //   robot      "hexapod" (default), "quadruped", "octopod" or a robot file "FILE.toml" (relative
 //              to the working directory; an experiment file's own folder, experiment_file.h),
 //              resolved as its layout's name and robot_file, its record (run_robot.h), which is
 //              checked against the file when a resolved document is read back
-//   scenarios  "paper" (paper_scenarios), "all" (mirror_scenarios up to 3 legs) or a list of
-//              disabled leg sets ("R1+R3") and fault timelines
+//   scenarios  "paper" (paper_scenarios), "all" (mirror_scenarios up to 3 legs), "every"
+//              (every_leg_loss up to 3 legs) or a list of disabled leg sets ("R1+R3") and fault
+//              timelines
 //              ({name, faults = [{step, legs, recover}]})
 //   runs       runs per grid point and scenario (default kScenarioRuns); seed: the base seed
 //   learning   learning::CompensationOptions keys (JSON names), except disabled, faults and
@@ -73,7 +75,8 @@ struct Sweep {
   // table: no grid, one row per scenario (Figs. 11, 13); beta: beta alone swept on one
   // scenario (Fig. 14); grid: one row per grid point and scenario. Unused for a landscape.
   ExperimentKind table = ExperimentKind::table;
-  std::optional<LandscapeSpec> landscape;  // kind "landscape" (then no tasks)
+  // kind "landscape" (then no tasks): one landscape per scenario, the same settings.
+  std::vector<LandscapeSpec> landscapes;
 };
 
 // Resolves a document; throws OptionError whose key is the dotted path of the first bad value

@@ -52,8 +52,8 @@ struct Candidate {
   int redraws = 0;       // draws thrown away because they were already tried (tabu)
 };
 
-// One measured trial (paper Fig. 8 row).
-struct TrialRecord {
+// One measured trial of the annealing (paper Fig. 8 row, with the annealing's own details).
+struct AnnealingTrial {
   int trial = 0;  // 1-based
   Periods periods;
   double deviation_deg = 0.0;
@@ -73,7 +73,7 @@ struct AnnealingState {
   int trials = 0;
   StopReason stop = StopReason::running;
   std::mt19937_64 rng;  // the run's only source of randomness (docs/learning.md "Seeding")
-  std::vector<TrialRecord> trace;
+  std::vector<AnnealingTrial> trace;
 };
 
 // Starts a run from C0 = `initial` whose measured deviation is `e_ref_c0`. `disabled` legs keep

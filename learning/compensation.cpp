@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -37,9 +38,6 @@ class Walk {
       take_faults();
     }
   }
-
-  // E of one measured window (docs/learning.md "Deviation"): |yaw(end) - yaw(start)| wrapped.
-  double window() { return std::abs(measured_window().yaw_deg); }
 
   // Yaw change and path angle of one window (robust mode).
   sim::WindowMeasure measured_window() {
@@ -177,6 +175,7 @@ void validate(const CompensationOptions& options) {
   require_in("monitor_windows", options.monitor_windows, kMonitorWindowsLimits);
   require_in("max_episodes", options.max_episodes, kMaxEpisodesLimits);
   within("steering_params", [&] { validate(options.steering_params); });
+  within("learner", [&] { resolve_learner(options.learner); });
 }
 
 void validate_faults(const CompensationOptions& options, const sim::FaultTimeline& faults) {
@@ -189,6 +188,36 @@ void validate_faults(const CompensationOptions& options, const sim::FaultTimelin
 }
 
 namespace {
+
+// Tells the walker's observer that a trial starts (kind trial_start) or was decided (trial_end).
+void emit_trial(Walker& walker, sim::EventKind kind, int episode, int trial, const Periods& periods,
+                double deviation_deg = 0.0, bool accepted = false) {
+  sim::Event e;
+  e.kind = kind;
+  e.episode = episode;
+  e.trial = trial;
+  e.periods = periods;
+  e.deviation_deg = deviation_deg;
+  e.accepted = accepted;
+  walker.emit(e);
+}
+
+// What the episode's learner is told: the robot, C0 and its E, the failed legs, the bounds.
+LearnerSetup learner_setup(const Walker& walker, const CompensationOptions& options,
+                           const Periods& start, std::vector<std::size_t> fixed,
+                           std::vector<sim::WindowMeasure> start_windows,
+                           double start_deviation_deg, std::uint64_t seed) {
+  LearnerSetup setup;
+  setup.robot = walker.controller_model().morphology.kind;
+  setup.start = start;
+  setup.fixed = std::move(fixed);
+  setup.start_deviation_deg = start_deviation_deg;
+  setup.start_windows = std::move(start_windows);
+  setup.yaw_only = options.mode == Mode::paper;
+  setup.search = options.annealing;
+  setup.seed = seed;
+  return setup;
+}
 
 // Tells the walker's observer that episode `number` ended, held or not.
 void emit_episode_end(Walker& walker, int number, const Episode& episode) {
@@ -214,15 +243,17 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   walk.steps(result.settle_steps);
   long windows_since_failure = 0;
   double e = 0.0;
+  sim::WindowMeasure detecting;
   for (;;) {
-    e = walk.window();
-    if (e > params.threshold_deg) break;
+    detecting = walk.measured_window();
+    e = std::abs(detecting.yaw_deg);  // docs/learning.md "Deviation"
+    if (!sim::holds(e, params.threshold_deg)) break;
     if (walk.failed() && ++windows_since_failure >= options.detection_windows) break;
   }
   result.initial_deviation_deg = e;
   result.final_deviation_deg = e;
   result.periods = current_periods(walker);
-  if (!(e > params.threshold_deg)) {
+  if (sim::holds(e, params.threshold_deg)) {
     result.outcome = Outcome::no_deviation;
     result.steps_walked = walk.walked();
     return result;
@@ -237,37 +268,36 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
 
   // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
-  AnnealingState state = start_annealing(
-      params, result.periods, sim::failing_legs(walker.faults().timeline()), e, options.seed);
-  while (std::optional<Candidate> candidate = propose(params, state)) {
-    sim::Event start;
-    start.kind = sim::EventKind::trial_start;
-    start.episode = 1;
-    start.trial = state.trials + 1;
-    start.periods = candidate->periods;
-    walker.emit(start);
-    neural::set_periods(model, walker.controller(), candidate->periods);
+  const std::unique_ptr<Learner> learner = make_learner(
+      options.learner,
+      learner_setup(walker, options, result.periods,
+                    sim::failing_legs(walker.faults().timeline()), {detecting}, e, options.seed));
+  EpisodeHooks hooks;
+  hooks.measure = [&](int trial, const Periods& periods) {
+    emit_trial(walker, sim::EventKind::trial_start, 1, trial, periods);
+    neural::set_periods(model, walker.controller(), periods);
     walk.steps(result.settle_steps);
-    const Decision d = decide(params, state, walk.window());
-    sim::Event end = start;
-    end.kind = sim::EventKind::trial_end;
-    end.deviation_deg = state.trace.back().deviation_deg;
-    end.accepted = d.accepted;
-    walker.emit(end);
-    if (d.stop != StopReason::running) break;
-  }
+    const sim::WindowMeasure window = walk.measured_window();
+    return Measurement{std::abs(window.yaw_deg), {window}};  // paper §3: E = |yaw change|
+  };
+  hooks.decided = [&](const TrialRecord& t) {
+    emit_trial(walker, sim::EventKind::trial_end, 1, t.trial, t.periods, t.deviation_deg,
+               t.accepted);
+    return false;
+  };
+  EpisodeEnd end = run_episode(*learner, hooks);
   // A run that did not converge keeps walking with the accepted combination, the one reported.
-  if (current_periods(walker) != state.accepted) {
-    neural::set_periods(model, walker.controller(), state.accepted);
+  if (current_periods(walker) != end.answer.periods) {
+    neural::set_periods(model, walker.controller(), end.answer.periods);
   }
 
   result.outcome =
-      state.stop == StopReason::below_threshold ? Outcome::converged : Outcome::not_converged;
-  result.reason = state.stop;
-  result.trials = state.trials;
-  result.final_deviation_deg = state.e_ref;
-  result.periods = state.accepted;
-  result.trace = std::move(state.trace);
+      end.reason == StopReason::below_threshold ? Outcome::converged : Outcome::not_converged;
+  result.reason = end.reason;
+  result.trials = end.trials;
+  result.final_deviation_deg = end.answer.deviation_deg;
+  result.periods = end.answer.periods;
+  result.trace = std::move(end.trace);
   result.steps_walked = walk.walked();
   Episode episode;
   episode.detection_step = *result.detection_step;
@@ -312,9 +342,9 @@ class RobustRun {
         result_.final_windows.clear();
         continue;
       }
-      if (error(m) > params_.threshold_deg && options_.learn_periods &&
+      if (!sim::holds(error(m), params_.threshold_deg) && options_.learn_periods &&
           static_cast<int>(result_.episodes.size()) < options_.max_episodes) {
-        episode(error(m));
+        episode(m);
         monitored = 0;
         result_.final_windows.clear();
         continue;
@@ -366,16 +396,18 @@ class RobustRun {
 
   // Measures up to hold_windows windows; E is the worst, and the trial stops at the first
   // window over the threshold.
-  double judge() {
-    double e = 0.0;
+  Measurement judge() {
+    Measurement m;
     for (int w = 0; w < options_.hold_windows; ++w) {
-      e = std::max(e, error(walk_.measured_window()));
-      if (e > params_.threshold_deg) break;
+      m.windows.push_back(walk_.measured_window());
+      m.deviation_deg = std::max(m.deviation_deg, error(m.windows.back()));
+      if (!sim::holds(m.deviation_deg, params_.threshold_deg)) break;
     }
-    return e;
+    return m;
   }
 
-  void episode(double detection_deg) {
+  void episode(const sim::WindowMeasure& detecting) {
+    const double detection_deg = error(detecting);
     const int number = static_cast<int>(result_.episodes.size()) + 1;
     Episode ep;
     ep.detection_step = walk_.walked();
@@ -394,38 +426,33 @@ class RobustRun {
     neural::set_synchronised(walker_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
-    AnnealingState state =
-        start_annealing(params_, periods(), walk_.failed_now(), detection_deg, seed);
+    const std::unique_ptr<Learner> learner =
+        make_learner(options_.learner, learner_setup(walker_, options_, periods(),
+                                                     walk_.failed_now(), {detecting},
+                                                     detection_deg, seed));
     walk_.take_fault_count();
-    while (std::optional<Candidate> candidate = propose(params_, state)) {
-      sim::Event start;
-      start.kind = sim::EventKind::trial_start;
-      start.episode = number;
-      start.trial = state.trials + 1;
-      start.periods = candidate->periods;
-      walker_.emit(start);
-      set(candidate->periods);
-      const Decision d = decide(params_, state, judge());
-      const TrialRecord& t = state.trace.back();
-      sim::Event end = start;
-      end.kind = sim::EventKind::trial_end;
-      end.deviation_deg = t.deviation_deg;
-      end.accepted = d.accepted;
-      walker_.emit(end);
-      if (walk_.take_fault_count() > 0) {
-        ep.interrupted = true;
-        break;
-      }
-      if (d.stop != StopReason::running) break;
-    }
-    if (periods() != state.accepted) set(state.accepted);
-    ep.trials = state.trials;
-    ep.held = state.stop == StopReason::below_threshold;
-    if (state.stop != StopReason::running) ep.reason = state.stop;
-    ep.periods = state.accepted;
-    ep.final_deviation_deg = state.e_ref;
-    for (TrialRecord& t : state.trace) result_.trace.push_back(std::move(t));
-    result_.trials += state.trials;
+    EpisodeHooks hooks;
+    hooks.measure = [&](int trial, const Periods& candidate) {
+      emit_trial(walker_, sim::EventKind::trial_start, number, trial, candidate);
+      set(candidate);
+      return judge();
+    };
+    hooks.decided = [&](const TrialRecord& t) {
+      emit_trial(walker_, sim::EventKind::trial_end, number, t.trial, t.periods, t.deviation_deg,
+                 t.accepted);
+      if (walk_.take_fault_count() == 0) return false;
+      ep.interrupted = true;
+      return true;
+    };
+    EpisodeEnd end = run_episode(*learner, hooks);
+    if (periods() != end.answer.periods) set(end.answer.periods);
+    ep.trials = end.trials;
+    ep.held = end.reason == StopReason::below_threshold;
+    if (end.reason != StopReason::running) ep.reason = end.reason;
+    ep.periods = end.answer.periods;
+    ep.final_deviation_deg = end.answer.deviation_deg;
+    for (TrialRecord& t : end.trace) result_.trace.push_back(std::move(t));
+    result_.trials += end.trials;
     emit_episode_end(walker_, number, ep);
     result_.episodes.push_back(std::move(ep));
   }
@@ -437,7 +464,7 @@ class RobustRun {
     result_.steering = walk_.steering();
     const bool held =
         std::all_of(result_.final_windows.begin(), result_.final_windows.end(),
-                    [&](const sim::WindowMeasure& m) { return error(m) <= params_.threshold_deg; });
+                    [&](const sim::WindowMeasure& m) { return sim::holds(error(m), params_.threshold_deg); });
     if (result_.episodes.empty()) {
       result_.outcome = held ? Outcome::no_deviation : Outcome::not_converged;
       if (!result_.final_windows.empty()) {
@@ -475,6 +502,16 @@ LearningResult compensate(Walker& walker, const CompensationOptions& options) {
 
 namespace {
 
+// The neutral fields of a trial, then the learner's own details beside them.
+nlohmann::json trial_json(const TrialRecord& t, const robot::Morphology& morph) {
+  nlohmann::json j = t.details;
+  j["trial"] = t.trial;
+  j["periods"] = robot::period_map_json(morph, t.periods);
+  j["deviation_deg"] = t.deviation_deg;
+  j["accepted"] = t.accepted;
+  return j;
+}
+
 nlohmann::json episodes_json(const LearningResult& result, const robot::Morphology& morph) {
   nlohmann::json out = nlohmann::json::array();
   for (const Episode& e : result.episodes) {
@@ -496,16 +533,7 @@ nlohmann::json episodes_json(const LearningResult& result, const robot::Morpholo
 nlohmann::json to_json(const LearningResult& result, const robot::Morphology& morph,
                        const std::vector<std::size_t>& disabled) {
   nlohmann::json trace = nlohmann::json::array();
-  for (const TrialRecord& t : result.trace) {
-    trace.push_back({{"trial", t.trial},
-                     {"periods", robot::period_map_json(morph, t.periods)},
-                     {"deviation_deg", t.deviation_deg},
-                     {"accepted", t.accepted},
-                     {"acceptance_probability", t.acceptance_probability},
-                     {"legs_changed", t.legs_changed},
-                     {"redraws", t.redraws},
-                     {"tabu_redraw", t.redraws > 0}});
-  }
+  for (const TrialRecord& t : result.trace) trace.push_back(trial_json(t, morph));
   nlohmann::json disabled_names = nlohmann::json::array();
   for (std::size_t leg : disabled) disabled_names.push_back(morph.legs.at(leg).name);
   return {{"converged", result.converged()},
@@ -563,11 +591,13 @@ LearningResult result_from_json(const nlohmann::json& j, const robot::Morphology
     r.final_windows = j.at("final_windows").get<std::vector<sim::WindowMeasure>>();
     r.steering_effort = j.at("steering_effort").get<double>();
     for (const nlohmann::json& t : j.at("trace")) {
-      r.trace.push_back(
-          TrialRecord{t.at("trial").get<int>(), robot::period_map_from_json(morph, t.at("periods")),
-                      t.at("deviation_deg").get<double>(), t.at("accepted").get<bool>(),
-                      t.at("acceptance_probability").get<double>(), t.at("legs_changed").get<int>(),
-                      t.at("redraws").get<int>()});
+      nlohmann::json details = t;
+      for (const char* neutral : {"trial", "periods", "deviation_deg", "accepted"}) {
+        details.erase(neutral);
+      }
+      r.trace.push_back(TrialRecord{
+          t.at("trial").get<int>(), robot::period_map_from_json(morph, t.at("periods")),
+          t.at("deviation_deg").get<double>(), t.at("accepted").get<bool>(), std::move(details)});
     }
     return r;
   } catch (const nlohmann::json::exception& e) {

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "learning/annealing.h"
+#include "learning/learner.h"
+#include "learning/learners.h"
 #include "learning/steering.h"
 #include "neural/controller.h"
 #include "robot/morphology.h"
@@ -94,7 +96,10 @@ inline constexpr Limits<int> kMaxEpisodesLimits{1, 1000};
 // walker's fault schedule (sim::FaultSchedule) says what came.
 struct CompensationOptions {
   Mode mode = Mode::robust;
+  // The search's bounds for every learner (period set, threshold, trial cap) and the
+  // annealing's beta; recorded as "annealing" since the annealing was the only learner.
   AnnealingParams annealing;
+  LearnerChoice learner;  // which learner searches (learning/learners.h); the paper's annealing
   long window_steps = kDefaultWindowSteps;
   // Unmeasured steps after every period change (paper: and before the first detection window).
   // Empty = paper: default_settle_steps(model); robust: locked_settle_steps(model, periods).
@@ -109,8 +114,8 @@ struct CompensationOptions {
   std::uint64_t seed = 0;
 };
 
-// Throws OptionError (key "annealing.beta", "window_steps", ...; one line) for a value outside
-// its limits. Paper mode ignores the robust-mode options (hold, monitor and max episodes,
+// Throws OptionError (key "annealing.beta", "window_steps", "learner.name", ...; one line) for a
+// value outside its limits or an unknown learner or learner option. Paper mode ignores the robust-mode options (hold, monitor and max episodes,
 // learn_periods, steering).
 void validate(const CompensationOptions& options);
 

@@ -9,6 +9,7 @@
 
 #include "common/json_optional.h"
 #include "learning/compensation.h"
+#include "learning/learners.h"
 #include "sim/course_json.h"
 
 namespace multicpg::learning {
@@ -32,9 +33,23 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(SteeringParams, heading_gain, la
                                                 integral_gain, max_heading_offset_deg, max_effort)
 // The reflex as a run left it (a checkpoint of a steering simulation), every key required.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SteeringState, course, offset_integral_m_steps, last_cut)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(CompensationOptions, mode, annealing, window_steps,
-                                                settle_steps, detection_windows, hold_windows,
-                                                monitor_windows, max_episodes, learn_periods,
-                                                steering, steering_params, seed)
+// The learner is written only when it is not the paper's annealing (every run recorded before
+// there were other learners reads back as the annealing, byte for byte): the type macro's own
+// field expansion (NLOHMANN_JSON_PASTE, as NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT uses
+// it) for every other field, then the learner.
+#define MULTICPG_COMPENSATION_FIELDS                                                         \
+  mode, annealing, window_steps, settle_steps, detection_windows, hold_windows, monitor_windows, \
+      max_episodes, learn_periods, steering, steering_params, seed
+inline void to_json(nlohmann::json& nlohmann_json_j, const CompensationOptions& nlohmann_json_t) {
+  NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, MULTICPG_COMPENSATION_FIELDS))
+  if (nlohmann_json_t.learner != LearnerChoice{}) nlohmann_json_j["learner"] = nlohmann_json_t.learner;
+}
+inline void from_json(const nlohmann::json& nlohmann_json_j, CompensationOptions& nlohmann_json_t) {
+  const CompensationOptions nlohmann_json_default_obj;
+  NLOHMANN_JSON_EXPAND(
+      NLOHMANN_JSON_PASTE(NLOHMANN_JSON_FROM_WITH_DEFAULT, MULTICPG_COMPENSATION_FIELDS))
+  nlohmann_json_t.learner = nlohmann_json_j.value("learner", LearnerChoice{});
+}
+#undef MULTICPG_COMPENSATION_FIELDS
 
 }  // namespace multicpg::learning

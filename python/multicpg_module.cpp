@@ -32,6 +32,7 @@
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "learning/json.h"
+#include "learning/learners.h"
 #include "learning/steering.h"
 #include "python/args.h"
 #include "report/film.h"
@@ -848,19 +849,19 @@ class TrialCallback final : public sim::Observer {
 };
 
 // The trace of a learning run as arrays: trial, periods [trials, legs], deviation_deg, accepted,
-// acceptance_probability.
-py::dict trace_arrays(const std::vector<learning::TrialRecord>& trace, std::size_t legs) {
+// and one array per detail of the learner (the annealing's acceptance_probability, ...; NaN
+// where a trial has none).
+py::dict trace_arrays(std::string_view learner, const std::vector<learning::TrialRecord>& trace,
+                      std::size_t legs) {
   std::vector<int> trial;
   std::vector<int> periods;
   std::vector<double> deviation;
-  std::vector<double> probability;
   py::array_t<bool> accepted(static_cast<py::ssize_t>(trace.size()));
   for (std::size_t i = 0; i < trace.size(); ++i) {
     const learning::TrialRecord& t = trace[i];
     trial.push_back(t.trial);
     periods.insert(periods.end(), t.periods.begin(), t.periods.end());
     deviation.push_back(t.deviation_deg);
-    probability.push_back(t.acceptance_probability);
     accepted.mutable_at(static_cast<py::ssize_t>(i)) = t.accepted;
   }
   const auto n = static_cast<py::ssize_t>(trace.size());
@@ -869,7 +870,11 @@ py::dict trace_arrays(const std::vector<learning::TrialRecord>& trace, std::size
   out["periods"] = array(periods, {n, static_cast<py::ssize_t>(legs)});
   out["deviation_deg"] = array(deviation, {n});
   out["accepted"] = accepted;
-  out["acceptance_probability"] = array(probability, {n});
+  for (const std::string& key : learning::detail_columns(learner, trace)) {
+    std::vector<double> values;
+    for (const learning::TrialRecord& t : trace) values.push_back(learning::detail_number(t, key));
+    out[py::str(key)] = array(values, {n});
+  }
   return out;
 }
 
@@ -897,7 +902,7 @@ py::dict learn(py::handle robot_value, const FaultArgs& fault_args, const Learni
     run = experiments::run_learning(*robot->model, spec, 0, &callback);
   }
   py::dict out = to_python(experiments::learn_json(spec, run.result));
-  out["trace_arrays"] = trace_arrays(run.result.trace, morph.size());
+  out["trace_arrays"] = trace_arrays(spec.learning->learner.name, run.result.trace, morph.size());
   if (spec.record.steps) out["path"] = path_arrays(run.record);
   return out;
 }
@@ -926,7 +931,9 @@ py::dict tunnel(const experiments::RunSpec& spec, long max_steps, const std::str
     if (film) film->finish();
   }
   py::dict result = to_python(experiments::tunnel_json(spec, out, scale));
-  if (out.learned) result["trace_arrays"] = trace_arrays(out.learned->trace, morph.size());
+  if (out.learned)
+    result["trace_arrays"] =
+        trace_arrays(spec.learning->learner.name, out.learned->trace, morph.size());
   result["path"] = path_arrays(out.run.record);
   return result;
 }
@@ -990,7 +997,7 @@ class Annealer {
   const std::shared_ptr<Robot>& robot() const { return robot_; }
   py::list trace() const {
     py::list out;
-    for (const learning::TrialRecord& t : state_.trace) {
+    for (const learning::AnnealingTrial& t : state_.trace) {
       out.append(
           py::dict(py::arg("trial") = t.trial, py::arg("periods") = t.periods,
                    py::arg("deviation_deg") = t.deviation_deg, py::arg("accepted") = t.accepted,
@@ -1019,7 +1026,7 @@ void run_experiment(py::handle source_value, py::handle is_document, py::handle 
   options.progress = false;
   const experiments::Sweep sweep = document ? experiments::resolve_sweep(Json::parse(source))
                                             : experiments::load_experiment_file(source);
-  if (sweep.landscape) {
+  if (!sweep.landscapes.empty()) {
     throw py::value_error(
         "file_or_dict: a landscape has no tidy table; run it with `multicpg run`");
   }

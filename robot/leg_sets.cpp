@@ -138,4 +138,30 @@ std::vector<int> period_map_from_json(const Morphology& morph, const nlohmann::j
   return periods;
 }
 
+namespace {
+
+// The leg at the same place on the other side (itself for a leg on the body's axis).
+std::size_t mirror_leg(const Morphology& morph, std::size_t leg) {
+  const Leg& l = morph.legs[leg];
+  for (std::size_t j = 0; j < morph.size(); ++j) {
+    if (morph.legs[j].position == l.position && morph.legs[j].side != l.side) return j;
+  }
+  return leg;
+}
+
+}  // namespace
+
+LegSet mirror(const Morphology& morph, const LegSet& legs) {
+  LegSet out;
+  for (std::size_t leg : legs) out.push_back(mirror_leg(morph, leg));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<int> mirror_periods(const Morphology& morph, const std::vector<int>& periods) {
+  std::vector<int> out(periods.size());
+  for (std::size_t leg = 0; leg < periods.size(); ++leg) out[mirror_leg(morph, leg)] = periods[leg];
+  return out;
+}
+
 }  // namespace multicpg::robot

@@ -38,6 +38,11 @@ std::vector<int> parse_period_map(const Morphology& morph, std::string_view text
 std::string period_map_text(const Morphology& morph, const std::vector<int>& periods,
                             const LegSet& skip = {});
 
+// The legs' left-right mirror images (R1 <-> L1, ...), sorted.
+LegSet mirror(const Morphology& morph, const LegSet& legs);
+// Periods per leg (morphology order) with each leg's period moved to its mirror image.
+std::vector<int> mirror_periods(const Morphology& morph, const std::vector<int>& periods);
+
 // JSON: a leg set is an array of names, a period map an object {"R1": 4, ...} of every leg.
 nlohmann::json leg_set_json(const Morphology& morph, const LegSet& legs);
 LegSet leg_set_from_json(const Morphology& morph, const nlohmann::json& j);  // throws BadInput

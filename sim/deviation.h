@@ -28,6 +28,12 @@ struct WindowMeasure {
   double worst_deg() const;
 };
 
+// The one test of "held" for trials, windows and landscapes: a deviation strictly under the
+// threshold (paper §3: learning stops when E < E_req).
+inline bool holds(double deviation_deg, double threshold_deg) {
+  return deviation_deg < threshold_deg;
+}
+
 // Below this forward displacement (m) the path angle is not defined (the robot stands or walks
 // backwards): it is reported as +-90 deg, so a robot that does not advance never "holds".
 inline constexpr double kMinForwardForPathM = 1e-3;

@@ -51,7 +51,8 @@ TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
   const auto j = nlohmann::json::parse(read_file(fs::path(dir) / "run/learning.json"));
   const std::string trace = read_file(fs::path(dir) / "run/trace.csv");
   EXPECT_EQ(trace.substr(0, trace.find('\n')),
-            "trial,R1,R2,L1,L2,deviation_deg,accepted,acceptance_probability");
+            "trial,R1,R2,L1,L2,deviation_deg,accepted,acceptance_probability,legs_changed,redraws,"
+            "tabu_redraw");
   EXPECT_EQ(count_lines(trace), j.at("trials").get<int>() + 1);
   const std::string steps = read_file(fs::path(dir) / "run/steps.csv");
   EXPECT_EQ(steps.rfind("step,time_s,x_m,y_m,z_m,yaw_deg,R1_TC_command,", 0), 0u);
@@ -107,9 +108,9 @@ TEST(CliLearn, BadInput) {
 }
 
 // --mode paper is the paper's algorithm as it was before robust mode existed. The
-// fixtures were recorded by `learn --json` before that change; the explicit contact pairs (docs/robots.md)
-// changed the physics in its last bits (1e-13 deg), so deviations match to 1e-9 and every
-// decision exactly.
+// fixtures were recorded by `learn --json` before that change; the explicit contact pairs
+// (docs/robots.md) changed the physics in its last bits (1e-13 deg), so deviations match to 1e-9
+// and every decision exactly.
 TEST(CliLearn, PaperModeReproducesTheRecordedTraces) {
   const fs::path dir = fs::path(MULTICPG_SOURCE_DIR) / "tests/data/paper_traces";
   int checked = 0;

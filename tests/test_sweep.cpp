@@ -105,8 +105,9 @@ terrain = ["flat", "slope:5", "rough:0.01:3"]
   EXPECT_NE(terrain.out.find("9 runs (3 grid points x 3 scenarios x 1 runs)"), std::string::npos)
       << terrain.out;
   // A terrain axis names its runs' files ("slope:5" as "slope_5"); two short robust runs.
-  write(file, "scenarios = [\"R1.CTr:locked\"]\nruns = 1\n[sim.scene]\n"
-              "terrain = [\"flat\", \"slope:5\"]\n");
+  write(file,
+        "scenarios = [\"R1.CTr:locked\"]\nruns = 1\n[sim.scene]\n"
+        "terrain = [\"flat\", \"slope:5\"]\n");
   const fs::path walked_dir = fs::path(dir) / "terrain";
   const CliResult walked = run_cli("run " + file + " --out " + walked_dir.string());
   ASSERT_EQ(walked.exit_code, 0) << walked.err;
@@ -382,7 +383,10 @@ windows = 1
   // A landscape is resumed by running it again, never rerun or merged like a sweep's runs.
   expect_bad_input("rerun " + dir + "/b R1-4_R2-4_L1-4", "holds a landscape, which is not rerun");
   expect_bad_input("merge " + dir + "/m " + dir + "/a", "holds a landscape, which is not rerun");
-  write(dir + "/bad.toml", "kind = \"landscape\"\nscenarios = [\"R1\", \"R2\"]\n");
+  // Several scenarios make a landscape set (a dataset); a scenario of no leg is none.
+  write(dir + "/set.toml", "kind = \"landscape\"\nscenarios = [\"R1\", \"R2\"]\n");
+  EXPECT_EQ(run_cli("run " + dir + "/set.toml --check").exit_code, 0);
+  write(dir + "/bad.toml", "kind = \"landscape\"\nscenarios = [\"R1\", \"X9\"]\n");
   expect_bad_input("run " + dir + "/bad.toml --check", dir + "/bad.toml:2: scenarios");
   write(dir + "/bad.toml",
         "kind = \"landscape\"\nscenarios = [\"R1\"]\n[landscape]\nwindows = [1, 2]\n");

@@ -1,0 +1,138 @@
+// multicpg learner-benchmark: every learner replayed against a landscape dataset's scenarios
+// over many seeds and scored against the truth (docs/learning.md "Learner benchmark").
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "apps/commands.h"
+#include "apps/flag_checks.h"
+#include "apps/options.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/learner_benchmark.h"
+#include "experiments/runner.h"
+#include "robot/leg_sets.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct BenchmarkOptions {
+  std::string dataset = "data/landscapes/hexapod";
+  std::vector<std::string> learners{"annealing", "random", "greedy", "bayes", "prior"};
+  std::vector<std::string> scenarios;
+  int seeds = experiments::kDefaultBenchmarkSeeds;
+  std::uint64_t seed = 1;
+  int budget = experiments::kDefaultBenchmarkBudget;
+  int max_trials = learning::kDefaultMaxTrials;
+  std::string mode = "robust";
+  int hold_windows = learning::kDefaultHoldWindows;
+  std::optional<int> jobs;
+  std::string out;
+};
+
+void run(const BenchmarkOptions& o) {
+  experiments::LearnerBenchmarkSpec spec;
+  spec.dataset = o.dataset;
+  spec.seeds = o.seeds;
+  spec.seed = o.seed;
+  spec.budget = o.budget;
+  const learning::LandscapeDataset probe = learning::read_landscape_dataset(o.dataset);
+  const robot::Morphology& morph = robot::morphology(probe.robot);
+  spec.search.period_set = probe.period_set;
+  spec.search.threshold_deg = probe.threshold_deg;
+  spec.search.max_trials = o.max_trials;
+  const learning::Mode mode = learning::parse_mode(o.mode);
+  spec.protocol.yaw_only = mode == learning::Mode::paper;
+  spec.protocol.hold_windows = o.hold_windows;
+  if (o.hold_windows > probe.windows) {
+    throw BadInput("--hold-windows: the dataset measured " + std::to_string(probe.windows) +
+                   " windows per combination, got " + std::to_string(o.hold_windows));
+  }
+  for (const std::string& name : o.learners) {
+    learning::LearnerChoice choice;
+    choice.name = name;
+    try {
+      spec.learners.push_back(learning::resolve_learner(choice));
+    } catch (const OptionError& e) {
+      throw BadInput("--learners: " + std::string(e.what()));
+    }
+  }
+  for (const std::string& s : o.scenarios) {
+    spec.scenarios.push_back(parse_leg_flag(morph, s, "--scenarios"));
+  }
+  ensure_writable_dir(o.out);
+  const experiments::LearnerBenchmark b =
+      experiments::run_learner_benchmark(spec, o.jobs.value_or(experiments::default_jobs()));
+  experiments::write_learner_benchmark(b, o.out);
+
+  const nlohmann::json summary = experiments::benchmark_summary(b);
+  std::cout << morph.name << ", " << b.cells.size() / spec.learners.size() << " scenarios x "
+            << spec.seeds << " seeds, " << o.mode << " trials, held within " << spec.budget
+            << " trials (scenarios where a combination holds):\n";
+  std::cout << std::fixed << std::setprecision(1);
+  for (const nlohmann::json& l : summary.at("learners")) {
+    const auto text = [](const nlohmann::json& v) {
+      std::ostringstream s;
+      if (v.is_null()) {
+        s << "-";
+      } else {
+        s << std::fixed << std::setprecision(0) << v.get<double>();
+      }
+      return s.str();
+    };
+    std::cout << "  " << std::left << std::setw(10) << l.at("learner").at("name").get<std::string>()
+              << std::right << " held " << std::setw(5)
+              << 100.0 * l.at("share_held").get<double>() << "% [" << std::setw(5)
+              << 100.0 * l.at("share_low").get<double>() << ", " << std::setw(5)
+              << 100.0 * l.at("share_high").get<double>() << "], trials to held: median "
+              << text(l.at("median_trials")) << " (quartiles " << text(l.at("q1_trials")) << "-"
+              << text(l.at("q3_trials")) << "), false stops " << l.at("false_stops") << "\n";
+  }
+  std::cout << std::setprecision(1) << "replayed in " << b.seconds << " s; wrote " << o.out
+            << "/{benchmark.csv,benchmark.md,runs.csv,summary.json}\n";
+}
+
+}  // namespace
+
+void register_learner_benchmark(CLI::App& app) {
+  auto o = std::make_shared<BenchmarkOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "learner-benchmark",
+      "replay every learner against a landscape dataset's scenarios and score it against the "
+      "truth (docs/learning.md \"Learner benchmark\")");
+  cmd->add_option("--dataset", o->dataset,
+                  "the landscape dataset (learning/landscapes.h): DIR/NAME of NAME.csv.gz and "
+                  "NAME.json")
+      ->capture_default_str();
+  cmd->add_option("--learners", o->learners, "learners to replay, e.g. annealing,bayes")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--scenarios", o->scenarios,
+                  "leg sets to replay, e.g. R1,R1+R3 (default: every one of the dataset)")
+      ->delimiter(',');
+  cmd->add_option("--seeds", o->seeds, "runs per scenario and learner")
+      ->check(in(experiments::kBenchmarkSeedsLimits))
+      ->capture_default_str();
+  cmd->add_option("--seed", o->seed, "base seed of the runs")->check(seed_value())->capture_default_str();
+  cmd->add_option("--budget", o->budget, "trials within which a run counts as held")
+      ->check(in(experiments::kBenchmarkBudgetLimits))
+      ->capture_default_str();
+  cmd->add_option("--max-trials", o->max_trials, "each learner's trial cap")
+      ->check(in(learning::kMaxTrialsLimits))
+      ->capture_default_str();
+  cmd->add_option("--mode", o->mode,
+                  "how a trial is measured: robust (worst of yaw and path over up to "
+                  "--hold-windows windows) or paper (one window's yaw)")
+      ->capture_default_str();
+  cmd->add_option("--hold-windows", o->hold_windows, "robust mode: windows a trial must hold")
+      ->check(in(learning::kHoldWindowsLimits))
+      ->capture_default_str();
+  cmd->add_option("--jobs", o->jobs, "threads (default: every core)")
+      ->check(in(experiments::kJobsLimits));
+  cmd->add_option("--out", o->out, "directory for benchmark.{csv,md}, runs.csv, summary.json")
+      ->required();
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace multicpg::apps

@@ -1,0 +1,254 @@
+#include "experiments/learner_benchmark.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "experiments/runner.h"
+#include "robot/leg_sets.h"
+
+namespace multicpg::experiments {
+namespace {
+
+constexpr int kJsonIndent = 2;
+constexpr double kZ95 = 1.959963984540054;  // the normal quantile of a two-sided 95% interval
+
+// Wilson's score interval for a binomial share (Wilson 1927): well behaved at 0 and 1, where the
+// normal approximation is not.
+std::pair<double, double> wilson(int successes, int n) {
+  if (n == 0) return {0.0, 0.0};
+  const double p = static_cast<double>(successes) / n;
+  const double z2 = kZ95 * kZ95;
+  const double centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
+  const double half = kZ95 / (1.0 + z2 / n) * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n));
+  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+}
+
+// The q-quantile (nearest rank) of `values` where `missing` more values are larger than any;
+// none when the rank falls among the missing.
+std::optional<double> quantile(std::vector<double> values, std::size_t missing, double q) {
+  const std::size_t n = values.size() + missing;
+  if (n == 0) return std::nullopt;
+  const auto rank = static_cast<std::size_t>(std::ceil(q * static_cast<double>(n)));
+  const std::size_t index = rank == 0 ? 0 : rank - 1;
+  if (index >= values.size()) return std::nullopt;
+  std::sort(values.begin(), values.end());
+  return values[index];
+}
+
+BenchmarkCell score(const learning::ScenarioLandscape& s, const std::string& name,
+                    const std::string& learner, std::vector<learning::ReplayRun> runs,
+                    int budget) {
+  BenchmarkCell c;
+  c.scenario = name;
+  c.learner = learner;
+  c.combinations = s.points.size();
+  c.holding = s.holding();
+  c.runs = static_cast<int>(runs.size());
+  c.random_expected = learning::random_expected_trials(s);
+  std::vector<double> held;
+  const double best = s.points[s.best()].worst_deg;
+  double trials = 0.0;
+  double gap = 0.0;
+  for (const learning::ReplayRun& r : runs) {
+    c.deviated += r.deviated ? 1 : 0;
+    // A start that never deviated holds in its first window, but counts as held only if it
+    // holds in truth (then it needed no trial).
+    const std::optional<int> at = r.deviated ? r.held_at
+                                  : r.answer_holds ? std::optional<int>(0)
+                                                   : std::nullopt;
+    if (at && *at <= budget) ++c.held_within;
+    if (at) held.push_back(*at);
+    c.false_stops += r.false_stop || (!r.deviated && !r.answer_holds) ? 1 : 0;
+    trials += r.trials;
+    gap += r.answer_worst_deg - best;
+  }
+  c.share_held = c.runs == 0 ? 0.0 : static_cast<double>(c.held_within) / c.runs;
+  std::tie(c.share_low, c.share_high) = wilson(c.held_within, c.runs);
+  const std::size_t missing = runs.size() - held.size();
+  c.q1 = quantile(held, missing, 0.25);
+  c.median = quantile(held, missing, 0.5);
+  c.q3 = quantile(held, missing, 0.75);
+  c.mean_trials = c.runs == 0 ? 0.0 : trials / c.runs;
+  c.mean_gap_deg = c.runs == 0 ? 0.0 : gap / c.runs;
+  c.run_list = std::move(runs);
+  return c;
+}
+
+std::string optional_cell(const std::optional<double>& v, int decimals) {
+  return v ? fixed(*v, decimals) : "-";
+}
+
+}  // namespace
+
+LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int jobs) {
+  LearnerBenchmark b;
+  b.spec = spec;
+  b.dataset = learning::read_landscape_dataset(spec.dataset);
+  const robot::Morphology& morph = robot::morphology(b.dataset.robot);
+  std::vector<const learning::ScenarioLandscape*> scenarios;
+  if (spec.scenarios.empty()) {
+    for (const learning::ScenarioLandscape& s : b.dataset.scenarios) scenarios.push_back(&s);
+  }
+  for (const std::vector<std::size_t>& legs : spec.scenarios) {
+    const learning::ScenarioLandscape* s = b.dataset.find(legs);
+    if (s == nullptr) {
+      throw BadInput("the dataset has no scenario " + robot::leg_set_name(morph, legs));
+    }
+    scenarios.push_back(s);
+  }
+  for (const learning::LearnerChoice& l : spec.learners) {
+    for (const learning::ScenarioLandscape* s : scenarios) {
+      learning::check_learner(l, b.dataset.robot, s->failed);
+    }
+  }
+
+  // One job per scenario and learner, its seeds in order; results land in their own cell.
+  const std::size_t cells = scenarios.size() * spec.learners.size();
+  b.cells.resize(cells);
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const auto start = std::chrono::steady_clock::now();
+  const auto work = [&] {
+    for (std::size_t i = next++; i < cells; i = next++) {
+      const learning::ScenarioLandscape& s = *scenarios[i / spec.learners.size()];
+      const learning::LearnerChoice& l = spec.learners[i % spec.learners.size()];
+      const std::string name = robot::leg_set_name(morph, s.failed);
+      try {
+        std::vector<learning::ReplayRun> runs;
+        for (int k = 0; k < spec.seeds; ++k) {
+          const std::uint64_t seed = derive_seed(spec.seed, name + "#" + std::to_string(k));
+          runs.push_back(learning::replay_run(b.dataset, s, l, spec.search, spec.protocol, seed));
+        }
+        b.cells[i] = score(s, name, l.name, std::move(runs), spec.budget);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = cells;
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 1; t < std::max(1, jobs); ++t) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+  b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return b;
+}
+
+Table benchmark_table(const LearnerBenchmark& b) {
+  Table t;
+  for (const char* c : {"scenario", "learner"}) t.columns.push_back({c, Align::left});
+  for (const char* c : {"combinations", "holding", "runs", "held_within_budget", "share_held",
+                        "share_low", "share_high", "q1_trials", "median_trials", "q3_trials",
+                        "false_stops", "mean_trials", "mean_gap_deg", "random_expected_trials",
+                        "oracle_trials"}) {
+    t.columns.push_back({c});
+  }
+  for (const BenchmarkCell& c : b.cells) {
+    t.add_row({c.scenario, c.learner, std::to_string(c.combinations), std::to_string(c.holding),
+               std::to_string(c.runs), std::to_string(c.held_within), fixed(c.share_held, 3),
+               fixed(c.share_low, 3), fixed(c.share_high, 3), optional_cell(c.q1, 0),
+               optional_cell(c.median, 0), optional_cell(c.q3, 0), std::to_string(c.false_stops),
+               fixed(c.mean_trials, 1), fixed(c.mean_gap_deg, 2),
+               optional_cell(c.random_expected, 1), c.holding > 0 ? "1" : "-"});
+  }
+  return t;
+}
+
+Table benchmark_runs_table(const LearnerBenchmark& b) {
+  Table t;
+  for (const char* c : {"scenario", "learner"}) t.columns.push_back({c, Align::left});
+  for (const char* c : {"run", "deviated", "trials", "reason", "held_at", "false_stop",
+                        "answer_holds", "answer_worst_deg", "first_holding_tried"}) {
+    t.columns.push_back({c});
+  }
+  for (const BenchmarkCell& c : b.cells) {
+    for (std::size_t k = 0; k < c.run_list.size(); ++k) {
+      const learning::ReplayRun& r = c.run_list[k];
+      t.add_row({c.scenario, c.learner, std::to_string(k), r.deviated ? "1" : "0",
+                 std::to_string(r.trials),
+                 r.deviated ? std::string(learning::to_string(r.reason)) : "no deviation",
+                 r.held_at ? std::to_string(*r.held_at) : "", r.false_stop ? "1" : "0",
+                 r.answer_holds ? "1" : "0", shortest(r.answer_worst_deg),
+                 r.first_holding_tried ? std::to_string(*r.first_holding_tried) : ""});
+    }
+  }
+  return t;
+}
+
+nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
+  const LearnerBenchmarkSpec& s = b.spec;
+  nlohmann::json learners = nlohmann::json::array();
+  for (const learning::LearnerChoice& l : s.learners) {
+    // Pooled over the scenarios where something holds.
+    int runs = 0;
+    int held = 0;
+    int false_stops = 0;
+    std::vector<double> trials;
+    std::size_t missing = 0;
+    double worst_share = 1.0;
+    for (const BenchmarkCell& c : b.cells) {
+      if (c.learner != l.name || c.holding == 0) continue;
+      runs += c.runs;
+      held += c.held_within;
+      false_stops += c.false_stops;
+      worst_share = std::min(worst_share, c.share_held);
+      for (const learning::ReplayRun& r : c.run_list) {
+        const std::optional<int> at = r.deviated ? r.held_at
+                                      : r.answer_holds ? std::optional<int>(0)
+                                                       : std::nullopt;
+        if (at) {
+          trials.push_back(*at);
+        } else {
+          ++missing;
+        }
+      }
+    }
+    const auto [low, high] = wilson(held, runs);
+    const auto q = [&](double p) {
+      const std::optional<double> v = quantile(trials, missing, p);
+      return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+    };
+    learners.push_back({{"learner", l},
+                        {"runs", runs},
+                        {"held_within_budget", held},
+                        {"share_held", runs == 0 ? 0.0 : static_cast<double>(held) / runs},
+                        {"share_low", low},
+                        {"share_high", high},
+                        {"worst_scenario_share_held", worst_share},
+                        {"q1_trials", q(0.25)},
+                        {"median_trials", q(0.5)},
+                        {"q3_trials", q(0.75)},
+                        {"false_stops", false_stops}});
+  }
+  return {{"dataset", s.dataset.string()},
+          {"robot", robot::to_string(b.dataset.robot)},
+          {"seeds", s.seeds},
+          {"seed", s.seed},
+          {"budget", s.budget},
+          {"max_trials", s.search.max_trials},
+          {"threshold_deg", s.search.threshold_deg},
+          {"yaw_only", s.protocol.yaw_only},
+          {"hold_windows", s.protocol.hold_windows},
+          {"scenarios", b.cells.size() / std::max<std::size_t>(1, s.learners.size())},
+          {"learners", learners}};
+}
+
+void write_learner_benchmark(const LearnerBenchmark& b, const std::filesystem::path& out) {
+  const Table table = benchmark_table(b);
+  write_file_atomic(out / "benchmark.csv", to_csv(table));
+  write_file_atomic(out / "benchmark.md", to_markdown(table));
+  write_file_atomic(out / "runs.csv", to_csv(benchmark_runs_table(b)));
+  write_file_atomic(out / "summary.json", benchmark_summary(b).dump(kJsonIndent) + "\n");
+}
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,81 @@
+// The learner benchmark (docs/learning.md "Learner benchmark"): every learner replayed against
+// every scenario of a landscape dataset (learning/benchmark.h) over many seeds, scored against
+// the truth, beside the two exact baselines of each landscape (random search's expected trials,
+// the oracle's one).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/limits.h"
+#include "common/table.h"
+#include "learning/benchmark.h"
+#include "learning/landscapes.h"
+#include "learning/learners.h"
+
+namespace multicpg::experiments {
+
+// Trials within which a run counts as held: the paper's annealing needs about 20 (paper §4).
+inline constexpr int kDefaultBenchmarkBudget = 20;
+inline constexpr int kDefaultBenchmarkSeeds = 100;
+inline constexpr Limits<int> kBenchmarkSeedsLimits{1, 100'000};
+inline constexpr Limits<int> kBenchmarkBudgetLimits{1, 100'000};
+
+struct LearnerBenchmarkSpec {
+  std::filesystem::path dataset;  // learning/landscapes.h
+  std::vector<learning::LearnerChoice> learners;  // resolved
+  int seeds = kDefaultBenchmarkSeeds;
+  std::uint64_t seed = 1;  // run k of a scenario has seed derive_seed(seed, "<scenario>#k")
+  int budget = kDefaultBenchmarkBudget;
+  learning::AnnealingParams search;  // the dataset's period set and threshold; the trial cap
+  learning::TrialProtocol protocol;
+  std::vector<std::vector<std::size_t>> scenarios;  // empty: every scenario of the dataset
+};
+
+// One learner on one scenario over its seeds.
+struct BenchmarkCell {
+  std::string scenario;
+  std::string learner;
+  std::size_t combinations = 0;
+  std::size_t holding = 0;  // in the landscape
+  int runs = 0;
+  int deviated = 0;           // runs whose start deviated (the others never learn)
+  int held_within = 0;        // stopped, held, on a holding combination within the budget
+  double share_held = 0.0;    // held_within / runs
+  double share_low = 0.0;     // its 95% Wilson interval
+  double share_high = 0.0;
+  // Quartiles of the trials to a held combination over all runs (a run that never held counts
+  // as more than any); empty where more than that share of runs never held.
+  std::optional<double> q1, median, q3;
+  int false_stops = 0;
+  double mean_trials = 0.0;         // over the runs, however they ended
+  double mean_gap_deg = 0.0;        // answer's worst deviation minus the landscape's best
+  std::optional<double> random_expected;  // (N + 1) / (K + 1), none when nothing holds
+  std::vector<learning::ReplayRun> run_list;  // each seed's run
+};
+
+struct LearnerBenchmark {
+  LearnerBenchmarkSpec spec;
+  learning::LandscapeDataset dataset;
+  std::vector<BenchmarkCell> cells;  // scenario by scenario, each learner in spec order
+  double seconds = 0.0;              // wall time of the replays
+};
+
+// Throws BadInput for an unreadable dataset, an unknown scenario, or search bounds that do not
+// fit it. Runs on `jobs` threads; the results do not depend on them.
+LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int jobs);
+
+// benchmark.csv: a row per scenario and learner. runs.csv: a row per run.
+Table benchmark_table(const LearnerBenchmark& b);
+Table benchmark_runs_table(const LearnerBenchmark& b);
+// The per-learner totals over the scenarios with at least one holding combination (pooled
+// runs), and the options that decided the results.
+nlohmann::json benchmark_summary(const LearnerBenchmark& b);
+// Writes OUT/benchmark.{csv,md}, OUT/runs.csv, OUT/summary.json.
+void write_learner_benchmark(const LearnerBenchmark& b, const std::filesystem::path& out);
+
+}  // namespace multicpg::experiments

@@ -1,0 +1,95 @@
+#include "learning/additive_model.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace multicpg::learning {
+
+AdditiveModel::AdditiveModel(const SearchSpace& space, const AdditiveModelParams& params,
+                             std::vector<std::vector<double>> prior_mean)
+    : space_(space), params_(params), prior_mean_(std::move(prior_mean)) {
+  const std::size_t legs = space.working().size();
+  const std::size_t q = space.period_set().size();
+  const std::size_t pairs = params.pair_deg > 0.0 ? legs * (legs - 1) / 2 : 0;
+  features_ = 1 + legs * q + pairs * q * q;
+  if (prior_mean_.empty()) prior_mean_.assign(kOutputs, std::vector<double>(space.size(), 0.0));
+  if (prior_mean_.size() != kOutputs || prior_mean_[0].size() != space.size() ||
+      prior_mean_[1].size() != space.size()) {
+    throw std::logic_error("AdditiveModel: a prior mean per output and combination");
+  }
+  precision_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(features_),
+                                     static_cast<Eigen::Index>(features_));
+  b_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(features_), kOutputs);
+  const auto var = [](double sd) { return sd * sd; };
+  precision_(0, 0) = 1.0 / var(params.intercept_deg);
+  for (std::size_t f = 1; f < 1 + legs * q; ++f) {
+    precision_(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(f)) =
+        1.0 / var(params.effect_deg);
+  }
+  for (std::size_t f = 1 + legs * q; f < features_; ++f) {
+    precision_(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(f)) =
+        1.0 / var(params.pair_deg);
+  }
+}
+
+std::vector<std::size_t> AdditiveModel::active(std::size_t combination) const {
+  const std::size_t legs = space_.working().size();
+  const std::size_t q = space_.period_set().size();
+  std::vector<std::size_t> digit(legs);
+  for (std::size_t i = 0; i < legs; ++i) digit[i] = space_.digit(combination, i);
+  std::vector<std::size_t> out{0};
+  for (std::size_t i = 0; i < legs; ++i) out.push_back(1 + i * q + digit[i]);
+  if (params_.pair_deg > 0.0) {
+    std::size_t pair = 0;
+    for (std::size_t i = 0; i < legs; ++i) {
+      for (std::size_t j = i + 1; j < legs; ++j, ++pair) {
+        out.push_back(1 + legs * q + pair * q * q + digit[i] * q + digit[j]);
+      }
+    }
+  }
+  return out;
+}
+
+void AdditiveModel::observe(std::size_t combination, double yaw_deg, double path_deg) {
+  const std::vector<std::size_t> a = active(combination);
+  const double w = 1.0 / (params_.noise_deg * params_.noise_deg);
+  const double y[kOutputs] = {yaw_deg - prior_mean_[0][combination],
+                              path_deg - prior_mean_[1][combination]};
+  for (std::size_t i : a) {
+    for (std::size_t j : a) {
+      precision_(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) += w;
+    }
+    for (std::size_t o = 0; o < kOutputs; ++o) {
+      b_(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(o)) += w * y[o];
+    }
+  }
+  solved_ = false;
+}
+
+void AdditiveModel::predict(std::vector<Prediction>& yaw, std::vector<Prediction>& path) const {
+  if (!solved_) {
+    // The precision is symmetric positive definite (a diagonal prior plus X^T X).
+    const Eigen::LLT<Eigen::MatrixXd> llt(precision_);
+    covariance_ = llt.solve(Eigen::MatrixXd::Identity(precision_.rows(), precision_.cols()));
+    mean_ = llt.solve(b_);
+    solved_ = true;
+  }
+  yaw.resize(space_.size());
+  path.resize(space_.size());
+  for (std::size_t c = 0; c < space_.size(); ++c) {
+    const std::vector<std::size_t> a = active(c);
+    double m[kOutputs] = {prior_mean_[0][c], prior_mean_[1][c]};
+    double var = 0.0;
+    for (std::size_t i : a) {
+      const auto ii = static_cast<Eigen::Index>(i);
+      m[0] += mean_(ii, 0);
+      m[1] += mean_(ii, 1);
+      for (std::size_t j : a) var += covariance_(ii, static_cast<Eigen::Index>(j));
+    }
+    const double sd = std::sqrt(std::max(var, 0.0));
+    yaw[c] = {m[0], sd};
+    path[c] = {m[1], sd};
+  }
+}
+
+}  // namespace multicpg::learning

@@ -1,0 +1,63 @@
+// A Gaussian-process model of a window's signed yaw change and path angle over the combinations
+// of a search space, for the model-based learners (learning/bayes.cpp, learning/prior.cpp).
+//
+// The kernel is a sum over working legs of a categorical kernel on each leg's period, plus a
+// constant and, optionally, a sum over pairs of legs of the product of their categorical
+// kernels: the turn a gait makes is close to a sum of what each leg's period contributes
+// (docs/learning.md "Learners"). Such a GP is exactly Bayesian linear regression on one-hot
+// features (a weight per leg and period, per pair of legs and periods, and a constant), so it is
+// computed in weight space: a trial costs O(D^2) for D features, whatever the number of trials,
+// and a prediction over every combination O(N k^2) for k features active per combination.
+#pragma once
+
+#include <Eigen/Dense>
+#include <cstddef>
+#include <vector>
+
+#include "learning/search_space.h"
+
+namespace multicpg::learning {
+
+struct AdditiveModelParams {
+  double noise_deg = 0.0;      // sd of one window around its combination's mean
+  double intercept_deg = 0.0;  // prior sd of the constant
+  double effect_deg = 0.0;     // prior sd of each leg's contribution at each period
+  double pair_deg = 0.0;       // prior sd of each pair's contribution; 0 = no pairs
+};
+
+// Prediction of one output for one combination: mean and sd of its mean (without the noise).
+struct Prediction {
+  double mean = 0.0;
+  double sd = 0.0;
+};
+
+class AdditiveModel {
+ public:
+  // `prior_mean[output][combination]`: a mean the weights correct (empty: zero), for each of the
+  // outputs (yaw, path).
+  AdditiveModel(const SearchSpace& space, const AdditiveModelParams& params,
+                std::vector<std::vector<double>> prior_mean = {});
+
+  static constexpr std::size_t kOutputs = 2;  // yaw change, path angle
+
+  // One window of `combination`: its yaw change and path angle.
+  void observe(std::size_t combination, double yaw_deg, double path_deg);
+  // Both outputs for every combination.
+  void predict(std::vector<Prediction>& yaw, std::vector<Prediction>& path) const;
+  double noise_deg() const { return params_.noise_deg; }
+
+ private:
+  std::vector<std::size_t> active(std::size_t combination) const;
+
+  const SearchSpace& space_;
+  AdditiveModelParams params_;
+  std::vector<std::vector<double>> prior_mean_;
+  std::size_t features_ = 0;
+  Eigen::MatrixXd precision_;  // A = Sigma0^-1 + X^T X / noise^2
+  Eigen::MatrixXd b_;          // Sigma0^-1 m0 (= 0) + X^T (y - prior mean) / noise^2, per output
+  mutable bool solved_ = false;
+  mutable Eigen::MatrixXd covariance_;  // A^-1
+  mutable Eigen::MatrixXd mean_;        // A^-1 b, per output
+};
+
+}  // namespace multicpg::learning

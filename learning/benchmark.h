@@ -1,0 +1,59 @@
+// Learners scored against the truth (docs/learning.md "Learner benchmark"): a learner learns on
+// a scenario's landscape (learning/landscapes.h) instead of a walking robot. A trial is a lookup:
+// each window it walks is one of the combination's measured windows, drawn by the run's seed,
+// so trial noise is the landscape's own; whether its final combination holds is read from every
+// window the landscape measured.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "learning/landscapes.h"
+#include "learning/learners.h"
+
+namespace multicpg::learning {
+
+// How a trial is measured, as the online loop does (learning/compensation.h) with the steering
+// reflex off: the paper's one window of |yaw change|, or robust mode's worst error of up to
+// hold_windows windows, stopping at the first over the threshold.
+struct TrialProtocol {
+  bool yaw_only = false;  // paper mode
+  int hold_windows = 3;   // robust mode (kDefaultHoldWindows)
+};
+
+// One learning run replayed on one scenario.
+struct ReplayRun {
+  bool deviated = false;  // the start (all 4) deviated in its drawn window, so learning ran
+  int trials = 0;
+  StopReason reason = StopReason::running;
+  Periods answer;                 // the combination the learner ended with
+  bool answer_holds = false;      // in truth: every window of the landscape under the threshold
+  double answer_worst_deg = 0.0;  // its worst window in the landscape
+  // The trial at which the learner stopped, held, on a combination that holds in truth.
+  std::optional<int> held_at;
+  bool false_stop = false;  // it stopped, held, on a combination that does not hold in truth
+  // The first trial whose combination holds in truth, whether or not the learner saw it.
+  std::optional<int> first_holding_tried;
+  std::vector<TrialRecord> trace;
+};
+
+// Replays `choice` on `scenario` of `dataset` with run seed `seed`: the start's E is one drawn
+// window of the all-4 combination; if it is under the threshold the run ends there (no
+// deviation). The learner's seed and every window draw derive from `seed`; the window drawn for
+// a combination at its k-th measurement depends only on (seed, combination, k), so every learner
+// sees the same noise for the same combination (common random numbers). `search` bounds the
+// search (period set and threshold must be the dataset's). Throws BadInput when the choice or
+// the bounds do not fit the dataset.
+ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
+                     const LearnerChoice& choice, const AnnealingParams& search,
+                     const TrialProtocol& protocol, std::uint64_t seed);
+
+// The two exact baselines of a scenario: random search without replacement needs (N+1)/(K+1)
+// trials on average to draw the first of K holding combinations among N (the start excluded);
+// the oracle needs one. Empty when none holds.
+std::optional<double> random_expected_trials(const ScenarioLandscape& scenario);
+
+}  // namespace multicpg::learning

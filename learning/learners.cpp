@@ -1,0 +1,120 @@
+#include "learning/learners.h"
+
+#include <algorithm>
+#include <set>
+
+namespace multicpg::learning {
+
+// Each learner's file defines these two functions (learning/learner.h "To add a learner").
+nlohmann::json annealing_options(const nlohmann::json& asked);
+std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json& options);
+nlohmann::json random_options(const nlohmann::json& asked);
+std::unique_ptr<Learner> make_random(const LearnerSetup& setup, const nlohmann::json& options);
+nlohmann::json greedy_options(const nlohmann::json& asked);
+std::unique_ptr<Learner> make_greedy(const LearnerSetup& setup, const nlohmann::json& options);
+nlohmann::json bayes_options(const nlohmann::json& asked);
+std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::json& options);
+nlohmann::json prior_options(const nlohmann::json& asked);
+std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options);
+void check_prior(const nlohmann::json& options, robot::RobotKind robot,
+                 const std::vector<std::size_t>& failed);
+
+namespace {
+
+struct Entry {
+  LearnerInfo info;
+  nlohmann::json (*options)(const nlohmann::json& asked);
+  std::unique_ptr<Learner> (*make)(const LearnerSetup& setup, const nlohmann::json& options);
+  // What can be checked of a run before it starts (null: nothing beyond the options).
+  void (*check)(const nlohmann::json& options, robot::RobotKind robot,
+                const std::vector<std::size_t>& failed) = nullptr;
+};
+
+// The one list of learners.
+const std::vector<Entry>& table() {
+  static const std::vector<Entry> entries{
+      {{"annealing",
+        "the paper's simulated annealing over one-leg changes (paper §3, Table 2)",
+        {"acceptance_probability", "legs_changed", "redraws", "tabu_redraw"}},
+       annealing_options,
+       make_annealing},
+      {{"random", "random search without replacement over every combination", {}},
+       random_options,
+       make_random},
+      {{"greedy",
+        "greedy search over one-leg changes of the best combination so far",
+        {"legs_changed"}},
+       greedy_options,
+       make_greedy},
+      {{"bayes", "Gaussian-process Bayesian optimisation over the period grid", {"acquisition"}},
+       bayes_options,
+       make_bayes},
+      {{"prior",
+        "a GP whose prior mean is what the other leg losses' landscapes predict "
+        "(Intelligent Trial and Error)",
+        {"acquisition"}},
+       prior_options,
+       make_prior,
+       check_prior},
+  };
+  return entries;
+}
+
+const Entry& entry(const std::string& name) {
+  const std::vector<Entry>& t = table();
+  const auto it =
+      std::find_if(t.begin(), t.end(), [&](const Entry& e) { return e.info.name == name; });
+  if (it == t.end()) {
+    throw OptionError("name", "unknown learner '" + name + "' (" + learner_names() + ")");
+  }
+  return *it;
+}
+
+}  // namespace
+
+std::vector<LearnerInfo> learner_list() {
+  std::vector<LearnerInfo> out;
+  for (const Entry& e : table()) out.push_back(e.info);
+  return out;
+}
+
+std::string learner_names() {
+  std::string out;
+  for (const Entry& e : table()) out += (out.empty() ? "" : ", ") + std::string(e.info.name);
+  return out;
+}
+
+std::vector<std::string> detail_columns(std::string_view learner,
+                                        const std::vector<TrialRecord>& trace) {
+  std::set<std::string> keys;
+  for (const Entry& e : table()) {
+    if (e.info.name == learner) keys.insert(e.info.details.begin(), e.info.details.end());
+  }
+  for (const TrialRecord& t : trace) {
+    for (const auto& [key, value] : t.details.items()) keys.insert(key);
+  }
+  return {keys.begin(), keys.end()};
+}
+
+LearnerChoice resolve_learner(const LearnerChoice& asked) {
+  const Entry& e = entry(asked.name);
+  if (!asked.options.is_object()) {
+    throw OptionError("options", "must be a table of the learner's options");
+  }
+  LearnerChoice out;
+  out.name = asked.name;
+  within("options", [&] { out.options = e.options(asked.options); });
+  return out;
+}
+
+void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
+                   const std::vector<std::size_t>& failed) {
+  const Entry& e = entry(choice.name);
+  if (e.check != nullptr) within("options", [&] { e.check(choice.options, robot, failed); });
+}
+
+std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const LearnerSetup& setup) {
+  return entry(choice.name).make(setup, choice.options);
+}
+
+}  // namespace multicpg::learning

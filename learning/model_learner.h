@@ -1,0 +1,82 @@
+// A learner that picks each trial by a model of every combination's windows
+// (learning/additive_model.h): the combination most likely to hold, or the one with the lowest
+// optimistic error; the model-based learners (bayes: a GP alone; prior: a GP around what other
+// scenarios predict) differ only in the model's prior mean.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <random>
+#include <string_view>
+#include <vector>
+
+#include "common/limits.h"
+#include "learning/additive_model.h"
+#include "learning/learner.h"
+#include "learning/search_space.h"
+
+namespace multicpg::learning {
+
+enum class Acquisition {
+  pi,   // probability of improvement past the threshold: that a window of it holds
+  ucb,  // lowest confidence bound of the error (upper confidence bound of its negative)
+};
+std::string_view to_string(Acquisition a);
+Acquisition parse_acquisition(std::string_view text);  // throws OptionError("acquisition")
+
+struct ModelLearnerParams {
+  AdditiveModelParams model;
+  Acquisition acquisition = Acquisition::pi;
+  double kappa = 2.0;  // ucb: how many sds below its predicted error a combination is scored
+};
+
+// The options of a model-based learner, as a learner's options table (learning/learners.h).
+// Defaults, in degrees: a window's yaw change scatters by about 3 deg around its combination's
+// mean (the landscapes' windows), one leg's period moves the mean by up to ~10 deg, the start
+// turns up to ~40 deg per window (paper Fig. 8: 37.86), pairs of legs add little.
+struct ModelOptions {
+  std::string acquisition = "pi";
+  double kappa = 2.0;
+  double noise_deg = 3.0;
+  double intercept_deg = 30.0;
+  double effect_deg = 8.0;
+  double pair_deg = 2.0;
+};
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(ModelOptions, acquisition, kappa, noise_deg,
+                                                intercept_deg, effect_deg, pair_deg)
+// Scales from a hundredth of a degree to a U-turn (pairs may be off: 0); kappa up to 10 sds.
+inline constexpr Limits<double> kModelScaleLimits{0.01, 180.0};
+inline constexpr Limits<double> kPairScaleLimits{0.0, 180.0};
+inline constexpr Limits<double> kKappaLimits{0.0, 10.0};
+// Throws OptionError naming the key of a value outside its range.
+void validate(const ModelOptions& options);
+ModelLearnerParams model_learner_params(const ModelOptions& options);
+
+class ModelLearner final : public Learner {
+ public:
+  // `prior_mean`: as AdditiveModel's (empty: zero). Throws BadInput for a start outside the
+  // space.
+  ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
+               std::vector<std::vector<double>> prior_mean = {});
+
+  std::optional<Periods> propose() override;
+  TrialRecord observe(const Measurement& measurement) override;
+  StopReason stop() const override { return best_.stop(); }
+  Answer answer() const override { return best_.answer(); }
+
+ private:
+  // P(|x| < threshold) for x ~ N(mean, sd^2 + noise^2): one window of the output holds.
+  double window_holds(const Prediction& p) const;
+
+  LearnerSetup setup_;
+  ModelLearnerParams params_;
+  SearchSpace space_;
+  AdditiveModel model_;
+  std::vector<bool> tried_;
+  BestSoFar best_;
+  std::size_t pending_ = 0;
+  double pending_score_ = 0.0;
+};
+
+}  // namespace multicpg::learning

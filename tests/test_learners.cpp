@@ -1,0 +1,345 @@
+// The learners (learning/learner.h, learning/learners.h) on synthetic landscapes whose truth is
+// known, the landscape files (learning/landscapes.h), and the CLI that chooses and benchmarks them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "common/errors.h"
+#include "learning/benchmark.h"
+#include "learning/landscapes.h"
+#include "learning/learners.h"
+#include "tests/cli_runner.h"
+
+namespace multicpg::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using learning::AnnealingParams;
+using learning::LandscapeDataset;
+using learning::LandscapePoint;
+using learning::LearnerChoice;
+using learning::Periods;
+using learning::ReplayRun;
+using learning::ScenarioLandscape;
+using learning::StopReason;
+using learning::TrialProtocol;
+
+const std::vector<int> kPeriodSet{4, 5, 6, 8, 9};
+// Each quadruped leg's (R1, R2, L1, L2) pull on the yaw per step up the period set: a landscape
+// that is additive, as the model-based learners assume, and the same across scenarios, so the
+// other scenarios predict the one under test.
+const std::vector<double> kLegWeightDeg{3.0, 2.0, 1.0, 2.5};
+constexpr double kPathPerYaw = 0.3;
+const std::vector<double> kWindowNoiseDeg{-0.5, 0.0, 0.5};
+
+int period_index(int period) {
+  return static_cast<int>(std::find(kPeriodSet.begin(), kPeriodSet.end(), period) -
+                          kPeriodSet.begin());
+}
+
+// A scenario of the quadruped whose yaw is `offset` minus each working leg's weight times its
+// step up the period set; with `offset` = every working weight × 4 + 6 only the last few
+// combinations up the set hold.
+ScenarioLandscape synthetic_scenario(const std::vector<std::size_t>& failed, bool none_holds) {
+  ScenarioLandscape s;
+  s.failed = failed;
+  std::vector<std::size_t> working;
+  double top = 0.0;
+  for (std::size_t leg = 0; leg < kLegWeightDeg.size(); ++leg) {
+    if (std::find(failed.begin(), failed.end(), leg) != failed.end()) continue;
+    working.push_back(leg);
+    top += 4.0 * kLegWeightDeg[leg];
+  }
+  const double offset = none_holds ? 100.0 : top + 6.0;
+  std::vector<int> index(working.size(), 0);
+  while (true) {
+    LandscapePoint p;
+    p.periods.assign(kLegWeightDeg.size(), learning::kStartPeriod);
+    double yaw = offset;
+    for (std::size_t i = 0; i < working.size(); ++i) {
+      p.periods[working[i]] = kPeriodSet[static_cast<std::size_t>(index[i])];
+      yaw -= kLegWeightDeg[working[i]] * index[i];
+    }
+    p.holds = true;
+    for (double noise : kWindowNoiseDeg) {
+      p.yaw_deg.push_back(yaw + noise);
+      p.path_deg.push_back(kPathPerYaw * (yaw + noise));
+      const double worst = std::max(std::abs(yaw + noise), std::abs(kPathPerYaw * (yaw + noise)));
+      p.worst_deg = std::max(p.worst_deg, worst);
+      p.holds = p.holds && worst < learning::kDefaultThresholdDeg;
+    }
+    s.points.push_back(p);
+    std::size_t i = 0;
+    while (i < index.size() && ++index[i] == static_cast<int>(kPeriodSet.size())) index[i++] = 0;
+    if (i == index.size()) break;
+  }
+  return s;
+}
+
+// Every one-leg loss of the quadruped (R1, R2, L1, L2), and R1+R2 where nothing holds.
+LandscapeDataset synthetic_dataset() {
+  LandscapeDataset d;
+  d.robot = robot::RobotKind::quadruped;
+  d.period_set = kPeriodSet;
+  d.windows = static_cast<int>(kWindowNoiseDeg.size());
+  d.window_steps = 400;
+  d.threshold_deg = learning::kDefaultThresholdDeg;
+  d.sim = nlohmann::json::object();
+  for (std::size_t leg = 0; leg < kLegWeightDeg.size(); ++leg) {
+    d.scenarios.push_back(synthetic_scenario({leg}, false));
+  }
+  d.scenarios.push_back(synthetic_scenario({0, 1}, true));
+  return d;
+}
+
+constexpr std::size_t kL2 = 3;
+constexpr std::size_t kR2 = 1;
+
+AnnealingParams search(int max_trials) {
+  AnnealingParams p;
+  p.period_set = kPeriodSet;
+  p.max_trials = max_trials;
+  return p;
+}
+
+ReplayRun replay(const LandscapeDataset& d, const std::vector<std::size_t>& failed,
+                 const LearnerChoice& choice, std::uint64_t seed, int max_trials = 60) {
+  const ScenarioLandscape* s = d.find(failed);
+  EXPECT_NE(s, nullptr);
+  return learning::replay_run(d, *s, learning::resolve_learner(choice), search(max_trials),
+                              TrialProtocol{}, seed);
+}
+
+class Dataset : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = make_temp_dir("learners-");
+    data_ = synthetic_dataset();
+    learning::write_landscape_dataset(data_, fs::path(dir_) / "synthetic");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string stem() const { return dir_ + "/synthetic"; }
+  LearnerChoice choice(const std::string& name) const {
+    LearnerChoice c{name, nlohmann::json::object()};
+    if (name == "prior") c.options["dataset"] = stem();
+    return c;
+  }
+  std::string dir_;
+  LandscapeDataset data_;
+};
+
+TEST(Learners, TheTableNamesEveryLearnerAndRefusesUnknownOnes) {
+  std::vector<std::string> names;
+  for (const learning::LearnerInfo& l : learning::learner_list()) names.emplace_back(l.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"annealing", "random", "greedy", "bayes", "prior"}));
+  try {
+    learning::resolve_learner({"simplex", nlohmann::json::object()});
+    FAIL() << "an unknown learner was accepted";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.key(), "name");
+    EXPECT_NE(std::string(e.what()).find("annealing, random, greedy, bayes, prior"),
+              std::string::npos);
+  }
+  EXPECT_THROW(learning::resolve_learner({"bayes", {{"kappa_typo", 1.0}}}), OptionError);
+  EXPECT_THROW(learning::resolve_learner({"bayes", {{"kappa", "high"}}}), OptionError);
+  EXPECT_THROW(learning::resolve_learner({"bayes", {{"noise_deg", -1.0}}}), OptionError);
+  // Resolving fills every default in, so a run records every option that decides its result.
+  const LearnerChoice bayes = learning::resolve_learner({"bayes", nlohmann::json::object()});
+  EXPECT_TRUE(bayes.options.contains("kappa"));
+  EXPECT_TRUE(bayes.options.contains("acquisition"));
+  EXPECT_EQ(learning::resolve_learner(bayes), bayes);
+}
+
+TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
+  const LandscapeDataset back = learning::read_landscape_dataset(stem());
+  ASSERT_EQ(back.scenarios.size(), data_.scenarios.size());
+  EXPECT_EQ(back.period_set, kPeriodSet);
+  for (std::size_t i = 0; i < back.scenarios.size(); ++i) {
+    EXPECT_EQ(back.scenarios[i].failed, data_.scenarios[i].failed);
+    EXPECT_EQ(back.scenarios[i].holding(), data_.scenarios[i].holding());
+    ASSERT_EQ(back.scenarios[i].points.size(), data_.scenarios[i].points.size());
+    EXPECT_EQ(back.scenarios[i].points.back().periods, data_.scenarios[i].points.back().periods);
+    EXPECT_NEAR(back.scenarios[i].points.back().yaw_deg[2],
+                data_.scenarios[i].points.back().yaw_deg[2],
+                learning::kLandscapeAngleResolutionDeg);
+  }
+  EXPECT_GT(data_.find({kL2})->holding(), 0u);
+  EXPECT_EQ(data_.find({0, 1})->holding(), 0u);
+
+  // One byte changed in the compressed table: the manifest's checksum no longer matches.
+  const fs::path csv = stem() + ".csv.gz";
+  std::string bytes = read_file(csv.string());
+  ASSERT_GT(bytes.size(), 40u);
+  {
+    std::string cut = bytes.substr(0, bytes.size() / 2);
+    std::ofstream(csv, std::ios::binary) << cut;
+    EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
+  }
+  fs::remove(csv);
+  EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
+}
+
+TEST_F(Dataset, EveryLearnerKeepsTheFailedLegsAndTheSetAndRepeatsItself) {
+  for (const learning::LearnerInfo& info : learning::learner_list()) {
+    SCOPED_TRACE(std::string(info.name));
+    const LearnerChoice c = choice(std::string(info.name));
+    const ReplayRun a = replay(data_, {kL2}, c, 7);
+    ASSERT_TRUE(a.deviated);
+    ASSERT_GT(a.trials, 0);
+    for (const learning::TrialRecord& t : a.trace) {
+      EXPECT_EQ(t.periods[kL2], learning::kStartPeriod);
+      for (int p : t.periods) EXPECT_NE(period_index(p), static_cast<int>(kPeriodSet.size()));
+      // Its details are the ones it declares, so trace tables have fixed columns.
+      const std::vector<std::string> declared = learning::detail_columns(info.name, {});
+      for (const auto& [key, value] : t.details.items()) {
+        EXPECT_NE(std::find(declared.begin(), declared.end(), key), declared.end()) << key;
+      }
+    }
+    // Same seed, same run, to the last detail.
+    const ReplayRun b = replay(data_, {kL2}, c, 7);
+    ASSERT_EQ(a.trace.size(), b.trace.size());
+    for (std::size_t i = 0; i < a.trace.size(); ++i) {
+      EXPECT_EQ(a.trace[i].periods, b.trace[i].periods);
+      EXPECT_EQ(a.trace[i].deviation_deg, b.trace[i].deviation_deg);
+      EXPECT_EQ(a.trace[i].details, b.trace[i].details);
+    }
+    EXPECT_EQ(a.answer, b.answer);
+  }
+}
+
+TEST_F(Dataset, EveryLearnerTriesEachCombinationOnceWhenNoneHolds) {
+  // R1+R2 lost: 25 combinations of L1 and L2, none holding; the start (4, 4) is walked already.
+  for (const learning::LearnerInfo& info : learning::learner_list()) {
+    SCOPED_TRACE(std::string(info.name));
+    const ReplayRun r = replay(data_, {0, 1}, choice(std::string(info.name)), 3, 100);
+    EXPECT_EQ(r.reason, StopReason::space_exhausted);
+    EXPECT_EQ(r.trials, 24);
+    std::set<Periods> tried;
+    for (const learning::TrialRecord& t : r.trace) tried.insert(t.periods);
+    EXPECT_EQ(tried.size(), 24u);
+    EXPECT_EQ(tried.count(Periods{4, 4, 4, 4}), 0u);
+    EXPECT_FALSE(r.answer_holds);
+    // The trial cap ends it first when it is lower (paper Table 2).
+    const ReplayRun capped = replay(data_, {0, 1}, choice(std::string(info.name)), 3, 10);
+    EXPECT_EQ(capped.reason, StopReason::trial_cap);
+    EXPECT_EQ(capped.trials, 10);
+  }
+}
+
+TEST_F(Dataset, ModelsFindTheHoldingCombinationsSoonerThanChance) {
+  // L2 lost: 2 of 125 combinations hold, so chance needs (N+1)/(K+1) = 41.7 trials on average.
+  const ScenarioLandscape& s = *data_.find({kL2});
+  ASSERT_EQ(s.holding(), 2u);
+  ASSERT_NEAR(*learning::random_expected_trials(s), 125.0 / 3.0, 1e-9);
+  constexpr int kSeeds = 20;
+  const auto mean_trials = [&](const std::string& name) {
+    double sum = 0.0;
+    for (int seed = 0; seed < kSeeds; ++seed) {
+      const ReplayRun r = replay(data_, {kL2}, choice(name), static_cast<std::uint64_t>(seed), 124);
+      EXPECT_TRUE(r.answer_holds) << name << " seed " << seed;
+      EXPECT_FALSE(r.false_stop) << name << " seed " << seed;
+      sum += r.trials;
+    }
+    return sum / kSeeds;
+  };
+  const double random = mean_trials("random");
+  const double bayes = mean_trials("bayes");
+  const double prior = mean_trials("prior");
+  EXPECT_GT(random, 20.0);
+  EXPECT_LT(bayes, random / 2);
+  // What the other scenarios teach (the same pull of every leg) leaves the prior little to try.
+  EXPECT_LT(prior, bayes);
+}
+
+TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
+  for (const char* seen : {"L2", "R2"}) {
+    LearnerChoice c = choice("prior");
+    c.options["scenarios"] = {"R1", seen};
+    EXPECT_THROW(
+        learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped, {kL2}),
+        BadInput)
+        << seen;
+  }
+  LearnerChoice fine = choice("prior");
+  fine.options["scenarios"] = {"R1", "L1"};
+  EXPECT_NO_THROW(
+      learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped, {kL2}));
+  LearnerChoice missing = choice("prior");
+  missing.options["dataset"] = dir_ + "/nothing-here";
+  EXPECT_THROW(learning::check_learner(learning::resolve_learner(missing),
+                                       robot::RobotKind::quadruped, {kL2}),
+               BadInput);
+}
+
+TEST_F(Dataset, TheBenchmarkCommandScoresLearnersTheSameOnAnyThreadCount) {
+  const std::string common = "learner-benchmark --dataset " + stem() +
+                             " --learners random,greedy,bayes --seeds 12 --scenarios L2,R1+R2";
+  const CliResult one = run_cli(common + " --jobs 1 --out " + dir_ + "/one");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const CliResult two = run_cli(common + " --jobs 2 --out " + dir_ + "/two");
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  for (const char* name : {"benchmark.csv", "runs.csv"}) {
+    const std::string a = read_file(dir_ + "/one/" + name);
+    EXPECT_FALSE(a.empty()) << name;
+    EXPECT_EQ(a, read_file(dir_ + "/two/" + name)) << name;
+  }
+  // One row per scenario and learner, 12 runs each.
+  const std::string table = read_file(dir_ + "/one/benchmark.csv");
+  EXPECT_EQ(count_lines(table), 1 + 2 * 3);
+  EXPECT_EQ(count_lines(read_file(dir_ + "/one/runs.csv")), 1 + 2 * 3 * 12);
+  const auto summary = nlohmann::json::parse(read_file(dir_ + "/one/summary.json"));
+  EXPECT_EQ(summary.at("seeds"), 12);
+
+  for (const auto& [args, mention] : std::vector<std::pair<std::string, std::string>>{
+           {"--learners simplex", "unknown learner 'simplex'"},
+           {"--learners random --scenarios R1+R2+L1+L2", "R1+R2+L1+L2"},
+           {"--learners random --seeds 0", "--seeds"},
+           {"--learners random --budget -1", "--budget"},
+       }) {
+    const CliResult bad =
+        run_cli("learner-benchmark --dataset " + stem() + " " + args + " --out " + dir_ + "/bad");
+    EXPECT_EQ(bad.exit_code, 2) << args;
+    EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+    EXPECT_NE(bad.err.find(mention), std::string::npos) << bad.err;
+  }
+  const CliResult none = run_cli("learner-benchmark --dataset " + dir_ +
+                                 "/nothing-here --learners random --out " + dir_ + "/bad");
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir_ + "/bad/benchmark.csv"));
+}
+
+TEST(CliLearner, LearnTakesALearnerAndItsOptionsAndRecordsThem) {
+  const CliResult r = run_cli(
+      "learn --robot quadruped --disable L2 --learner bayes --learner-option kappa=1.5 --seed 1 "
+      "--json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json learner = nlohmann::json::parse(r.out).at("options").at("learner");
+  EXPECT_EQ(learner.at("name"), "bayes");
+  EXPECT_EQ(learner.at("options").at("kappa"), 1.5);
+  EXPECT_TRUE(learner.at("options").contains("noise_deg"));  // every default, recorded
+  EXPECT_EQ(run_cli("learn --robot quadruped --disable L2 --learner bayes --learner-option "
+                    "kappa=1.5 --seed 1 --json")
+                .out,
+            r.out);
+  for (const auto& [args, mention] : std::vector<std::pair<std::string, std::string>>{
+           {"--learner simplex", "unknown learner 'simplex'"},
+           {"--learner bayes --learner-option kappa", "KEY=VALUE"},
+           {"--learner bayes --learner-option nope=1", "nope"},
+           {"--learner random --learner-option kappa=1", "kappa"},
+       }) {
+    const CliResult bad = run_cli("learn --robot quadruped --disable L2 " + args);
+    EXPECT_EQ(bad.exit_code, 2) << args;
+    EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+    EXPECT_NE(bad.err.find(mention), std::string::npos) << bad.err;
+  }
+}
+
+}  // namespace
+}  // namespace multicpg::testing
