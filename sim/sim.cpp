@@ -17,6 +17,7 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
+#include "neural/validate.h"
 #include "robot/joint_map.h"
 #include "sim/mujoco_guard.h"
 #include "sim/robot_file.h"
