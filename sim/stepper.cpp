@@ -1,15 +1,34 @@
 #include "sim/stepper.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
 #include "common/errors.h"
-#include "sim/fault_effects.h"
 #include "common/interrupt.h"
 #include "common/limits.h"
-#include "sim/walk.h"
+#include "sim/fault_effects.h"
 
 namespace multicpg::sim {
+
+SimState start_walk_state(const SimModel& model, const std::vector<int>& periods) {
+  if (periods.empty()) return make_sim_state(model);
+  const bool equal =
+      std::all_of(periods.begin(), periods.end(), [&](int p) { return p == periods.front(); });
+  SimState state = make_sim_state(model, periods.front());
+  if (!equal) {
+    neural::set_periods(model.controller, state.controller, periods);
+    neural::set_synchronised(state.controller, false);
+  }
+  return state;
+}
+
+void warm_up_controller(const SimModel& model, SimState& state, long steps) {
+  for (long t = 0; t < steps; ++t) {
+    check_interrupted();  // a warm-up may be long (up to kMaxSteps)
+    neural::controller_step(model.controller, state.controller);
+  }
+}
 
 Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline faults,
                  Observer* observer, WalkRecord* record, bool record_joints)

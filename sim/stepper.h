@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/limits.h"
 #include "sim/deviation.h"
 #include "sim/events.h"
 #include "sim/sim.h"
@@ -23,6 +24,10 @@ namespace multicpg::sim {
 // about 26 deg left, and p = 4 slips phase until step 737; a warmed-up controller starts the
 // robot in its gait, as the paper's robot was walking before anything failed.
 inline constexpr long kControllerWarmup = 1000;
+
+// Documented ranges of step counts: a run of at least one step, settles and warm-ups of none.
+inline constexpr Limits<long> kRunStepsLimits{1, kMaxSteps};
+inline constexpr Limits<long> kStepLimits{0, kMaxSteps};
 
 // How a run starts.
 struct StartSpec {
@@ -64,6 +69,15 @@ class Observers final : public Observer {
  private:
   std::vector<Observer*> all_;
 };
+
+// The state a run starts from before its warm-up: make_sim_state, then `periods` (one per leg;
+// empty = all 4). Equal periods keep the clients synchronised; unequal ones set each leg's
+// period and free the clients (paper §2.3). Throws BadInput for a wrong number of periods or a
+// period outside 1-9.
+SimState start_walk_state(const SimModel& model, const std::vector<int>& periods);
+
+// Runs the neural controller alone for `steps` steps: the robot does not move.
+void warm_up_controller(const SimModel& model, SimState& state, long steps);
 
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
 struct StepperCheckpoint {
