@@ -231,10 +231,6 @@ std::string_view to_string(GlBackend backend) {
   return backend == GlBackend::egl ? "egl" : "osmesa";
 }
 
-GlBackend process_gl_backend() {
-  return platform().backend;
-}
-
 struct GlContext::Impl {
   GlBackend backend;
   EGLContext egl_context = EGL_NO_CONTEXT;

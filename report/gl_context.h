@@ -16,10 +16,6 @@ enum class GlBackend { egl, osmesa };
 
 std::string_view to_string(GlBackend backend);
 
-// The platform this process renders with, loaded on first call. Throws BadInput for an unknown
-// MUJOCO_GL value, RuntimeFailure when no platform works (one line saying why).
-GlBackend process_gl_backend();
-
 // One GL context of the process platform, current on the calling thread after construction.
 class GlContext {
  public:

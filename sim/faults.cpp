@@ -1,7 +1,8 @@
 #include "sim/faults.h"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "common/errors.h"
 
@@ -9,7 +10,9 @@ namespace multicpg::sim {
 namespace {
 
 template <class Kind>
-concept HasValue = requires { Kind::kValue; };
+concept HasValue = requires {
+  Kind::kValue;
+};
 
 // Calls `f` with a default-made value of each alternative of Malfunction, in order.
 template <class F, std::size_t... I>
@@ -38,19 +41,6 @@ std::string_view kind_name(const Malfunction& kind) {
 
 Strikes strikes(const Malfunction& kind) {
   return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::kStrikes; }, kind);
-}
-
-std::optional<ValueSpec> value_spec(const Malfunction& kind) {
-  return std::visit(
-      [](const auto& k) -> std::optional<ValueSpec> {
-        using Kind = std::decay_t<decltype(k)>;
-        if constexpr (HasValue<Kind>) {
-          return Kind::kValue;
-        } else {
-          return std::nullopt;
-        }
-      },
-      kind);
 }
 
 std::optional<double> value_of(const Malfunction& kind) {

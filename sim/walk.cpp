@@ -96,17 +96,6 @@ std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::s
   return out;
 }
 
-std::vector<WindowMeasure> window_measures(const WalkRecord& r, std::size_t first, long window) {
-  std::vector<WindowMeasure> out;
-  const auto w = static_cast<std::size_t>(window);
-  for (std::size_t end = first + w; end < r.rows(); end += w) {
-    const std::size_t begin = end - w;
-    out.push_back(measure_window({r.x[begin], r.y[begin], r.yaw_deg[begin]},
-                                 {r.x[end], r.y[end], r.yaw_deg[end]}));
-  }
-  return out;
-}
-
 WalkResult walk(const SimModel& model, const WalkSpec& spec) {
   check_spec(model, spec);
   WalkResult result;

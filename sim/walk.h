@@ -63,8 +63,4 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec);
 std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::size_t first,
                                       long window);
 
-// Yaw change and path angle of consecutive complete windows of a record from row `first`.
-std::vector<WindowMeasure> window_measures(const WalkRecord& record, std::size_t first,
-                                           long window);
-
 }  // namespace multicpg::sim
