@@ -164,9 +164,10 @@ void give_armature(SimModel& model, const std::vector<std::string>& servo_joints
   mj_setConst(m, scratch.get());
 }
 
-// Other ground than a robot file's own flat one (robot::robot_file_mjcf): on a slope and rough
-// ground its own planes no longer collide nor show. Throws OptionError ("scene.terrain") for a
-// model whose contacts are only its <pair>s: they hold its feet to its own ground.
+// Other ground than a robot file's own flat one (robot::robot_file_mjcf): where the terrain does
+// not stand on it (a slope, rough ground) its own planes no longer collide nor show. Throws
+// OptionError ("scene.terrain") for a model whose contacts are only its <pair>s: they hold its feet
+// to its own ground.
 void leave_own_ground(mjModel* m, const robot::Terrain& terrain, const robot::RobotFile& file) {
   if (m->opt.collision == mjCOL_PAIR || m->npair > 0) {
     throw OptionError("scene.terrain",
@@ -174,7 +175,7 @@ void leave_own_ground(mjModel* m, const robot::Terrain& terrain, const robot::Ro
                                   "ground: it walks only there, not on {} (docs/robots.md)",
                                   file.path.string(), robot::terrain_text(terrain)));
   }
-  if (terrain.kind == robot::TerrainKind::steps) return;
+  if (robot::keeps_own_ground(terrain)) return;
   const int ours = mj_name2id(m, mjOBJ_GEOM, robot::kRobotFileGround);
   for (int g = 0; g < m->ngeom; ++g) {
     if (g == ours || !is_ground_plane(m, g)) continue;
@@ -193,8 +194,8 @@ void place_on_terrain(SimModel& model, const robot::Terrain& terrain) {
     qpos.assign(m->key_qpos + model.start_key * m->nq, m->key_qpos + (model.start_key + 1) * m->nq);
   }
   double* root = qpos.data() + model.root_qpos;
-  if (terrain.kind == robot::TerrainKind::rough) root[2] += terrain.height_m;
-  if (terrain.kind == robot::TerrainKind::slope) {
+  root[2] += robot::rise(terrain);
+  if (robot::tilted(terrain)) {
     const std::array<double, 4> q = robot::ground_rotation(terrain);
     const std::array<double, 3> p = robot::rotate(q, {root[0], root[1], root[2]});
     std::array<double, 4> tilted{};
@@ -289,7 +290,7 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
 SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options) {
   SimModel model = new_model(file.layout, options, file);
   const robot::Terrain& terrain = options.scene.terrain;
-  const bool flat = terrain.kind == robot::TerrainKind::flat;
+  const bool flat = robot::is_flat(terrain);
   if (options.scene.tunnel || !file.servo_joints.empty() || file.add_ground || !flat) {
     // Included as MJCF whatever it was (a URDF as MuJoCo's loader read it).
     const std::string name = file.model.stem().string() + ".xml";

@@ -320,7 +320,7 @@ TEST(Terrain, ASlopeTiltsTheGroundTheRobotAndTheWalls) {
 TEST(Terrain, RoughGroundIsAHeightfieldAndStepsAreBoxes) {
   const sim::SimModel rough = terrain_model("rough:0.02:3");
   ASSERT_EQ(rough.mj->nhfield, 1);
-  const int n = robot::rough_samples_per_side();
+  const int n = robot::heightfield_samples_per_side();
   EXPECT_EQ(rough.mj->hfield_nrow[0], n);
   EXPECT_NEAR(rough.mj->hfield_size[2], 0.02, 1e-12);
   float lo = 1.0F;
@@ -331,11 +331,11 @@ TEST(Terrain, RoughGroundIsAHeightfieldAndStepsAreBoxes) {
   }
   EXPECT_EQ(lo, 0.0F);
   EXPECT_EQ(hi, 1.0F);
-  EXPECT_EQ(robot::rough_samples(robot::parse_terrain("rough:0.02:3")),
-            robot::rough_samples(robot::parse_terrain("rough:0.01:3")))
+  EXPECT_EQ(robot::heightfield_samples(robot::parse_terrain("rough:0.02:3")),
+            robot::heightfield_samples(robot::parse_terrain("rough:0.01:3")))
       << "the seed, not the height, draws the bumps";
-  EXPECT_NE(robot::rough_samples(robot::parse_terrain("rough:0.02:3")),
-            robot::rough_samples(robot::parse_terrain("rough:0.02:4")));
+  EXPECT_NE(robot::heightfield_samples(robot::parse_terrain("rough:0.02:3")),
+            robot::heightfield_samples(robot::parse_terrain("rough:0.02:4")));
   sim::Stepper walker(rough, {}, {});
   walker.steps(600);
   EXPECT_GT(walker.pose().x, 0.3) << "it walks over 2 cm bumps";
