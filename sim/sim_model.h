@@ -92,7 +92,7 @@ struct SimState {
   std::vector<robot::LegAngles> targets;   // joint targets of the current controller step, rad
   long step = 0;                           // controller steps done
   std::array<int, mjNWARNING> warnings{};  // MuJoCo warning counts already seen
-  FaultEffects faults;                     // what the faults in force do to the physics
+  FaultState faults;  // the faults that came, those in force and what they do to the physics
 };
 
 }  // namespace multicpg::sim

@@ -81,8 +81,7 @@ void warm_up_controller(const SimModel& model, SimState& state, long steps);
 
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
 struct StepperCheckpoint {
-  SimState state;
-  FaultSchedule faults;
+  SimState state;  // with its faults
   long walked = 0;
 };
 
@@ -106,7 +105,7 @@ class Stepper {
   // happen now (a leg that has already failed, a recovery of what is not struck, failing every
   // leg). Scheduled faults still come as planned.
   void apply_now(Fault fault);
-  // A deep copy of the run (copy_sim_state and the fault bookkeeping), and back: after restore
+  // A deep copy of the run (copy_sim_state, its faults with it), and back: after restore
   // the stepper continues exactly as it did from the checkpoint. The checkpoint must come from a
   // stepper of the same model; the record (if any) is not rewound.
   StepperCheckpoint checkpoint() const;
@@ -127,8 +126,8 @@ class Stepper {
   // (sim::sensed_yaw_deg: a drifting or noisy sensor's error included). What the learner and the
   // steering reflex see.
   Pose2 sensed_pose() const;
-  // The run's faults: the timeline, what has come, the legs failed now.
-  const FaultSchedule& faults() const { return faults_; }
+  // The run's faults: the timeline, what has come, what is in force, the legs failed now.
+  const FaultSchedule& faults() const { return state_.faults.schedule; }
 
  private:
   void apply_due_faults();
@@ -137,7 +136,6 @@ class Stepper {
 
   const SimModel& model_;
   SimState state_;
-  FaultSchedule faults_;
   std::function<void(Stepper&)> before_step_;
   Observer* observer_;
   WalkRecord* record_;

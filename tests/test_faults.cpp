@@ -197,7 +197,7 @@ TEST(Faults, RecoveryRestoresThePhysicsExactly) {
        fault("L2:slip=0.2@50"), fault("R2.CTr:locked@150", true), fault("L1:weak@150", true),
        fault("R1:short@150", true), fault("L2:slip@150", true)});
   faulty.steps(151);
-  EXPECT_TRUE(faulty.state().faults.in_force.empty());
+  EXPECT_TRUE(faulty.faults().in_force().empty());
   EXPECT_EQ(sim::physics_model(hexapod(), faulty.state()), hexapod().mj.get());
   sim::Stepper healthy(hexapod(), {}, {});
   healthy.restore(faulty.checkpoint());
