@@ -222,6 +222,21 @@ TEST(FaultText, EveryKindReadsBackAsWritten) {
             nlohmann::json::parse(R"({"step": 5, "legs": [0, 2], "recover": false})"));
 }
 
+// The learning records' form of a run's faults (sim::faults_record): the paper's one whole-leg
+// failure as its legs and step, anything else as the timeline itself.
+TEST(FaultJson, RecordsKeepOneLegFailureAsDisabledAndFailStep) {
+  EXPECT_EQ(sim::faults_record({fault("R1+R3@600")}),
+            nlohmann::json::parse(R"({"disabled": [0, 2], "fail_step": 600, "faults": []})"));
+  EXPECT_EQ(sim::faults_record({}),
+            nlohmann::json::parse(R"({"disabled": [], "fail_step": 0, "faults": []})"));
+  const sim::FaultTimeline other{fault("R2.CTr:locked@5")};
+  EXPECT_EQ(
+      sim::faults_record(other),
+      (nlohmann::json{{"disabled", nlohmann::json::array()}, {"fail_step", 0}, {"faults", other}}));
+  const sim::FaultTimeline twice{fault("R1@0"), fault("R1@90", true)};
+  EXPECT_EQ(sim::faults_record(twice).at("faults").get<sim::FaultTimeline>(), twice);
+}
+
 TEST(FaultText, BadSpecsAreOneLineNamingWhatIsWrong) {
   const auto refused = [](const std::string& text, const std::string& mention) {
     try {
