@@ -10,9 +10,14 @@
 #include <memory>
 #include <string_view>
 
+#include "common/enum_names.h"
+
 namespace multicpg::report {
 
 enum class GlBackend { egl, osmesa };
+// Also MUJOCO_GL's values.
+inline constexpr auto kGlBackendNames =
+    enum_names<GlBackend>({{GlBackend::egl, "egl"}, {GlBackend::osmesa, "osmesa"}});
 
 std::string_view to_string(GlBackend backend);
 

@@ -39,8 +39,6 @@ struct Event {
   bool accepted = false;          // trial_end: kept; episode_end: held under the threshold
 };
 
-const char* to_string(EventKind kind);
-
 // Throws BadInput (one line, leg and joint names) for a timeline that is not sorted, has a step
 // outside 0..kMaxSteps, names a leg out of range or twice in one event, names a joint where the
 // kind strikes whole legs (or none where it strikes joints), locks a joint outside its limits,

@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <mutex>
 #include <string>
+#include <string_view>
+
+#include "common/enum_names.h"
 
 namespace multicpg::sim {
 namespace {
@@ -46,29 +49,15 @@ std::atomic<bool> recovering{false};
   std::_Exit(1);
 }
 
-const char* warning_name(int warning) {
-  switch (warning) {
-    case mjWARN_INERTIA:
-      return "singular inertia";
-    case mjWARN_CONTACTFULL:
-      return "contact buffer full";
-    case mjWARN_CNSTRFULL:
-      return "constraint buffer full";
-    case mjWARN_VGEOMFULL:
-      return "visual geom buffer full";
-    case mjWARN_BADQPOS:
-      return "bad qpos";
-    case mjWARN_BADQVEL:
-      return "bad qvel";
-    case mjWARN_BADQACC:
-      return "bad qacc";
-    case mjWARN_BADCTRL:
-      return "bad ctrl";
-    default:
-      break;
-  }
-  return "warning";
-}
+// MuJoCo's warnings (mjtWarning) as sim_step's errors name them.
+constexpr auto kWarningNames = enum_names<int>({{mjWARN_INERTIA, "singular inertia"},
+                                                {mjWARN_CONTACTFULL, "contact buffer full"},
+                                                {mjWARN_CNSTRFULL, "constraint buffer full"},
+                                                {mjWARN_VGEOMFULL, "visual geom buffer full"},
+                                                {mjWARN_BADQPOS, "bad qpos"},
+                                                {mjWARN_BADQVEL, "bad qvel"},
+                                                {mjWARN_BADQACC, "bad qacc"},
+                                                {mjWARN_BADCTRL, "bad ctrl"}});
 
 }  // namespace
 
@@ -81,7 +70,8 @@ void install_mujoco_handlers() {
 }
 
 std::string mujoco_warning(int warning) {
-  return std::string("MuJoCo warning '") + warning_name(warning) + "': " + last_warning;
+  const std::string_view name = kWarningNames.name(warning);
+  return "MuJoCo warning '" + std::string(name.empty() ? "warning" : name) + "': " + last_warning;
 }
 
 void recover_mujoco_errors() {
