@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "common/variants.h"
 
 namespace multicpg::robot {
 namespace {
@@ -53,22 +54,12 @@ std::uint64_t splitmix64(std::uint64_t& x) {
   return z ^ (z >> 31);
 }
 
-template <class F, std::size_t... I>
-void each_kind(F&& f, std::index_sequence<I...>) {
-  (f(std::variant_alternative_t<I, TerrainKind>{}), ...);
-}
-// Calls `f` with a default-made value of each alternative of TerrainKind, in order.
-template <class F>
-void each_kind(F&& f) {
-  each_kind(f, std::make_index_sequence<std::variant_size_v<TerrainKind>>{});
-}
-
 // "flat, slope:DEG[:HEADING_DEG], ... or steps:HEIGHT_M:DEPTH_M (e.g. slope:5, ...)" from the
 // kinds' parameters.
 std::string forms() {
   std::vector<std::string> all;
   std::vector<std::string> examples;
-  each_kind([&](const auto& kind) {
+  each_alternative<TerrainKind>([&](const auto& kind) {
     using Kind = std::decay_t<decltype(kind)>;
     std::string form(Kind::kName);
     for (const TerrainParam& p : Kind::kParams) {
@@ -112,21 +103,10 @@ void each_value(Kind& kind, F&& f) {
   std::apply([&](auto&... value) { (f(Kind::kParams[i++], value), ...); }, kind.values());
 }
 
+// The traits a kind may have (robot/terrain.h).
 template <class Kind>
 concept Tilted = requires(const Kind& k) {
   k.rotation();
-};
-template <class Kind>
-concept Rises = requires(const Kind& k) {
-  k.rise();
-};
-template <class Kind>
-concept Heightfield = requires(const Kind& k) {
-  k.heightfield_samples();
-};
-template <class Kind>
-concept HasBoxes = requires(const Kind& k) {
-  k.boxes();
 };
 
 }  // namespace
@@ -177,7 +157,7 @@ void validate(const Terrain& t) {
 Terrain parse_terrain(std::string_view text) {
   const std::vector<std::string_view> f = fields(text);
   std::optional<Terrain> made;
-  each_kind([&](auto kind) {
+  each_alternative<TerrainKind>([&](auto kind) {
     using Kind = decltype(kind);
     if (made || f[0] != Kind::kName) return;
     std::size_t required = 0;
@@ -236,8 +216,8 @@ bool tilted(const Terrain& t) {
 
 double rise(const Terrain& t) {
   return std::visit(
-      []<class Kind>(const Kind& kind) {
-        if constexpr (Rises<Kind>) {
+      [](const auto& kind) {
+        if constexpr (requires { kind.rise(); }) {
           return kind.rise();
         } else {
           return 0.0;
@@ -248,8 +228,8 @@ double rise(const Terrain& t) {
 
 std::optional<std::vector<float>> heightfield_samples(const Terrain& t) {
   return std::visit(
-      []<class Kind>(const Kind& kind) -> std::optional<std::vector<float>> {
-        if constexpr (Heightfield<Kind>) {
+      [](const auto& kind) -> std::optional<std::vector<float>> {
+        if constexpr (requires { kind.heightfield_samples(); }) {
           return kind.heightfield_samples();
         } else {
           return std::nullopt;
@@ -264,8 +244,8 @@ int heightfield_samples_per_side() {
 
 std::vector<TerrainBox> terrain_boxes(const Terrain& t) {
   return std::visit(
-      []<class Kind>(const Kind& kind) -> std::vector<TerrainBox> {
-        if constexpr (HasBoxes<Kind>) {
+      [](const auto& kind) -> std::vector<TerrainBox> {
+        if constexpr (requires { kind.boxes(); }) {
           return kind.boxes();
         } else {
           return {};

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "common/errors.h"
+#include "common/variants.h"
 
 namespace multicpg::sim {
 namespace {
@@ -13,16 +14,6 @@ template <class Kind>
 concept HasValue = requires {
   Kind::kValue;
 };
-
-// Calls `f` with a default-made value of each alternative of Malfunction, in order.
-template <class F, std::size_t... I>
-void each_kind(F&& f, std::index_sequence<I...>) {
-  (f(std::variant_alternative_t<I, Malfunction>{}), ...);
-}
-template <class F>
-void each_kind(F&& f) {
-  each_kind(f, std::make_index_sequence<std::variant_size_v<Malfunction>>{});
-}
 
 template <class Kind>
 std::optional<double> value_of_kind(const Kind& k) {
@@ -49,7 +40,7 @@ std::optional<double> value_of(const Malfunction& kind) {
 
 std::string kind_names() {
   std::string names;
-  each_kind([&](const auto& k) {
+  each_alternative<Malfunction>([&](const auto& k) {
     if (!names.empty()) names += ", ";
     names += std::decay_t<decltype(k)>::kName;
   });
@@ -58,7 +49,7 @@ std::string kind_names() {
 
 Malfunction make_kind(std::string_view name, std::optional<double> value, bool value_optional) {
   std::optional<Malfunction> made;
-  each_kind([&](const auto& k) {
+  each_alternative<Malfunction>([&](const auto& k) {
     using Kind = std::decay_t<decltype(k)>;
     if (made || Kind::kName != name) return;
     if constexpr (HasValue<Kind>) {
