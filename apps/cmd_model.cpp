@@ -168,7 +168,7 @@ void run_model(const ModelOptions& o) {
     return;
   }
   if (std::filesystem::path(o.out).extension() != ".xml") {
-    if (options.scene.terrain.kind != robot::TerrainKind::flat) {
+    if (!robot::is_flat(options.scene.terrain)) {
       throw BadInput("--terrain " + robot::terrain_text(options.scene.terrain) +
                      ": a robot file's model walks on flat ground; write it with --out FILE.xml");
     }

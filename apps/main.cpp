@@ -14,7 +14,7 @@
 #include "common/interrupt.h"
 #include "common/provenance.h"
 #include "experiments/processes.h"
-#include "sim/sim.h"
+#include "sim/mujoco_guard.h"
 
 namespace {
 

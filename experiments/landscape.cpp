@@ -15,6 +15,7 @@
 #include "neural/postprocessing.h"
 #include "robot/leg_sets.h"
 #include "sim/json.h"
+#include "sim/robot_file.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 

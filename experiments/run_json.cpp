@@ -6,23 +6,11 @@
 #include "sim/fault_spec.h"
 
 namespace multicpg::experiments {
-namespace {
-
-// A timeline of one whole-leg failure (the paper's), recorded as its legs and step.
-bool single_failure(const sim::FaultTimeline& faults) {
-  return faults.size() == 1 && !faults.front().recover &&
-         std::holds_alternative<sim::LegFault>(faults.front().kind) && !faults.front().joint;
-}
-
-}  // namespace
 
 nlohmann::json learning_record(const learning::CompensationOptions& options,
                                const sim::FaultTimeline& faults) {
   nlohmann::json j = options;
-  const bool single = single_failure(faults);
-  j["disabled"] = single ? faults.front().legs : std::vector<std::size_t>{};
-  j["fail_step"] = single ? faults.front().step : 0L;
-  j["faults"] = single ? sim::FaultTimeline{} : faults;
+  j.update(sim::faults_record(faults));
   return j;
 }
 

@@ -6,6 +6,7 @@
 #include "common/limits.h"
 #include "robot/body_models.h"
 #include "robot/leg_sets.h"
+#include "sim/robot_file.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {

@@ -3,8 +3,6 @@
 #include <string>
 
 #include "common/errors.h"
-#include "common/limits.h"
-#include "neural/json.h"
 
 namespace multicpg::neural {
 namespace {
@@ -87,22 +85,6 @@ void check_period(int period) {
 
 }  // namespace
 
-void validate(const ControllerParams& params) {
-  // Walks the recorded form, so a parameter added to a struct is checked without a new line here.
-  const nlohmann::json all = params;
-  for (const auto& [stage, values] : all.items()) {
-    for (const auto& [name, value] : values.items()) {
-      const std::string key = stage + "." + name;
-      if (value.is_number_integer()) {
-        require_in(key, value.get<int>(), Limits<int>{0, kMaxDelayStep});
-      } else {
-        require_in(key, value.get<double>(),
-                   Limits<double>{-kMaxParamMagnitude, kMaxParamMagnitude});
-      }
-    }
-  }
-}
-
 ControllerModel make_controller_model(robot::RobotKind kind, const ControllerParams& params,
                                       const robot::BodyParams& body) {
   ControllerModel model{robot::morphology(kind), params, {}};
@@ -153,10 +135,6 @@ void set_period(const ControllerModel& model, ControllerState& state, int period
 
 void set_synchronised(ControllerState& state, bool synchronised) {
   for (std::size_t i = 1; i < state.legs.size(); ++i) state.legs[i].alpha = synchronised ? 1 : 0;
-}
-
-void set_chaotic(ControllerState& state, bool chaotic) {
-  for (LegState& leg : state.legs) leg.cpg.chaotic = chaotic;
 }
 
 void set_disabled(ControllerState& state, std::size_t leg, bool disabled) {

@@ -46,17 +46,6 @@ struct ControllerModel {
   std::size_t size() const { return legs.size(); }
 };
 
-// Far beyond any weight, bias or constant of the paper (the largest is |w11| = 22, Eq. 1), yet
-// small enough that no neuron input overflows.
-inline constexpr double kMaxParamMagnitude = 1000.0;
-// Longest delay line step of tau or tau_l (ours are 18 and 90, docs/controller.md "Delay lines"): a
-// delay line holds a leg's whole history over 6 * tau + tau_l steps, so this keeps it small.
-inline constexpr int kMaxDelayStep = 1000;
-
-// Throws OptionError (key "cpg.w11", ...) for a non-finite parameter, one beyond
-// kMaxParamMagnitude, or a delay step outside 0..kMaxDelayStep.
-void validate(const ControllerParams& params);
-
 // The controller of `kind` with `params`; `body` gives each leg's disabled posture and the body
 // lift of its motor maps (robot/body_params.h). Throws OptionError ("leg_postures[0].leg") for a
 // posture of a leg the robot does not have.
@@ -97,8 +86,6 @@ void set_period(const ControllerModel& model, ControllerState& state, int period
 
 // Alpha of every client: 1 synchronises all to the master, 0 frees all (paper Eq. 5).
 void set_synchronised(ControllerState& state, bool synchronised);
-// Uncontrolled (chaotic) CPGs: c = 0 on every step (paper §2.1).
-void set_chaotic(ControllerState& state, bool chaotic);
 void set_disabled(ControllerState& state, std::size_t leg, bool disabled);
 
 // True when `leg` currently follows the master's output and post-processing.

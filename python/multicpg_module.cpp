@@ -1226,40 +1226,36 @@ PYBIND11_MODULE(_multicpg, m) {
       .def_static(
           "slope",
           [](py::object deg, py::object heading) {
-            multicpg::robot::Terrain t;
-            t.kind = multicpg::robot::TerrainKind::slope;
+            multicpg::robot::Slope t;
             t.slope_deg = mp::real(deg, "deg", multicpg::robot::kSlopeLimits);
             t.heading_deg = mp::real(heading, "heading_deg", multicpg::robot::kHeadingLimits);
-            return t;
+            return multicpg::robot::Terrain{t};
           },
           arg("deg"), arg("heading_deg") = 0.0,
           "a plane rising `deg` (0..30) towards `heading_deg` (+ = left of the start heading)")
       .def_static(
           "rough",
           [](py::object height, py::object seed) {
-            multicpg::robot::Terrain t;
-            t.kind = multicpg::robot::TerrainKind::rough;
+            multicpg::robot::Rough t;
             t.height_m = mp::real(height, "height_m", multicpg::robot::kBumpLimits);
             t.seed = mp::seed(seed, "seed");
-            return t;
+            return multicpg::robot::Terrain{t};
           },
           arg("height_m"), arg("seed") = 1,
           "random bumps up to `height_m` (0.001..0.05 m), the same for the same seed")
       .def_static(
           "steps",
           [](py::object height, py::object depth) {
-            multicpg::robot::Terrain t;
-            t.kind = multicpg::robot::TerrainKind::steps;
+            multicpg::robot::Steps t;
             t.height_m = mp::real(height, "height_m", multicpg::robot::kBumpLimits);
             t.depth_m = mp::real(depth, "depth_m", multicpg::robot::kStepDepthLimits);
-            return t;
+            return multicpg::robot::Terrain{t};
           },
           arg("height_m"), arg("depth_m"), "stairs of `height_m` rises and `depth_m` treads")
       .def_property_readonly(
           "kind",
           [](const multicpg::robot::Terrain& t) {
-            const std::string text = multicpg::robot::terrain_text(t);
-            return text.substr(0, text.find(':'));
+            return std::string(multicpg::robot::terrain_name(t));
           },
           "flat, slope, rough or steps")
       .def("__eq__",

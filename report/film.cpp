@@ -131,14 +131,14 @@ FramePose frame_pose(const sim::SimModel& model, const sim::SimState& state,
   const mjModel* m = model.mj.get();
   out.qpos.assign(state.data->qpos, state.data->qpos + m->nq);
   out.model = state.faults.model;
-  out.colours = fault_colours(model, state.faults.in_force);
+  out.colours = fault_colours(model, state.faults.schedule.in_force());
   std::vector<int> periods;
   const robot::Morphology& morph = model.controller.morphology;
   for (const neural::LegState& leg : state.controller.legs) periods.push_back(leg.cpg.period);
   out.overlay.titles = "Step\nTime\nPeriods\nFaults";
   out.overlay.values = std::to_string(state.step) + "\n" + fixed(state.data->time, 1) + " s\n" +
                        robot::period_map_text(morph, periods) + "\n" +
-                       faults_caption(morph, state.faults.in_force);
+                       faults_caption(morph, state.faults.schedule.in_force());
   if (!caption.empty()) {
     out.overlay.titles += "\n";
     out.overlay.values += "\n" + caption;

@@ -86,7 +86,6 @@ class Film {
   using Pose = FramePose;
   Pose pose(const sim::SimState& state, const std::string& caption) const;
   Image draw(Renderer& renderer, mjData* data, const Pose& pose) const;
-  void render_video();
   void stop_worker();
   void rethrow_failure();
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -204,17 +205,18 @@ Platform load_platform() {
   Platform platform;
   std::string egl_why;
   std::string osmesa_why;
-  if (choice == "egl") {
+  const std::optional<GlBackend> chosen = kGlBackendNames.find(choice);
+  if (chosen == GlBackend::egl) {
     if (!try_egl(platform, egl_why)) throw RuntimeFailure("MUJOCO_GL=egl: " + egl_why);
-  } else if (choice == "osmesa") {
+  } else if (chosen == GlBackend::osmesa) {
     if (!try_osmesa(platform, osmesa_why)) throw RuntimeFailure("MUJOCO_GL=osmesa: " + osmesa_why);
   } else if (choice.empty()) {
     if (!try_egl(platform, egl_why) && !try_osmesa(platform, osmesa_why)) {
       throw RuntimeFailure("no headless OpenGL: " + egl_why + "; " + osmesa_why);
     }
   } else {
-    throw BadInput("MUJOCO_GL='" + choice +
-                   "' is not supported for headless rendering; use egl or osmesa");
+    throw BadInput("MUJOCO_GL='" + choice + "' is not supported for headless rendering; use " +
+                   kGlBackendNames.list(" or "));
   }
   return platform;
 }
@@ -228,11 +230,7 @@ const Platform& platform() {
 }  // namespace
 
 std::string_view to_string(GlBackend backend) {
-  return backend == GlBackend::egl ? "egl" : "osmesa";
-}
-
-GlBackend process_gl_backend() {
-  return platform().backend;
+  return kGlBackendNames.name(backend);
 }
 
 struct GlContext::Impl {

@@ -10,15 +10,16 @@
 #include <memory>
 #include <string_view>
 
+#include "common/enum_names.h"
+
 namespace multicpg::report {
 
 enum class GlBackend { egl, osmesa };
+// Also MUJOCO_GL's values.
+inline constexpr auto kGlBackendNames =
+    enum_names<GlBackend>({{GlBackend::egl, "egl"}, {GlBackend::osmesa, "osmesa"}});
 
 std::string_view to_string(GlBackend backend);
-
-// The platform this process renders with, loaded on first call. Throws BadInput for an unknown
-// MUJOCO_GL value, RuntimeFailure when no platform works (one line saying why).
-GlBackend process_gl_backend();
 
 // One GL context of the process platform, current on the calling thread after construction.
 class GlContext {

@@ -10,6 +10,8 @@
 #include <iostream>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "common/atomic_file.h"
@@ -50,8 +52,17 @@ constexpr int kQuickBetaMaxTrials = learning::kDefaultMaxTrials / 2;
 // of 20, a minute of CPU for a scenario that never holds).
 constexpr int kQuickPeriodsAloneTrials = 10;
 constexpr int kQuickPeriodsAloneEpisodes = 1;
-constexpr Sizes kQuick{1,  1,  1, kQuickBetaMaxTrials, 16, 16, 160, 2, kQuickLandscapePeriods,
-                       kQuickPeriodsAloneTrials, kQuickPeriodsAloneEpisodes};
+constexpr Sizes kQuick{1,
+                       1,
+                       1,
+                       kQuickBetaMaxTrials,
+                       16,
+                       16,
+                       160,
+                       2,
+                       kQuickLandscapePeriods,
+                       kQuickPeriodsAloneTrials,
+                       kQuickPeriodsAloneEpisodes};
 
 // The stages asked for and every stage they need, in the table's (the report's) order.
 std::vector<const Stage*> selected(const std::vector<std::string>& only) {
@@ -236,6 +247,17 @@ class Reproduction {
 };
 
 }  // namespace
+
+std::string stage_of_figure(std::string_view figure) {
+  const std::string_view name = figure_by_name(figure).name;  // BadInput for unknown names
+  for (const Stage& s : reproduce_stages()) {
+    for (std::string_view f : s.figures) {
+      if (f == name) return std::string(s.id);
+    }
+  }
+  // Stages.EveryFigureIsDrawnByExactlyOneStage keeps the registry and the table in step.
+  throw std::logic_error("figure '" + std::string(name) + "' is drawn by no reproduce stage");
+}
 
 void reproduce(const ReproduceOptions& options) {
   for (const std::string& id : options.only) stage_by_id(id);  // BadInput for unknown ids

@@ -4,29 +4,12 @@
 // driver.
 #pragma once
 
-#include <cstdint>
-#include <filesystem>
 #include <string>
 #include <string_view>
-#include <vector>
 
-#include "sim/sim.h"
+#include "report/reproduce_options.h"
 
 namespace multicpg::report {
-
-struct ReproduceOptions {
-  std::filesystem::path out;
-  bool quick = false;  // fewer runs and faster videos: minutes, not tens of minutes
-  int jobs = 0;        // parallel learning runs and stages; 0 = every core
-  std::uint64_t seed = 1;
-  // The simulation of every stage: its body model and parameters (--model and the Body flags);
-  // paper-sim, the paper's simulator, by default.
-  sim::SimOptions sim;
-  bool progress = true;
-  // Stages to run (stage ids, see reproduce_stages()); empty = all; the stages they need run
-  // too. index.html shows those done.
-  std::vector<std::string> only;
-};
 
 // The stage that draws a figure of figures.h's registry (e.g. "motor" -> "learning-r1"); throws
 // BadInput naming the known figures for an unknown name, and for one no stage draws (landscape).

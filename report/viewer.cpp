@@ -253,7 +253,7 @@ class Viewer {
              << state_.controller.legs[i].cpg.period;
     }
     values << "\n"
-           << faults_caption(morph, state_.faults.in_force) << "\n"
+           << faults_caption(morph, state_.faults.schedule.in_force()) << "\n"
            << (synchronised_ ? "synchronised" : "free") << "\n"
            << (paused_ ? "paused" : "running");
     if (!refused_.empty()) values << "\n" << refused_;
@@ -267,7 +267,7 @@ class Viewer {
     mjrRect viewport{0, 0, 0, 0};
     glfwGetFramebufferSize(window_.get(), &viewport.width, &viewport.height);
     mjv_updateScene(m, state_.data.get(), &option_, nullptr, &camera_, mjCAT_ALL, &scene_);
-    paint(scene_, fault_colours(model_, state_.faults.in_force));
+    paint(scene_, fault_colours(model_, state_.faults.schedule.in_force()));
     mjr_render(viewport, &scene_, &context_);
 
     const std::string values = status_values();

@@ -1,5 +1,6 @@
 #include "robot/body_models.h"
 
+#include <optional>
 #include <string>
 
 #include "common/errors.h"
@@ -63,22 +64,13 @@ constexpr Source kSources[] = {
 }  // namespace
 
 std::string_view to_string(BodyModel model) {
-  switch (model) {
-    case BodyModel::paper_sim:
-      return "paper-sim";
-    case BodyModel::real:
-      return "real";
-  }
-  return "paper-sim";
+  return kBodyModelNames.name(model);
 }
 
 BodyModel parse_body_model(std::string_view name) {
-  std::string known;
-  for (BodyModel m : kBodyModels) {
-    if (to_string(m) == name) return m;
-    known += (known.empty() ? "" : ", ") + std::string(to_string(m));
-  }
-  throw BadInput("no body model '" + std::string(name) + "' (known: " + known + ")");
+  if (const std::optional<BodyModel> model = kBodyModelNames.find(name)) return *model;
+  throw BadInput("no body model '" + std::string(name) + "' (known: " + kBodyModelNames.list() +
+                 ")");
 }
 
 BodyParams body_params(BodyModel model) {

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/enum_names.h"
 #include "robot/body_params.h"
 
 namespace multicpg::robot {
@@ -18,7 +19,9 @@ enum class BodyModel {
   // lpzrobots' slip) over paper-sim: the starting point a calibration against Table 1 replaces.
   real,
 };
-inline constexpr std::array<BodyModel, 2> kBodyModels{BodyModel::paper_sim, BodyModel::real};
+inline constexpr auto kBodyModelNames =
+    enum_names<BodyModel>({{BodyModel::paper_sim, "paper-sim"}, {BodyModel::real, "real"}});
+inline constexpr std::array<BodyModel, 2> kBodyModels = kBodyModelNames.values();
 inline constexpr BodyModel kDefaultBodyModel = BodyModel::paper_sim;
 
 std::string_view to_string(BodyModel model);  // "paper-sim", "real"

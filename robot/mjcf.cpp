@@ -240,7 +240,7 @@ std::string quat(const std::array<double, 4>& q) {
 void write_walls(Writer& w, const Scene& scene, const std::string& contact,
                  const std::string& material) {
   const double half_len = scene.tunnel_length / 2.0;
-  const bool tilted = scene.terrain.kind == TerrainKind::slope;
+  const bool tilted = robot::tilted(scene.terrain);
   const std::array<double, 4> q = ground_rotation(scene.terrain);
   for (double side : {1.0, -1.0}) {
     const Vec3 along{half_len, side * (scene.tunnel_width + kWallThickness) / 2.0,
@@ -254,49 +254,41 @@ void write_walls(Writer& w, const Scene& scene, const std::string& contact,
   }
 }
 
-// The ground: the plane (tilted on a slope), rough ground's heightfield, or the plane with steps
-// on it. Every robot part that may touch the ground is paired with "ground" (make_mjcf); steps
-// and walls meet the robot dynamically.
+// A box standing on the ground (steps) as a geom named `name`, its attributes after the size.
+std::string box_geom(const std::string& name, const TerrainBox& box, const std::string& rest) {
+  return "<geom name=\"" + name + "\"" + rest + " type=\"box\" pos=\"" +
+         vec({box.centre[0], box.centre[1], box.centre[2]}) + "\" size=\"" + num(box.half[0]) +
+         " " + num(box.half[1]) + " " + num(box.half[2]) + "\"";
+}
+
+// The ground: the plane (tilted on a slope), rough ground's heightfield, and the boxes standing
+// on it (steps). Every robot part that may touch the ground is paired with "ground" (make_mjcf);
+// the boxes and walls meet the robot dynamically.
 void write_ground(Writer& w, const Terrain& t) {
-  switch (t.kind) {
-    case TerrainKind::flat:
-    case TerrainKind::steps:
-      w.line(2,
-             "<geom name=\"ground\" type=\"plane\" size=\"0 0 1\" contype=\"0\" "
-             "conaffinity=\"0\" material=\"grid\"/>");
-      break;
-    case TerrainKind::slope:
-      w.line(2, "<geom name=\"ground\" type=\"plane\" size=\"0 0 1\" quat=\"" +
-                    quat(ground_rotation(t)) +
-                    "\" contype=\"0\" conaffinity=\"0\" material=\"grid\"/>");
-      break;
-    case TerrainKind::rough:
-      w.line(2,
-             "<geom name=\"ground\" type=\"hfield\" hfield=\"terrain\" contype=\"0\" "
-             "conaffinity=\"0\" material=\"grid\"/>");
-      break;
+  if (heightfield_samples(t)) {
+    w.line(2,
+           "<geom name=\"ground\" type=\"hfield\" hfield=\"terrain\" contype=\"0\" "
+           "conaffinity=\"0\" material=\"grid\"/>");
+  } else {
+    w.line(2, "<geom name=\"ground\" type=\"plane\" size=\"0 0 1\"" +
+                  (tilted(t) ? " quat=\"" + quat(ground_rotation(t)) + "\"" : std::string()) +
+                  " contype=\"0\" conaffinity=\"0\" material=\"grid\"/>");
   }
-  if (t.kind != TerrainKind::steps) return;
-  // Ahead of and behind the start: up for depth_m, down for depth_m, ..., to the terrain's edge.
   int n = 0;
-  for (double side : {1.0, -1.0}) {
-    for (double x = kStepsStart; x + t.depth_m <= kTerrainSide / 2.0; x += 2.0 * t.depth_m) {
-      const Vec3 pos{side * (x + t.depth_m / 2.0), 0.0, t.height_m / 2.0};
-      w.line(2, "<geom name=\"step_" + std::to_string(n++) +
-                    "\" class=\"world\" type=\"box\" pos=\"" + vec(pos) + "\" size=\"" +
-                    num(t.depth_m / 2.0) + " " + num(kTerrainSide / 2.0) + " " +
-                    num(t.height_m / 2.0) + "\" material=\"grid\"/>");
-    }
+  for (const TerrainBox& box : terrain_boxes(t)) {
+    w.line(2, box_geom("step_" + std::to_string(n++), box, " class=\"world\"") +
+                  " material=\"grid\"/>");
   }
 }
 
 }  // namespace
 
 std::vector<ModelFile> scene_files(const Scene& scene) {
-  if (scene.terrain.kind != TerrainKind::rough) return {};
+  const std::optional<std::vector<float>> heightfield = heightfield_samples(scene.terrain);
+  if (!heightfield) return {};
   // MuJoCo's binary heightfield: int32 rows, int32 columns, then float32 samples, row-major.
-  const std::vector<float> samples = rough_samples(scene.terrain);
-  const std::int32_t n = rough_samples_per_side();
+  const std::vector<float>& samples = *heightfield;
+  const std::int32_t n = heightfield_samples_per_side();
   std::string bytes(2 * sizeof(std::int32_t) + samples.size() * sizeof(float), '\0');
   std::memcpy(bytes.data(), &n, sizeof n);
   std::memcpy(bytes.data() + sizeof n, &n, sizeof n);
@@ -332,7 +324,7 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   w.line(1, "<compiler angle=\"radian\"/>");
   const double ratio = impratio(body);
   const Terrain& terrain = options.scene.terrain;
-  const bool dynamic = options.scene.tunnel || terrain.kind == TerrainKind::steps;
+  const bool dynamic = options.scene.tunnel || !terrain_boxes(terrain).empty();
   w.line(1, "<option timestep=\"" + num(options.physics_dt) + "\" integrator=\"" + kIntegrator +
                 "\" cone=\"" + kCone + "\" jacobian=\"" + kJacobian + "\" collision=\"" +
                 (dynamic ? kTunnelCollision : kFlatCollision) + "\"" +
@@ -343,10 +335,10 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
          "rgb2=\".25 .3 .35\" width=\"256\" height=\"256\"/>");
   w.line(2, "<material name=\"grid\" texture=\"grid\" texrepeat=\"10 10\"/>");
   w.line(2, "<material name=\"wall\" rgba=\"" + std::string(kWallRgba) + "\"/>");
-  if (terrain.kind == TerrainKind::rough) {
+  if (heightfield_samples(terrain)) {
     w.line(2, "<hfield name=\"terrain\" file=\"" + std::string(kHeightfieldFile) + "\" size=\"" +
                   num(kTerrainSide / 2.0) + " " + num(kTerrainSide / 2.0) + " " +
-                  num(terrain.height_m) + " " + num(kHeightfieldBase) + "\"/>");
+                  num(rise(terrain)) + " " + num(kHeightfieldBase) + "\"/>");
   }
   w.line(1, "</asset>");
   w.line(1, "<default>");
@@ -368,9 +360,9 @@ std::string make_mjcf(const RobotBody& body, const MjcfOptions& options) {
   // The robot stands on the ground: above rough ground's highest bump; on a slope, tilted with
   // it about the start.
   double z0 = stand_height(body, options.start_pose);
-  if (terrain.kind == TerrainKind::rough) z0 += terrain.height_m;
+  z0 += rise(terrain);
   emitted.qpos = {0.0, 0.0, z0, 1.0, 0.0, 0.0, 0.0};
-  if (terrain.kind == TerrainKind::slope) {
+  if (tilted(terrain)) {
     const std::array<double, 4> q = ground_rotation(terrain);
     const Vec3 p = rotated(q, {0.0, 0.0, z0});
     emitted.qpos = {p.x, p.y, p.z, q[0], q[1], q[2], q[3]};
@@ -448,38 +440,32 @@ std::string robot_file_mjcf(const RobotBody& body, const Scene& scene, const Rob
   Writer w;
   w.line(0, "<mujoco model=\"multicpg-robot-file\">");
   w.line(1, "<include file=\"" + model_file + "\"/>");
-  // The ground (robot/terrain.h): a flat model keeps its own plane (or gets one), steps stand on
-  // it; a slope and rough ground replace it (make_sim_model turns the model's own off).
+  // The ground (robot/terrain.h): a model keeps its own plane (or gets one) where the terrain
+  // stands on it (flat, steps); a slope's plane and rough ground's heightfield replace it
+  // (make_sim_model turns the model's own off).
   const Terrain& t = scene.terrain;
   const std::string side = num(kTerrainSide / 2.0);
-  if (t.kind == TerrainKind::rough) {
+  const bool heightfield = heightfield_samples(t).has_value();
+  if (heightfield) {
     w.line(1, "<asset>");
     w.line(2, "<hfield name=\"multicpg_terrain\" file=\"" + std::string(kHeightfieldFile) +
-                  "\" size=\"" + side + " " + side + " " + num(t.height_m) + " " +
+                  "\" size=\"" + side + " " + side + " " + num(rise(t)) + " " +
                   num(kHeightfieldBase) + "\"/>");
     w.line(1, "</asset>");
   }
   w.line(1, "<worldbody>");
-  if (t.kind == TerrainKind::rough) {
+  if (heightfield) {
     w.line(2, "<geom name=\"" + std::string(kRobotFileGround) +
                   "\" type=\"hfield\" hfield=\"multicpg_terrain\"/>");
-  } else if (t.kind == TerrainKind::slope || file.add_ground) {
+  } else if (!keeps_own_ground(t) || file.add_ground) {
     w.line(2, "<geom name=\"" + std::string(kRobotFileGround) + "\" type=\"plane\" size=\"" + side +
                   " " + side + " 0.1\"" +
-                  (t.kind == TerrainKind::slope ? " quat=\"" + quat(ground_rotation(t)) + "\""
-                                                : std::string()) +
+                  (tilted(t) ? " quat=\"" + quat(ground_rotation(t)) + "\"" : std::string()) +
                   "/>");
   }
-  if (t.kind == TerrainKind::steps) {
-    int n = 0;
-    for (double dir : {1.0, -1.0}) {
-      for (double x = kStepsStart; x + t.depth_m <= kTerrainSide / 2.0; x += 2.0 * t.depth_m) {
-        const Vec3 pos{dir * (x + t.depth_m / 2.0), 0.0, t.height_m / 2.0};
-        w.line(2, "<geom name=\"multicpg_step_" + std::to_string(n++) + "\" type=\"box\" pos=\"" +
-                      vec(pos) + "\" size=\"" + num(t.depth_m / 2.0) + " " + side + " " +
-                      num(t.height_m / 2.0) + "\"/>");
-      }
-    }
+  int n = 0;
+  for (const TerrainBox& box : terrain_boxes(t)) {
+    w.line(2, box_geom("multicpg_step_" + std::to_string(n++), box, "") + "/>");
   }
   w.line(1, "</worldbody>");
   if (!file.servo_joints.empty()) {

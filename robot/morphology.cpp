@@ -1,6 +1,7 @@
 #include "robot/morphology.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "common/errors.h"
 
@@ -15,8 +16,8 @@ LegType leg_type(RobotKind kind, int position, int per_side) {
   return position == per_side - 1 ? LegType::hind : LegType::middle;
 }
 
-Morphology make(RobotKind kind, std::string name, int per_side) {
-  Morphology m{kind, std::move(name), per_side, {}};
+Morphology make(RobotKind kind, int per_side) {
+  Morphology m{kind, std::string(to_string(kind)), per_side, {}};
   for (Side side : {Side::right, Side::left}) {
     for (int pos = 0; pos < per_side; ++pos) {
       std::string leg_name(1, side == Side::right ? 'R' : 'L');
@@ -31,40 +32,31 @@ Morphology make(RobotKind kind, std::string name, int per_side) {
 
 const Morphology& morphology(RobotKind kind) {
   static const std::array<Morphology, kRobotKinds.size()> all{
-      make(RobotKind::hexapod, "hexapod", 3), make(RobotKind::quadruped, "quadruped", 2),
-      make(RobotKind::octopod, "octopod", 4)};
+      make(RobotKind::hexapod, 3), make(RobotKind::quadruped, 2), make(RobotKind::octopod, 4)};
   return all[robot_index(kind)];
 }
 
 std::string_view to_string(RobotKind kind) {
-  return morphology(kind).name;
+  return kRobotKindNames.name(kind);
 }
 
 std::string_view to_string(Joint joint) {
-  switch (joint) {
-    case Joint::CTr:
-      return "CTr";
-    case Joint::FTi:
-      return "FTi";
-    case Joint::TC:
-      break;
-  }
-  return "TC";
+  return kJointNames.name(joint);
+}
+
+std::string_view to_string(Side side) {
+  return kSideNames.name(side);
 }
 
 Joint parse_joint(std::string_view name) {
-  for (Joint j : kJoints) {
-    if (name == to_string(j)) return j;
-  }
-  throw BadInput("unknown joint '" + std::string(name) + "' (TC, CTr or FTi)");
+  if (const std::optional<Joint> joint = kJointNames.find(name)) return *joint;
+  throw BadInput("unknown joint '" + std::string(name) + "' (" + kJointNames.list(" or ") + ")");
 }
 
 RobotKind parse_robot(std::string_view name) {
-  for (RobotKind k : kRobotKinds) {
-    if (name == morphology(k).name) return k;
-  }
-  throw BadInput("unknown robot '" + std::string(name) +
-                 "' (expected hexapod, quadruped or octopod)");
+  if (const std::optional<RobotKind> kind = kRobotKindNames.find(name)) return *kind;
+  throw BadInput("unknown robot '" + std::string(name) + "' (expected " +
+                 kRobotKindNames.list(" or ") + ")");
 }
 
 std::size_t leg_index(const Morphology& morph, std::string_view name) {

@@ -8,16 +8,21 @@
 #include <string_view>
 #include <vector>
 
+#include "common/enum_names.h"
+
 namespace multicpg::robot {
 
 enum class RobotKind { hexapod, quadruped, octopod };
-inline constexpr std::array<RobotKind, 3> kRobotKinds{RobotKind::hexapod, RobotKind::quadruped,
-                                                      RobotKind::octopod};
+inline constexpr auto kRobotKindNames = enum_names<RobotKind>({{RobotKind::hexapod, "hexapod"},
+                                                               {RobotKind::quadruped, "quadruped"},
+                                                               {RobotKind::octopod, "octopod"}});
+inline constexpr std::array<RobotKind, 3> kRobotKinds = kRobotKindNames.values();
 // Position of `kind` in kRobotKinds, for tables of per-robot values.
 constexpr std::size_t robot_index(RobotKind kind) {
   return static_cast<std::size_t>(kind);
 }
 enum class Side { right, left };
+inline constexpr auto kSideNames = enum_names<Side>({{Side::right, "right"}, {Side::left, "left"}});
 // Which AMOSII leg design a leg uses; decides its TC window and limit (docs/controller.md "Motor
 // mapping and joint windows", docs/robots.md "Joint limits").
 enum class LegType { front, middle, hind };
@@ -25,7 +30,9 @@ enum class LegType { front, middle, hind };
 // controller step").
 enum class Joint { TC, CTr, FTi };
 inline constexpr std::size_t kJointsPerLeg = 3;
-inline constexpr std::array<Joint, kJointsPerLeg> kJoints{Joint::TC, Joint::CTr, Joint::FTi};
+inline constexpr auto kJointNames =
+    enum_names<Joint>({{Joint::TC, "TC"}, {Joint::CTr, "CTr"}, {Joint::FTi, "FTi"}});
+inline constexpr std::array<Joint, kJointsPerLeg> kJoints = kJointNames.values();
 
 struct Leg {
   std::string name;  // R1..Rn, L1..Ln
@@ -46,8 +53,9 @@ struct Morphology {
 
 const Morphology& morphology(RobotKind kind);
 
-std::string_view to_string(RobotKind kind);
-std::string_view to_string(Joint joint);
+std::string_view to_string(RobotKind kind);  // "hexapod", ...
+std::string_view to_string(Joint joint);     // "TC", "CTr", "FTi"
+std::string_view to_string(Side side);       // "right", "left"
 
 // Parsers for user input; each throws BadInput with one line naming what is wrong.
 RobotKind parse_robot(std::string_view name);

@@ -20,10 +20,6 @@ std::string joint_text(const JointMap& j) {
 
 }  // namespace
 
-std::string_view to_string(Side side) {
-  return side == Side::right ? "right" : "left";
-}
-
 RobotFile builtin_robot_file(RobotKind kind, const std::filesystem::path& model) {
   const RobotBody& body = robot_body(kind);
   RobotFile file;

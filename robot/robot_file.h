@@ -61,6 +61,4 @@ RobotFile builtin_robot_file(RobotKind kind, const std::filesystem::path& model)
 // back to the same description (every number written to round-trip exactly).
 std::string robot_file_toml(const RobotFile& file);
 
-std::string_view to_string(Side side);  // "right", "left"
-
 }  // namespace multicpg::robot

@@ -9,13 +9,10 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "common/variants.h"
 
 namespace multicpg::robot {
 namespace {
-
-const std::string kForm =
-    "takes flat, slope:DEG[:HEADING_DEG], rough:HEIGHT_M[:SEED] or steps:HEIGHT_M:DEPTH_M "
-    "(e.g. slope:5, rough:0.01, steps:0.02:0.2)";
 
 std::vector<std::string_view> fields(std::string_view text) {
   std::vector<std::string_view> out;
@@ -57,81 +54,216 @@ std::uint64_t splitmix64(std::uint64_t& x) {
   return z ^ (z >> 31);
 }
 
+// "flat, slope:DEG[:HEADING_DEG], ... or steps:HEIGHT_M:DEPTH_M (e.g. slope:5, ...)" from the
+// kinds' parameters.
+std::string forms() {
+  std::vector<std::string> all;
+  std::vector<std::string> examples;
+  each_alternative<TerrainKind>([&](const auto& kind) {
+    using Kind = std::decay_t<decltype(kind)>;
+    std::string form(Kind::kName);
+    for (const TerrainParam& p : Kind::kParams) {
+      form += p.fallback ? "[:" + std::string(p.form) + "]" : ":" + std::string(p.form);
+    }
+    all.push_back(form);
+    if (!Kind::kExample.empty()) examples.emplace_back(Kind::kExample);
+  });
+  const auto list = [](const std::vector<std::string>& items, const char* last) {
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      out += (i == 0 ? "" : i + 1 == items.size() ? last : ", ") + items[i];
+    }
+    return out;
+  };
+  return "takes " + list(all, " or ") + " (e.g. " + list(examples, ", ") + ")";
+}
+
+// One parameter's text, read as its type.
+void read_value(std::string_view text, const TerrainParam& p, double& value) {
+  value = number(text, p.what, *p.limits, p.unit);
+}
+void read_value(std::string_view text, const TerrainParam& p, std::uint64_t& value) {
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) {
+    throw BadInput("terrain: " + std::string(p.what) + " '" + std::string(text) +
+                   "' is not a whole number");
+  }
+}
+std::string value_text(double v) {
+  return shortest(v);
+}
+std::string value_text(std::uint64_t v) {
+  return std::to_string(v);
+}
+
+// Calls f(param, value) for each parameter of `kind` with its member.
+template <class Kind, class F>
+void each_value(Kind& kind, F&& f) {
+  std::size_t i = 0;
+  std::apply([&](auto&... value) { (f(Kind::kParams[i++], value), ...); }, kind.values());
+}
+
+// The traits a kind may have (robot/terrain.h).
+template <class Kind>
+concept Tilted = requires(const Kind& k) {
+  k.rotation();
+};
+
 }  // namespace
 
-void validate(const Terrain& t) {
-  switch (t.kind) {
-    case TerrainKind::flat:
-      break;
-    case TerrainKind::slope:
-      require_in("slope_deg", t.slope_deg, kSlopeLimits);
-      require_in("heading_deg", t.heading_deg, kHeadingLimits);
-      break;
-    case TerrainKind::rough:
-      require_in("height_m", t.height_m, kBumpLimits);
-      break;
-    case TerrainKind::steps:
-      require_in("height_m", t.height_m, kBumpLimits);
-      require_in("depth_m", t.depth_m, kStepDepthLimits);
-      break;
+std::array<double, 4> Slope::rotation() const {
+  const double angle = -slope_deg * std::numbers::pi / 180.0;
+  const double heading = heading_deg * std::numbers::pi / 180.0;
+  const double s = std::sin(angle / 2.0);
+  return {std::cos(angle / 2.0), -std::sin(heading) * s, std::cos(heading) * s, 0.0};
+}
+
+std::vector<float> Rough::heightfield_samples() const {
+  const int n = heightfield_samples_per_side();
+  std::vector<float> out(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  std::uint64_t state = seed;
+  for (float& v : out) {
+    // The top 24 bits: every float in [0, 1) they give is exact.
+    v = static_cast<float>(splitmix64(state) >> 40) / static_cast<float>(1 << 24);
   }
+  const auto [lo, hi] = std::minmax_element(out.begin(), out.end());
+  const float low = *lo;
+  const float span = *hi - *lo;
+  for (float& v : out) v = (v - low) / span;
+  return out;
+}
+
+std::vector<TerrainBox> Steps::boxes() const {
+  std::vector<TerrainBox> out;
+  for (double side : {1.0, -1.0}) {
+    for (double x = kStepsStart; x + depth_m <= kTerrainSide / 2.0; x += 2.0 * depth_m) {
+      out.push_back({{side * (x + depth_m / 2.0), 0.0, height_m / 2.0},
+                     {depth_m / 2.0, kTerrainSide / 2.0, height_m / 2.0}});
+    }
+  }
+  return out;
+}
+
+void validate(const Terrain& t) {
+  std::visit(
+      [](const auto& kind) {
+        each_value(kind, [](const TerrainParam& p, const auto& value) {
+          if (p.limits) require_in(std::string(p.key), static_cast<double>(value), *p.limits);
+        });
+      },
+      t.kind);
 }
 
 Terrain parse_terrain(std::string_view text) {
   const std::vector<std::string_view> f = fields(text);
-  Terrain t;
-  const auto count = [&](std::size_t lo, std::size_t hi) {
-    if (f.size() < lo || f.size() > hi) throw BadInput(kForm + "; got '" + std::string(text) + "'");
-  };
-  if (f[0] == "flat") {
-    count(1, 1);
-  } else if (f[0] == "slope") {
-    count(2, 3);
-    t.kind = TerrainKind::slope;
-    t.slope_deg = number(f[1], "the slope", kSlopeLimits, "deg");
-    if (f.size() == 3) t.heading_deg = number(f[2], "the heading", kHeadingLimits, "deg");
-  } else if (f[0] == "rough") {
-    count(2, 3);
-    t.kind = TerrainKind::rough;
-    t.height_m = number(f[1], "the bump height", kBumpLimits, "m");
-    if (f.size() == 3) {
-      const std::string_view s = f[2];
-      const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), t.seed);
-      if (s.empty() || ec != std::errc() || ptr != s.data() + s.size()) {
-        throw BadInput("terrain: the seed '" + std::string(s) + "' is not a whole number");
-      }
+  std::optional<Terrain> made;
+  each_alternative<TerrainKind>([&](auto kind) {
+    using Kind = decltype(kind);
+    if (made || f[0] != Kind::kName) return;
+    std::size_t required = 0;
+    for (const TerrainParam& p : Kind::kParams) required += p.fallback ? 0 : 1;
+    if (f.size() < 1 + required || f.size() > 1 + Kind::kParams.size()) {
+      throw BadInput(forms() + "; got '" + std::string(text) + "'");
     }
-  } else if (f[0] == "steps") {
-    count(3, 3);
-    t.kind = TerrainKind::steps;
-    t.height_m = number(f[1], "the step height", kBumpLimits, "m");
-    t.depth_m = number(f[2], "the step depth", kStepDepthLimits, "m");
-  } else {
-    throw BadInput(kForm + "; got '" + std::string(text) + "'");
-  }
-  return t;
+    std::size_t i = 1;
+    each_value(kind, [&](const TerrainParam& p, auto& value) {
+      using Value = std::decay_t<decltype(value)>;
+      if (i < f.size()) {
+        read_value(f[i], p, value);
+      } else {
+        value = static_cast<Value>(*p.fallback);
+      }
+      ++i;
+    });
+    made = Terrain{kind};
+  });
+  if (!made) throw BadInput(forms() + "; got '" + std::string(text) + "'");
+  return *made;
 }
 
 std::string terrain_text(const Terrain& t) {
-  switch (t.kind) {
-    case TerrainKind::flat:
-      break;
-    case TerrainKind::slope:
-      return "slope:" + shortest(t.slope_deg) + ":" + shortest(t.heading_deg);
-    case TerrainKind::rough:
-      return "rough:" + shortest(t.height_m) + ":" + std::to_string(t.seed);
-    case TerrainKind::steps:
-      return "steps:" + shortest(t.height_m) + ":" + shortest(t.depth_m);
-  }
-  return "flat";
+  return std::visit(
+      [](const auto& kind) {
+        std::string text(kind.kName);
+        each_value(kind, [&](const TerrainParam&, const auto& value) {
+          text += ':';
+          text += value_text(value);
+        });
+        return text;
+      },
+      t.kind);
+}
+
+std::string_view terrain_name(const Terrain& t) {
+  return std::visit([](const auto& kind) { return kind.kName; }, t.kind);
+}
+
+bool is_flat(const Terrain& t) {
+  return std::holds_alternative<Flat>(t.kind);
+}
+
+bool bounded(const Terrain& t) {
+  return std::visit([](const auto& kind) { return kind.kBounded; }, t.kind);
+}
+
+bool keeps_own_ground(const Terrain& t) {
+  return std::visit([](const auto& kind) { return kind.kOwnGround; }, t.kind);
+}
+
+bool tilted(const Terrain& t) {
+  return std::visit([]<class Kind>(const Kind&) { return Tilted<Kind>; }, t.kind);
+}
+
+double rise(const Terrain& t) {
+  return std::visit(
+      [](const auto& kind) {
+        if constexpr (requires { kind.rise(); }) {
+          return kind.rise();
+        } else {
+          return 0.0;
+        }
+      },
+      t.kind);
+}
+
+std::optional<std::vector<float>> heightfield_samples(const Terrain& t) {
+  return std::visit(
+      [](const auto& kind) -> std::optional<std::vector<float>> {
+        if constexpr (requires { kind.heightfield_samples(); }) {
+          return kind.heightfield_samples();
+        } else {
+          return std::nullopt;
+        }
+      },
+      t.kind);
+}
+
+int heightfield_samples_per_side() {
+  return static_cast<int>(std::lround(kTerrainSide / kRoughCell)) + 1;
+}
+
+std::vector<TerrainBox> terrain_boxes(const Terrain& t) {
+  return std::visit(
+      [](const auto& kind) -> std::vector<TerrainBox> {
+        if constexpr (requires { kind.boxes(); }) {
+          return kind.boxes();
+        } else {
+          return {};
+        }
+      },
+      t.kind);
 }
 
 std::array<double, 4> ground_rotation(const Terrain& t) {
-  if (t.kind != TerrainKind::slope) return {1.0, 0.0, 0.0, 0.0};
-  const double angle = -t.slope_deg * std::numbers::pi / 180.0;
-  const double heading = t.heading_deg * std::numbers::pi / 180.0;
-  const double s = std::sin(angle / 2.0);
-  return {std::cos(angle / 2.0), -std::sin(heading) * s, std::cos(heading) * s, 0.0};
+  return std::visit(
+      []<class Kind>(const Kind& kind) -> std::array<double, 4> {
+        if constexpr (Tilted<Kind>) {
+          return kind.rotation();
+        } else {
+          return {1.0, 0.0, 0.0, 0.0};
+        }
+      },
+      t.kind);
 }
 
 std::array<double, 3> rotate(const std::array<double, 4>& q, const std::array<double, 3>& v) {
@@ -150,29 +282,6 @@ std::array<double, 3> rotate(const std::array<double, 4>& q, const std::array<do
 std::array<double, 3> to_ground_frame(const Terrain& terrain, const std::array<double, 3>& p) {
   const std::array<double, 4> q = ground_rotation(terrain);
   return rotate({q[0], -q[1], -q[2], -q[3]}, p);  // the inverse rotation
-}
-
-bool bounded(const Terrain& terrain) {
-  return terrain.kind == TerrainKind::rough || terrain.kind == TerrainKind::steps;
-}
-
-int rough_samples_per_side() {
-  return static_cast<int>(std::lround(kTerrainSide / kRoughCell)) + 1;
-}
-
-std::vector<float> rough_samples(const Terrain& terrain) {
-  const int n = rough_samples_per_side();
-  std::vector<float> out(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
-  std::uint64_t state = terrain.seed;
-  for (float& v : out) {
-    // The top 24 bits: every float in [0, 1) they give is exact.
-    v = static_cast<float>(splitmix64(state) >> 40) / static_cast<float>(1 << 24);
-  }
-  const auto [lo, hi] = std::minmax_element(out.begin(), out.end());
-  const float low = *lo;
-  const float span = *hi - *lo;
-  for (float& v : out) v = (v - low) / span;
-  return out;
 }
 
 }  // namespace multicpg::robot

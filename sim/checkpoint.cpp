@@ -18,11 +18,12 @@ namespace {
 
 using Json = nlohmann::json;
 constexpr const char* kFormat = "multicpg checkpoint";
-// Version 2: the mjData arrays of checkpoint.h, the controller (neural/json.h), joint targets,
-// step counters, warning counts, the fault schedule and what the faults in force do
-// (sim/fault_state.h: joint conditions, the yaw sensor's error and its random state, and the
-// arrays of the run's own model that differ from the shared one).
-constexpr int kVersion = 2;
+// Version 3: the mjData arrays of checkpoint.h, the controller (neural/json.h), joint targets,
+// step counters, warning counts, the fault schedule (what came, so what is in force) and what the
+// faults in force do (sim/fault_state.h: joint conditions, the yaw sensor's error and its random
+// state, and the arrays of the run's own model that differ from the shared one). Version 2 also
+// held the faults in force apart from the schedule.
+constexpr int kVersion = 3;
 // Controller and physics step counters stay below a warm-up plus a run, each at most kMaxSteps.
 constexpr long kMaxCounter = 2 * kMaxSteps;
 
@@ -125,7 +126,7 @@ std::shared_ptr<const mjModel> own_model_from_json(const SimModel& model, const 
 }
 
 Json effects_json(const SimModel& model, const SimState& state) {
-  const FaultEffects& e = state.faults;
+  const FaultState& e = state.faults;
   Json joints = Json::array();
   for (const auto& leg : e.joints) {
     Json row = Json::array();
@@ -141,12 +142,10 @@ Json effects_json(const SimModel& model, const SimState& state) {
             {"noise_sigma_deg", e.sensor.noise_sigma_deg},
             {"noise_deg", e.sensor.noise_deg},
             {"random", random.str()}}},
-          {"in_force", e.in_force},
           {"model", own_model_json(model, state)}};
 }
 
-void read_effects(const SimModel& model, const Json& doc, const FaultSchedule& faults,
-                  FaultEffects& e) {
+void read_effects(const SimModel& model, const Json& doc, FaultState& e) {
   const Json& joints = doc.at("joints");
   if (!joints.is_array() || joints.size() != model.legs.size()) {
     bad(fmt::format("has joint conditions for {} legs, the model {}", joints.size(),
@@ -177,8 +176,6 @@ void read_effects(const SimModel& model, const Json& doc, const FaultSchedule& f
   std::istringstream random(sensor.at("random").get<std::string>());
   random >> e.sensor.random;
   if (!random) bad("has a damaged yaw sensor random state");
-  e.in_force = doc.at("in_force").get<FaultTimeline>();
-  if (e.in_force != faults.in_force()) bad("has faults in force its fault schedule does not");
   e.model.reset();
   if (!doc.at("model").is_null()) e.model = own_model_from_json(model, doc.at("model"));
 }
@@ -250,7 +247,7 @@ Json checkpoint_json(const SimModel& model, const StepperCheckpoint& checkpoint)
   for (const mjWarningStat& w : d->warning) warnings.push_back({w.lastinfo, w.number});
   data["warning"] = warnings;
 
-  const FaultSchedule& f = checkpoint.faults;
+  const FaultSchedule& f = checkpoint.state.faults.schedule;
   return {{"format", kFormat},
           {"version", kVersion},
           {"robot", model.controller.morphology.name},
@@ -282,7 +279,7 @@ StepperCheckpoint checkpoint_from_json(const SimModel& model, const Json& doc) {
     }
 
     const mjModel* m = model.mj.get();
-    StepperCheckpoint c{SimState{}, FaultSchedule(model.controller.morphology, {}), 0};
+    StepperCheckpoint c{SimState{}, 0};
     c.state.data.reset(mj_makeData(m));
     if (!c.state.data) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
     mjData* d = c.state.data.get();
@@ -297,12 +294,12 @@ StepperCheckpoint checkpoint_from_json(const SimModel& model, const Json& doc) {
     }
 
     const Json& faults = doc.at("faults");
-    c.faults = FaultSchedule(
+    c.state.faults.schedule = FaultSchedule(
         model.controller.morphology, faults.at("timeline").get<FaultTimeline>(),
         faults.at("come").get<std::size_t>(), faults.at("applied").get<std::vector<Fault>>());
-    read_effects(model, doc.at("effects"), c.faults, c.state.faults);
+    read_effects(model, doc.at("effects"), c.state.faults);
     c.state.controller = doc.at("controller").get<neural::ControllerState>();
-    check_controller(model, c.state.controller, c.faults);
+    check_controller(model, c.state.controller, c.state.faults.schedule);
     c.state.targets = doc.at("targets").get<std::vector<robot::LegAngles>>();
     if (c.state.targets.size() != model.legs.size()) {
       bad(fmt::format("has joint targets for {} legs, the model {}", c.state.targets.size(),

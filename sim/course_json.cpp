@@ -12,6 +12,15 @@ void to_json(nlohmann::json& j, const Fault& fault) {
   if (const std::optional<double> v = value_of(fault.kind)) j["value"] = *v;
 }
 
+nlohmann::json faults_record(const FaultTimeline& faults) {
+  const bool single = faults.size() == 1 && !faults.front().recover &&
+                      std::holds_alternative<LegFault>(faults.front().kind) &&
+                      !faults.front().joint;
+  return {{"disabled", single ? faults.front().legs : std::vector<std::size_t>{}},
+          {"fail_step", single ? faults.front().step : 0L},
+          {"faults", single ? FaultTimeline{} : faults}};
+}
+
 void from_json(const nlohmann::json& j, Fault& fault) {
   fault.step = j.value("step", 0L);
   fault.legs = j.value("legs", std::vector<std::size_t>{});

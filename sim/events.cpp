@@ -12,24 +12,6 @@
 
 namespace multicpg::sim {
 
-const char* to_string(EventKind kind) {
-  switch (kind) {
-    case EventKind::fault:
-      return "fault";
-    case EventKind::recovery:
-      return "recovery";
-    case EventKind::detection:
-      return "detection";
-    case EventKind::trial_start:
-      return "trial_start";
-    case EventKind::trial_end:
-      return "trial_end";
-    case EventKind::episode_end:
-      return "episode_end";
-  }
-  return "event";
-}
-
 namespace {
 
 bool is_leg_fault(const Fault& f) {
@@ -94,8 +76,8 @@ void check_shape(const robot::Morphology& morph, const Fault& f, long previous) 
       const double deg = 180.0 / std::numbers::pi;
       if (*locked->value < r.lo * deg || *locked->value > r.hi * deg) {
         throw BadInput(fmt::format("{}.{} cannot lock at {} deg: its limits are {:.0f}..{:.0f} deg",
-                                   morph.legs[leg].name, robot::to_string(*f.joint),
-                                   *locked->value, r.lo * deg, r.hi * deg));
+                                   morph.legs[leg].name, robot::to_string(*f.joint), *locked->value,
+                                   r.lo * deg, r.hi * deg));
       }
     }
   }
@@ -175,8 +157,7 @@ FaultTimeline in_force_after(const robot::Morphology& morph, const FaultTimeline
   return in_force;
 }
 
-std::vector<std::size_t> failed_after(const robot::Morphology& morph,
-                                      const FaultTimeline& faults) {
+std::vector<std::size_t> failed_after(const robot::Morphology& morph, const FaultTimeline& faults) {
   std::vector<std::size_t> legs;
   for (const Fault& a : in_force_after(morph, faults)) {
     if (is_leg_fault(a)) legs.push_back(a.legs.front());

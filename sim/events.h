@@ -39,8 +39,6 @@ struct Event {
   bool accepted = false;          // trial_end: kept; episode_end: held under the threshold
 };
 
-const char* to_string(EventKind kind);
-
 // Throws BadInput (one line, leg and joint names) for a timeline that is not sorted, has a step
 // outside 0..kMaxSteps, names a leg out of range or twice in one event, names a joint where the
 // kind strikes whole legs (or none where it strikes joints), locks a joint outside its limits,
@@ -67,12 +65,16 @@ FaultTimeline in_force_after(const robot::Morphology& morph, const FaultTimeline
 void take_fault(const robot::Morphology& morph, const Fault& fault, FaultTimeline& in_force);
 
 // A run's faults as they come (docs/faults.md "When faults strike"): its timeline, how much of it
-// has come, and what is in force now. The one home of fault bookkeeping: sim::Stepper applies a
-// run's faults through it (and the learner's fake walker likewise), and the learner reads from it
-// what came. A leg fault is the controller's (the leg holds its posture, neural::set_disabled);
-// every other kind is the physics' (sim/fault_effects.h), which the stepper applies to what came.
+// has come, and what is in force now. The one home of fault bookkeeping: a simulated run keeps it
+// in its state (sim::FaultState, which sim::Stepper applies faults through; the learner's fake
+// walker keeps one likewise), and the learner, films and the viewer read from it what came and
+// what is in force. A leg fault is the controller's (the leg holds its posture,
+// neural::set_disabled); every other kind is the physics' (sim/fault_effects.h), which the stepper
+// applies to what came.
 class FaultSchedule {
  public:
+  // No robot and no faults (a state not yet made).
+  FaultSchedule() = default;
   // Throws BadInput (validate's message) for a bad timeline.
   FaultSchedule(const robot::Morphology& morph, FaultTimeline timeline);
   // A schedule part-way through its timeline (a checkpoint read back, sim/checkpoint.h): the

@@ -155,8 +155,6 @@ void make_slippery(const SimModel& model, SimState& state, const Fault& fault, d
 }  // namespace
 
 void apply_fault_effect(const SimModel& model, SimState& state, const Fault& fault) {
-  const robot::Morphology& morph = model.controller.morphology;
-  take_fault(morph, fault, state.faults.in_force);
   SensorCondition& sensor = state.faults.sensor;
   std::visit(
       Overloaded{
@@ -183,7 +181,8 @@ void apply_fault_effect(const SimModel& model, SimState& state, const Fault& fau
       },
       fault.kind);
   // Every reshaping fault recovered: the shared model again, exactly as before.
-  if (std::none_of(state.faults.in_force.begin(), state.faults.in_force.end(), reshapes)) {
+  const FaultTimeline& in_force = state.faults.schedule.in_force();
+  if (std::none_of(in_force.begin(), in_force.end(), reshapes)) {
     state.faults.model.reset();
   }
 }

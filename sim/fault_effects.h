@@ -16,8 +16,8 @@
 
 namespace multicpg::sim {
 
-// Applies the effect of a fault or recovery that has just come (after its FaultSchedule took it,
-// so it is valid for the faults in force).
+// Applies the effect of a fault or recovery that has just come: state.faults.schedule has taken
+// it (so it is valid, and the faults in force are those after it).
 void apply_fault_effect(const SimModel& model, SimState& state, const Fault& fault);
 
 // One controller step of the yaw sensor's error: its drift grows, a new noise draw (call after

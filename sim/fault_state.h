@@ -1,6 +1,7 @@
-// What the faults in force do to a run's physics, as state (sim/fault_effects.h changes it): each
-// joint's servo (driven, locked or off, and its torque limit), the run's own MuJoCo model while
-// a fault reshapes the robot, and the yaw sensor's error. Part of sim::SimState.
+// A run's faults as state (part of sim::SimState): what has come and what is in force (its
+// FaultSchedule, the one book of them), and what they do to the physics and the sensors
+// (sim/fault_effects.h changes that): each joint's servo (driven, locked or off, and its torque
+// limit), the run's own MuJoCo model while a fault reshapes the robot, and the yaw sensor's error.
 #pragma once
 
 #include <mujoco/mujoco.h>
@@ -11,7 +12,7 @@
 #include <vector>
 
 #include "robot/morphology.h"
-#include "sim/faults.h"
+#include "sim/events.h"
 
 namespace multicpg::sim {
 
@@ -34,14 +35,15 @@ struct SensorCondition {
   std::mt19937_64 random;  // seeded with the run's seed (sim::StartSpec::seed)
 };
 
-struct FaultEffects {
+struct FaultState {
+  // The run's timeline, what of it has come and the faults in force (sim::Stepper applies them).
+  FaultSchedule schedule;
   std::vector<std::array<JointCondition, robot::kJointsPerLeg>> joints;  // per leg
   // While a fault reshapes the robot (a locked joint's range, a short tibia, a slippery foot):
   // the run's own model, never changed once made (a change makes a new one), so a film may draw
   // from it while the run goes on. Null: the shared model.
   std::shared_ptr<const mjModel> model;
   SensorCondition sensor;
-  FaultTimeline in_force;  // the faults in force, one per leg (or the sensor) struck
 };
 
 }  // namespace multicpg::sim

@@ -1,25 +1,19 @@
 #include "sim/faults.h"
 
-#include <algorithm>
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "common/errors.h"
+#include "common/variants.h"
 
 namespace multicpg::sim {
 namespace {
 
 template <class Kind>
-concept HasValue = requires { Kind::kValue; };
-
-// Calls `f` with a default-made value of each alternative of Malfunction, in order.
-template <class F, std::size_t... I>
-void each_kind(F&& f, std::index_sequence<I...>) {
-  (f(std::variant_alternative_t<I, Malfunction>{}), ...);
-}
-template <class F>
-void each_kind(F&& f) {
-  each_kind(f, std::make_index_sequence<std::variant_size_v<Malfunction>>{});
-}
+concept HasValue = requires {
+  Kind::kValue;
+};
 
 template <class Kind>
 std::optional<double> value_of_kind(const Kind& k) {
@@ -40,26 +34,13 @@ Strikes strikes(const Malfunction& kind) {
   return std::visit([](const auto& k) { return std::decay_t<decltype(k)>::kStrikes; }, kind);
 }
 
-std::optional<ValueSpec> value_spec(const Malfunction& kind) {
-  return std::visit(
-      [](const auto& k) -> std::optional<ValueSpec> {
-        using Kind = std::decay_t<decltype(k)>;
-        if constexpr (HasValue<Kind>) {
-          return Kind::kValue;
-        } else {
-          return std::nullopt;
-        }
-      },
-      kind);
-}
-
 std::optional<double> value_of(const Malfunction& kind) {
   return std::visit([](const auto& k) { return value_of_kind(k); }, kind);
 }
 
 std::string kind_names() {
   std::string names;
-  each_kind([&](const auto& k) {
+  each_alternative<Malfunction>([&](const auto& k) {
     if (!names.empty()) names += ", ";
     names += std::decay_t<decltype(k)>::kName;
   });
@@ -68,7 +49,7 @@ std::string kind_names() {
 
 Malfunction make_kind(std::string_view name, std::optional<double> value, bool value_optional) {
   std::optional<Malfunction> made;
-  each_kind([&](const auto& k) {
+  each_alternative<Malfunction>([&](const auto& k) {
     using Kind = std::decay_t<decltype(k)>;
     if (made || Kind::kName != name) return;
     if constexpr (HasValue<Kind>) {

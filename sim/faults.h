@@ -6,8 +6,8 @@
 // kind is in sim/fault_effects.h.
 //
 // Adding a kind: an alternative of Malfunction with its traits (kName, kStrikes and, with a value,
-// kValue and a member `value`) here, and its physics in sim/fault_effects.cpp. Parsing, JSON, the CLI, experiment
-// files and Python go through the traits.
+// kValue and a member `value`) here, and its physics in sim/fault_effects.cpp. Parsing, JSON, the
+// CLI, experiment files and Python go through the traits.
 #pragma once
 
 #include <cstddef>
@@ -24,10 +24,10 @@ namespace multicpg::sim {
 
 // What a fault kind strikes.
 enum class Strikes {
-  legs,           // whole legs
-  joints,         // one joint of each leg named
-  legs_or_joints, // whole legs, or one joint of each
-  sensor,         // the yaw sensor (no leg)
+  legs,            // whole legs
+  joints,          // one joint of each leg named
+  legs_or_joints,  // whole legs, or one joint of each
+  sensor,          // the yaw sensor (no leg)
 };
 
 // A fault kind's value, written KIND=VALUE: its name, unit and documented range.
@@ -134,8 +134,6 @@ using FaultTimeline = std::vector<Fault>;
 // The name of a kind ("leg", "locked", ...) and its traits.
 std::string_view kind_name(const Malfunction& kind);
 Strikes strikes(const Malfunction& kind);
-// The kind's value spec, none for kinds without a value (leg, passive).
-std::optional<ValueSpec> value_spec(const Malfunction& kind);
 // The kind's value, none when it has none or was not given (a lock at the angle it had).
 std::optional<double> value_of(const Malfunction& kind);
 // The kind named `name` with `value` (none: without one; `value_optional`: a required value may be

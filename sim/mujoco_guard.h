@@ -1,8 +1,9 @@
-// MuJoCo's fatal errors (mju_error) as exceptions, in a process that asks for it.
+// MuJoCo's warnings and fatal errors, kept away from stdout and MUJOCO_LOG.TXT; its fatal errors
+// (mju_error) as exceptions in a process that asks for it.
 //
 // MuJoCo is C: its error handler must not return (2.2.2 carries on with the broken state) and a
 // C++ exception must not unwind through its frames, so by default the handler ends the process
-// (install_mujoco_handlers in sim.h). A process that must survive a failed call (the Python
+// (install_mujoco_handlers). A process that must survive a failed call (the Python
 // module: one bad call must not end the interpreter) calls recover_mujoco_errors(). From then on a
 // MuJoCo call made through mujoco_call runs under setjmp, and the handler longjmps back to it.
 // That is sound because only MuJoCo's C frames and the handler lie between the two, none with a
@@ -14,10 +15,20 @@
 
 #include <array>
 #include <csetjmp>
+#include <string>
 
 #include "common/errors.h"
 
 namespace multicpg::sim {
+
+// Routes MuJoCo's warnings (kept for sim_step's error) and fatal errors (one line on stderr,
+// exit 1) away from stdout, MUJOCO_LOG.TXT and its "Press Enter" prompt. Idempotent;
+// make_sim_model calls it, the CLI calls it first thing.
+void install_mujoco_handlers();
+
+// "MuJoCo warning 'bad qacc': <its last message on this thread>" for warning number `warning`
+// (mjWARN_*), as sim_step reports it.
+std::string mujoco_warning(int warning);
 
 // Makes MuJoCo's fatal errors inside mujoco_call RuntimeFailures from now on (process-wide).
 void recover_mujoco_errors();

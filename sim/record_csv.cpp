@@ -41,11 +41,6 @@ void write_row(std::ostream& out, std::size_t legs, const WalkRecord& r, std::si
 
 }  // namespace
 
-void write_record_csv(std::ostream& out, const robot::Morphology& morph, const WalkRecord& r) {
-  write_header(out, morph);
-  for (std::size_t row = 0; row < r.rows(); ++row) write_row(out, morph.size(), r, row, row);
-}
-
 RecordCsvWriter::RecordCsvWriter(std::ostream& out, const robot::Morphology& morph,
                                  std::string name)
     : out_(out), morph_(morph), name_(std::move(name)) {

@@ -9,16 +9,13 @@
 
 #include "robot/morphology.h"
 #include "sim/stepper.h"
-#include "sim/walk.h"
+#include "sim/walk_record.h"
 
 namespace multicpg::sim {
 
-// Columns: step,time_s,x_m,y_m,z_m,yaw_deg, then per leg and joint <leg>_<joint>_command,
-// _target_rad, _actual_rad, and per leg <leg>_contact. `record` must hold joint rows.
-void write_record_csv(std::ostream& out, const robot::Morphology& morph, const WalkRecord& record);
-
-// The same CSV written as the run goes: the header and row 0 when the stepper starts, one line
-// per step after it, byte for byte what write_record_csv writes of the whole record. Throws
+// The CSV written as the run goes: the header and row 0 when the stepper starts, one line per
+// step after it. Columns: step,time_s,x_m,y_m,z_m,yaw_deg, then per leg and joint
+// <leg>_<joint>_command, _target_rad, _actual_rad, and per leg <leg>_contact. Throws
 // RuntimeFailure naming `name` as soon as `out` fails (a full disk), instead of walking on.
 class RecordCsvWriter final : public Observer {
  public:

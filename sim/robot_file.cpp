@@ -1,5 +1,6 @@
 #include "sim/robot_file.h"
 
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -7,7 +8,8 @@
 #include <sstream>
 
 #include "common/errors.h"
-#include "sim/sim.h"
+#include "sim/model_build.h"
+#include "sim/mujoco_load.h"
 
 namespace multicpg::sim {
 namespace {
@@ -143,11 +145,69 @@ std::string urdf_model(const std::string& urdf, const std::string& trunk, const 
   return xml;
 }
 
-}  // namespace
-
-bool is_ground_plane(const mjModel* m, int g) {
-  return m->geom_bodyid[g] == 0 && m->geom_type[g] == mjGEOM_PLANE;
+// A motor the servo law drives brings its servo's armature (docs/robots.md "Servos", departure 2)
+// to a joint that has none: the explicit velocity loop is stable only with it.
+void give_armature(SimModel& model, const std::vector<std::string>& servo_joints) {
+  mjModel* m = model.mj.get();
+  bool changed = false;
+  for (const std::string& name : servo_joints) {
+    const int dof = m->jnt_dofadr[mj_name2id(m, mjOBJ_JOINT, name.c_str())];
+    if (m->dof_armature[dof] == 0.0) {
+      m->dof_armature[dof] = model.body.tc_servo.armature;
+      changed = true;
+    }
+  }
+  if (!changed) return;
+  // The constants MuJoCo derives from inertias at compile time.
+  const std::unique_ptr<mjData, MjDataDeleter> scratch(mj_makeData(m));
+  if (!scratch) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
+  mj_setConst(m, scratch.get());
 }
+
+// Other ground than a robot file's own flat one (robot::robot_file_mjcf): where the terrain does
+// not stand on it (a slope, rough ground) its own planes no longer collide nor show. Throws
+// OptionError ("scene.terrain") for a model whose contacts are only its <pair>s: they hold its feet
+// to its own ground.
+void leave_own_ground(mjModel* m, const robot::Terrain& terrain, const robot::RobotFile& file) {
+  if (m->opt.collision == mjCOL_PAIR || m->npair > 0) {
+    throw OptionError("scene.terrain",
+                      fmt::format("{}: its model's <contact><pair>s hold the feet to its own "
+                                  "ground: it walks only there, not on {} (docs/robots.md)",
+                                  file.path.string(), robot::terrain_text(terrain)));
+  }
+  if (robot::keeps_own_ground(terrain)) return;
+  const int ours = mj_name2id(m, mjOBJ_GEOM, robot::kRobotFileGround);
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (g == ours || !is_ground_plane(m, g)) continue;
+    m->geom_contype[g] = 0;
+    m->geom_conaffinity[g] = 0;
+    m->geom_rgba[4 * g + 3] = 0.0F;
+  }
+}
+
+// A robot file's start on other ground, as make_mjcf places the built-in robots: above rough
+// ground's highest bump, or on a slope tilted with it about the start.
+void place_on_terrain(SimModel& model, const robot::Terrain& terrain) {
+  const mjModel* m = model.mj.get();
+  std::vector<double> qpos = model.start_qpos;
+  if (model.start_key >= 0) {
+    qpos.assign(m->key_qpos + model.start_key * m->nq, m->key_qpos + (model.start_key + 1) * m->nq);
+  }
+  double* root = qpos.data() + model.root_qpos;
+  root[2] += robot::rise(terrain);
+  if (robot::tilted(terrain)) {
+    const std::array<double, 4> q = robot::ground_rotation(terrain);
+    const std::array<double, 3> p = robot::rotate(q, {root[0], root[1], root[2]});
+    std::array<double, 4> tilted{};
+    mju_mulQuat(tilted.data(), q.data(), root + 3);
+    std::copy(p.begin(), p.end(), root);
+    std::copy(tilted.begin(), tilted.end(), root + 3);
+  }
+  model.start_key = -1;
+  model.start_qpos = std::move(qpos);
+}
+
+}  // namespace
 
 bool is_robot_file(const std::string& robot) {
   return std::filesystem::path(robot).extension() == ".toml";
@@ -225,6 +285,30 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
     r.fail("model", e.what());
   }
   return file;
+}
+
+SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options) {
+  SimModel model = new_model(file.layout, options, file);
+  const robot::Terrain& terrain = options.scene.terrain;
+  const bool flat = robot::is_flat(terrain);
+  if (options.scene.tunnel || !file.servo_joints.empty() || file.add_ground || !flat) {
+    // Included as MJCF whatever it was (a URDF as MuJoCo's loader read it).
+    const std::string name = file.model.stem().string() + ".xml";
+    model.xml = robot::robot_file_mjcf(model.body, options.scene, file, name);
+    model.files = robot::scene_files(options.scene);
+    model.files.push_back({name, file.model_xml});
+  } else {
+    model.xml = file.model_xml;
+  }
+  model.mj = compile_mjcf(model.xml, model.files);
+  give_armature(model, file.servo_joints);
+  // The physics step and, in the tunnel, the wall contacts, as make_mjcf writes them.
+  model.mj->opt.timestep = robot::mjcf_value(model.physics_dt);
+  if (options.scene.tunnel) model.mj->opt.collision = mjCOL_ALL;
+  if (!flat) leave_own_ground(model.mj.get(), terrain, file);
+  index_model(model, file, options);
+  if (!flat) place_on_terrain(model, terrain);
+  return model;
 }
 
 }  // namespace multicpg::sim

@@ -1,13 +1,14 @@
-// Reading a robot file (robot/robot_file.h; docs/robots.md "Your robot: robot files").
+// A robot file in the simulation (robot/robot_file.h; docs/robots.md "Your robot: robot files"):
+// read and checked against its model, and its SimModel: the file's model as written, with the
+// motors, ground, terrain and walls its world adds.
 #pragma once
-
-#include <mujoco/mujoco.h>
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 
 #include "robot/robot_file.h"
+#include "sim/sim_model.h"
 
 namespace multicpg::sim {
 
@@ -23,8 +24,13 @@ inline constexpr std::uintmax_t kMaxModelBytes = 16 << 20;
 // (with MuJoCo's message).
 robot::RobotFile load_robot_file(const std::filesystem::path& path);
 
-// Whether geom `g` of `m` is a ground plane: a plane of the world body (a robot file's ground).
-bool is_ground_plane(const mjModel* m, int g);
+// The robot of a robot file (load_robot_file) with its layout's controller,
+// servos and fault geometry. Its model is walked as written on its flat ground or options'
+// terrain, inside the tunnel's walls with options.scene.tunnel, at options' physics step. Throws
+// OptionError ("scene.terrain") for other ground under a model with contact pairs, and with the
+// file's key ("legs[0].TC.joint", "yaw", ...) for a name of the
+// leg map that its model lacks; RuntimeFailure if MuJoCo rejects the model.
+SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options = {});
 
 // True when the --robot text names a robot file rather than a built-in robot.
 bool is_robot_file(const std::string& robot);

@@ -1,104 +1,23 @@
 #include "sim/sim.h"
 
-#include <unistd.h>
+#include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <limits>
-#include <mutex>
 #include <numbers>
 #include <sstream>
+#include <string>
 
 #include "common/errors.h"
-#include "common/limits.h"
 #include "robot/joint_map.h"
+#include "sim/model_build.h"
 #include "sim/mujoco_guard.h"
-#include "sim/robot_file.h"
 
 namespace multicpg::sim {
 namespace {
 
 using robot::Joint;
 using robot::LegAngles;
-
-// MuJoCo reports instability through mjData's warning counters, which sim_step checks; its
-// default handler would also print to stdout and append to MUJOCO_LOG.TXT. Keep the last message
-// of this thread for the error instead.
-thread_local std::string last_warning;
-
-void keep_warning(const char* message) {
-  last_warning = message;
-}
-
-// MuJoCo's fatal errors (e.g. an offscreen buffer larger than OpenGL allows). The default handler
-// prints to stdout, appends to MUJOCO_LOG.TXT and waits for Enter. mju_error must not return to
-// MuJoCo (2.2.2 carries on with the broken state if the handler returns). Inside mujoco_call of a
-// process that recovers (sim/mujoco_guard.h) it jumps back there. Otherwise the ways to leave it
-// early are unsound here: a C++ exception would unwind through MuJoCo's C frames (undefined
-// behaviour, and its mjData stack would stay half-allocated); longjmp would skip the destructors
-// of our C++ frames. So: one line on stderr, then _Exit(1). _Exit, not exit: other runner threads
-// may still be simulating and must not see static destructors run. A temporary output file it
-// leaves (*.tmp<pid>) is removed by the next experiment in that folder.
-std::atomic<bool> recovering{false};
-
-[[noreturn]] void fatal_error(const char* message) {
-  if (MujocoJump* jump = armed_mujoco_jump(); jump != nullptr) {
-    // Nothing with a destructor is made on this path (it is skipped by the jump).
-    std::snprintf(jump->message.data(), jump->message.size(), "%s", message);
-    std::longjmp(jump->buffer, 1);
-  }
-  std::string line = std::string("multicpg: MuJoCo error: ") + message;
-  std::replace(line.begin(), line.end(), '\n', ' ');
-  line += '\n';
-  std::fwrite(line.data(), 1, line.size(), stderr);
-  std::fflush(stderr);
-  std::_Exit(1);
-}
-
-const char* warning_name(int warning) {
-  switch (warning) {
-    case mjWARN_INERTIA:
-      return "singular inertia";
-    case mjWARN_CONTACTFULL:
-      return "contact buffer full";
-    case mjWARN_CNSTRFULL:
-      return "constraint buffer full";
-    case mjWARN_VGEOMFULL:
-      return "visual geom buffer full";
-    case mjWARN_BADQPOS:
-      return "bad qpos";
-    case mjWARN_BADQVEL:
-      return "bad qvel";
-    case mjWARN_BADQACC:
-      return "bad qacc";
-    case mjWARN_BADCTRL:
-      return "bad ctrl";
-    default:
-      break;
-  }
-  return "warning";
-}
-
-// The start pose: every leg in mid-stance (docs/controller.md "Motor mapping and joint windows"):
-// TC and FTi at the centre of their windows (pre-motor signal 0), CTr fully depressed (-1, the
-// stance value of docs/controller.md "Post-delay shaping").
-std::vector<LegAngles> start_pose(const neural::ControllerModel& controller,
-                                  const robot::RobotFile& map) {
-  std::vector<LegAngles> pose;
-  for (std::size_t i = 0; i < map.legs.size(); ++i) {
-    const neural::MotorCommands m = controller.legs[i].map({0.0, -1.0, 0.0});
-    const auto& w = map.legs[i].joints;
-    pose.push_back({robot::joint_angle(w[0].window, m.tc), robot::joint_angle(w[1].window, m.ctr),
-                    robot::joint_angle(w[2].window, m.fti)});
-  }
-  return pose;
-}
 
 robot::MjcfOptions mjcf_options(const SimOptions& options, double physics_dt,
                                 const std::vector<LegAngles>& pose) {
@@ -107,245 +26,6 @@ robot::MjcfOptions mjcf_options(const SimOptions& options, double physics_dt,
   o.scene = options.scene;
   o.start_pose = pose;
   return o;
-}
-
-double resolved_physics_dt(const SimOptions& options) {
-  return options.physics_dt == 0.0 ? default_physics_dt(options.control_dt) : options.physics_dt;
-}
-
-// Where a leg map's names are in a model. Each throws OptionError with the robot file's key.
-int id_of(const mjModel* m, mjtObj type, const std::string& name, const std::string& key,
-          const char* what) {
-  const int id = mj_name2id(m, type, name.c_str());
-  if (id < 0) throw OptionError(key, fmt::format("the model has no {} '{}'", what, name));
-  return id;
-}
-
-// The servo joint `map` names: a limited hinge that a motor drives, whose range holds the
-// window (up to kWindowTolerance, as the MJCF writes angles to 12 digits, robot/mjcf.cpp).
-constexpr double kWindowTolerance = 1e-9;  // rad
-
-// What kind of actuator `a` is (MuJoCo's shortcuts are general actuators with these parameters):
-// a motor (no bias), a position servo (bias -kp * length) or a velocity servo (bias
-// -kv * velocity), each without activation dynamics so that its force follows its control at once.
-Drive actuator_drive(const mjModel* m, int a, const std::string& key) {
-  const char* name = mj_id2name(m, mjOBJ_ACTUATOR, a);
-  const std::string what = fmt::format("actuator '{}'", name != nullptr ? name : std::to_string(a));
-  if (m->actuator_dyntype[a] != mjDYN_NONE || m->actuator_gaintype[a] != mjGAIN_FIXED ||
-      m->actuator_gainprm[mjNGAIN * a] == 0.0 || m->actuator_gear[6 * a] == 0.0) {
-    throw OptionError(key, what + " is not a motor, position or velocity actuator");
-  }
-  if (m->actuator_biastype[a] == mjBIAS_NONE) return Drive::servo;
-  const double* bias = m->actuator_biasprm + mjNBIAS * a;
-  if (m->actuator_biastype[a] == mjBIAS_AFFINE && bias[0] == 0.0) {
-    if (bias[1] != 0.0) return Drive::position;
-    if (bias[2] != 0.0) return Drive::velocity;
-  }
-  throw OptionError(key, what + " is not a motor, position or velocity actuator");
-}
-
-JointSlot joint_slot(const mjModel* m, const robot::JointMap& map, const std::string& key,
-                     robot::ServoSpec spec, double gain) {
-  const int j = id_of(m, mjOBJ_JOINT, map.name, key + ".joint", "joint");
-  if (m->jnt_type[j] != mjJNT_HINGE) {
-    throw OptionError(key + ".joint", "joint '" + map.name + "' is not a hinge");
-  }
-  if (m->jnt_limited[j] == 0) {
-    throw OptionError(key + ".joint",
-                      "joint '" + map.name + "' has no range (limited=\"true\" range=\"lo hi\")");
-  }
-  const double lo = std::min(map.sign * map.window.lo, map.sign * map.window.hi);
-  const double hi = std::max(map.sign * map.window.lo, map.sign * map.window.hi);
-  if (lo < m->jnt_range[2 * j] - kWindowTolerance ||
-      hi > m->jnt_range[2 * j + 1] + kWindowTolerance) {
-    throw OptionError(
-        key + ".window",
-        fmt::format("[{}, {}] rad leaves joint '{}''s range [{}, {}] rad", map.window.lo,
-                    map.window.hi, map.name, m->jnt_range[2 * j], m->jnt_range[2 * j + 1]));
-  }
-  JointSlot slot;
-  slot.joint = j;
-  slot.qpos = m->jnt_qposadr[j];
-  slot.dof = m->jnt_dofadr[j];
-  slot.sign = map.sign;
-  for (int a = 0; a < m->nu; ++a) {
-    if (m->actuator_trntype[a] == mjTRN_JOINT && m->actuator_trnid[2 * a] == j) slot.actuator = a;
-  }
-  if (slot.actuator < 0) {
-    throw OptionError(key + ".joint", "no actuator drives joint '" + map.name + "'");
-  }
-  slot.drive = actuator_drive(m, slot.actuator, key + ".joint");
-  slot.gear = m->actuator_gear[6 * slot.actuator];
-  const int coupling = mj_name2id(m, mjOBJ_JOINT, robot::coupling_joint(map.name).c_str());
-  if (coupling >= 0) slot.coupling_qpos = m->jnt_qposadr[coupling];
-  spec.gain = gain;
-  slot.servo = {spec, map.window.hi - map.window.lo};
-  return slot;
-}
-
-// A leg's foot: its geom, the body it moves with and that body's parent (the tibia), and if the
-// model has them the touch sensor on a site of the foot's body and the foot's contact pair with
-// the ground.
-void index_foot(const mjModel* m, const std::string& foot, const std::string& key,
-                LegSlots& slots) {
-  slots.foot_geom = mj_name2id(m, mjOBJ_GEOM, foot.c_str());
-  if (slots.foot_geom < 0) {
-    const int body = mj_name2id(m, mjOBJ_BODY, foot.c_str());
-    if (body < 0 || m->body_geomnum[body] == 0) {
-      throw OptionError(key, fmt::format("the model has no geom '{}', nor a body of that name with "
-                                         "a geom (a URDF's fixed links are fused into their "
-                                         "parents unless its <mujoco><compiler fusestatic="
-                                         "\"false\"/></mujoco>)",
-                                         foot));
-    }
-    slots.foot_geom = m->body_geomadr[body];
-  }
-  slots.foot_body = m->geom_bodyid[slots.foot_geom];
-  slots.tibia_body = m->body_parentid[slots.foot_body];
-  if (m->body_geomnum[slots.tibia_body] == 0) {
-    throw OptionError(key, "the body above foot '" + foot + "' (the tibia) has no geom");
-  }
-  slots.tibia_geom = m->body_geomadr[slots.tibia_body];
-  for (int s = 0; s < m->nsensor && slots.touch < 0; ++s) {
-    if (m->sensor_type[s] == mjSENS_TOUCH &&
-        m->site_bodyid[m->sensor_objid[s]] == slots.foot_body) {
-      slots.touch = m->sensor_adr[s];
-    }
-  }
-  for (int p = 0; p < m->npair; ++p) {
-    if (m->pair_geom2[p] == slots.foot_geom || m->pair_geom1[p] == slots.foot_geom) {
-      slots.foot_pair = p;
-    }
-  }
-}
-
-// The yaw frame `name`, a body or a site: the sensordata address of its framequat sensor, or
-// without one the frame itself.
-void index_yaw(const mjModel* m, const std::string& name, SimModel& model) {
-  const int body = mj_name2id(m, mjOBJ_BODY, name.c_str());
-  const int site = mj_name2id(m, mjOBJ_SITE, name.c_str());
-  if (body < 0 && site < 0)
-    throw OptionError("yaw", "the model has no body or site '" + name + "'");
-  for (int s = 0; s < m->nsensor; ++s) {
-    if (m->sensor_type[s] != mjSENS_FRAMEQUAT) continue;
-    const int type = m->sensor_objtype[s];
-    const int id = m->sensor_objid[s];
-    if (((type == mjOBJ_XBODY || type == mjOBJ_BODY) && id == body) ||
-        (type == mjOBJ_SITE && id == site)) {
-      model.yaw_sensor = m->sensor_adr[s];
-      return;
-    }
-  }
-  model.yaw_body = body;
-  model.yaw_site = body < 0 ? site : -1;
-}
-
-// The lowest point of geom `g` in the pose of `d` (its frame computed): exact for spheres,
-// capsules, cylinders, boxes and ellipsoids; other shapes by their bounding sphere.
-double lowest_point(const mjModel* m, const mjData* d, int g) {
-  const double* size = m->geom_size + 3 * g;
-  const double* r = d->geom_xmat + 9 * g;  // row 2: the world z of the geom's local axes
-  const double z = d->geom_xpos[3 * g + 2];
-  const double az = std::abs(r[8]);
-  switch (m->geom_type[g]) {
-    case mjGEOM_SPHERE:
-      return z - size[0];
-    case mjGEOM_CAPSULE:
-      return z - az * size[1] - size[0];
-    case mjGEOM_CYLINDER:
-      return z - az * size[1] - size[0] * std::sqrt(std::max(0.0, 1.0 - az * az));
-    case mjGEOM_BOX:
-      return z - std::abs(r[6]) * size[0] - std::abs(r[7]) * size[1] - az * size[2];
-    case mjGEOM_ELLIPSOID:
-      return z - std::hypot(r[6] * size[0], r[7] * size[1], r[8] * size[2]);
-    default:
-      return z - m->geom_rbound[g];
-  }
-}
-
-// The height of the ground: the highest plane of the world body (0 without one).
-double ground_height(const mjModel* m) {
-  double height = 0.0;
-  bool found = false;
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (!is_ground_plane(m, g)) continue;
-    const double z = m->geom_pos[3 * g + 2];
-    height = found ? std::max(height, z) : z;
-    found = true;
-  }
-  return height;
-}
-
-// Feet above the trunk's lowest point by more than this stand on the trunk, not their legs.
-constexpr double kStartTolerance = 1e-3;  // m
-
-// The start pose of a model without a "start" keyframe: its qpos0 with the servo joints at
-// model.start_pose and the trunk lowered or raised until its lowest foot rests on the ground.
-// Throws OptionError ("legs") if a geom of the trunk's body hangs below the feet.
-std::vector<double> start_qpos(const SimModel& model, int trunk) {
-  const mjModel* m = model.mj.get();
-  const std::unique_ptr<mjData, MjDataDeleter> d(mj_makeData(m));
-  if (!d) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
-  for (std::size_t i = 0; i < model.legs.size(); ++i) {
-    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-      const JointSlot& slot = model.legs[i].joints[j];
-      d->qpos[slot.qpos] = slot.sign * model.start_pose[i][j];
-    }
-  }
-  mj_kinematics(m, d.get());
-  double lowest = std::numeric_limits<double>::infinity();
-  for (const LegSlots& leg : model.legs) {
-    lowest = std::min(lowest, lowest_point(m, d.get(), leg.foot_geom));
-  }
-  // The legs must hold the trunk up: no geom of the trunk's body below the feet.
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_bodyid[g] != trunk) continue;
-    const double below = lowest - lowest_point(m, d.get(), g);
-    if (below > kStartTolerance) {
-      const char* name = mj_id2name(m, mjOBJ_GEOM, g);
-      throw OptionError("legs", fmt::format("the feet do not reach the ground in the start pose: "
-                                            "the trunk's geom '{}' hangs {:.3f} m below them",
-                                            name != nullptr ? name : std::to_string(g), below));
-    }
-  }
-  d->qpos[model.root_qpos + 2] += ground_height(m) - lowest;
-  return {d->qpos, d->qpos + m->nq};
-}
-
-// Every name of the leg map found in the model's tables.
-void index_model(SimModel& model, const robot::RobotFile& map, const SimOptions& options) {
-  const mjModel* m = model.mj.get();
-  const robot::RobotBody& body = model.body;
-  const auto gain = [&](const robot::ServoSpec& spec) {
-    return options.servo_gain > 0.0 ? options.servo_gain
-                                    : spec.gain * kReferenceControlDt / model.control_dt;
-  };
-  const std::array<const robot::ServoSpec*, robot::kJointsPerLeg> specs{
-      &body.tc_servo, &body.ctr_servo, &body.fti_servo};
-  for (std::size_t i = 0; i < map.legs.size(); ++i) {
-    const robot::LegMap& leg = map.legs[i];
-    const std::string key = "legs[" + std::to_string(i) + "]";
-    LegSlots slots{body.morphology.legs[i].type, {}, {}};
-    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-      const std::string joint_key = key + "." + std::string(robot::to_string(robot::kJoints[j]));
-      slots.joints[j] = joint_slot(m, leg.joints[j], joint_key, *specs[j], gain(*specs[j]));
-      slots.windows[j] = leg.joints[j].window;
-    }
-    index_foot(m, leg.foot, key + ".foot", slots);
-    model.legs.push_back(slots);
-  }
-  if (map.backbone) {
-    model.backbone.push_back(
-        joint_slot(m, *map.backbone, "backbone", body.backbone_servo, gain(body.backbone_servo)));
-  }
-  const int trunk = id_of(m, mjOBJ_BODY, map.trunk, "trunk", "body");
-  if (m->body_jntnum[trunk] == 0 || m->jnt_type[m->body_jntadr[trunk]] != mjJNT_FREE) {
-    throw OptionError("trunk", "body '" + map.trunk + "' has no free joint (<freejoint/>)");
-  }
-  model.root_qpos = m->jnt_qposadr[m->body_jntadr[trunk]];
-  index_yaw(m, map.yaw, model);
-  model.start_key = mj_name2id(m, mjOBJ_KEY, "start");
-  if (model.start_key < 0) model.start_qpos = start_qpos(model, trunk);
 }
 
 // The control that makes the model's own actuator of `slot` exert no force at the joint's
@@ -417,8 +97,7 @@ void check_physics(const SimModel& model, const SimState& state, double previous
   const mjData* d = state.data.get();
   for (int w = 0; w < mjNWARNING; ++w) {
     if (d->warning[w].number != state.warnings[w]) {
-      unstable(state, previous_time,
-               std::string("MuJoCo warning '") + warning_name(w) + "': " + last_warning);
+      unstable(state, previous_time, mujoco_warning(w));
     }
   }
   // MuJoCo resets the state (time back to 0) when it meets a bad number.
@@ -469,232 +148,6 @@ void check_on_terrain(const SimModel& model, const SimState& state) {
 
 }  // namespace
 
-namespace {
-
-// The XML parser is not documented as thread-safe, and it keeps the last model it read (for
-// mj_saveLastXML), so loads are serialised.
-std::mutex& loader_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-// Loads `main` (MJCF or URDF, by its root element) with `files` beside it from MuJoCo's in-memory
-// file system. Call with loader_mutex() held.
-mjModel* load_in_memory(const std::string& name, const std::string& main,
-                        const std::vector<robot::ModelFile>& files) {
-  auto vfs = std::make_unique<mjVFS>();
-  mj_defaultVFS(vfs.get());
-  const auto add = [&](const std::string& file, const std::string& bytes) {
-    if (mj_makeEmptyFileVFS(vfs.get(), file.c_str(), static_cast<int>(bytes.size())) != 0) {
-      mj_deleteVFS(vfs.get());
-      throw RuntimeFailure("MuJoCo: cannot make the in-memory model file " + file);
-    }
-    std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), file.c_str())], bytes.data(), bytes.size());
-  };
-  add(name, main);
-  for (const robot::ModelFile& f : files) add(f.name, f.bytes);
-  std::array<char, 1000> error{};
-  mjModel* m = mj_loadXML(name.c_str(), vfs.get(), error.data(), static_cast<int>(error.size()));
-  mj_deleteVFS(vfs.get());
-  if (m == nullptr) throw RuntimeFailure(std::string("MuJoCo rejected the model: ") + error.data());
-  return m;
-}
-
-}  // namespace
-
-std::unique_ptr<mjModel, MjModelDeleter> compile_mjcf(const std::string& xml,
-                                                      const std::vector<robot::ModelFile>& files) {
-  const std::lock_guard<std::mutex> lock(loader_mutex());
-  return std::unique_ptr<mjModel, MjModelDeleter>(load_in_memory("multicpg.xml", xml, files));
-}
-
-std::string urdf_as_mjcf(const std::string& urdf) {
-  const std::lock_guard<std::mutex> lock(loader_mutex());
-  const std::unique_ptr<mjModel, MjModelDeleter> m(load_in_memory("multicpg.urdf", urdf, {}));
-  // MuJoCo writes the model it read last only to a file.
-  static std::atomic<unsigned> count{0};
-  const std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                     fmt::format("multicpg-urdf-{}-{}.xml", ::getpid(), count++);
-  std::array<char, 1000> error{};
-  const int saved =
-      mj_saveLastXML(path.string().c_str(), m.get(), error.data(), static_cast<int>(error.size()));
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::error_code ignored;
-  std::filesystem::remove(path, ignored);
-  if (saved == 0 || !in) {
-    throw RuntimeFailure(std::string("MuJoCo cannot write the URDF as MJCF: ") + error.data());
-  }
-  return text.str();
-}
-
-double default_physics_dt(double control_dt) {
-  if (!(control_dt > 0.0)) throw OptionError("control_dt", "must be positive");
-  // Tolerance so that 0.037 / 0.004625 = 8 exactly is not rounded up to 9.
-  const double n = std::ceil(control_dt / kMaxDefaultPhysicsDt - kStepRatioTolerance);
-  return control_dt / n;
-}
-
-int physics_substeps(double control_dt, double physics_dt) {
-  if (!(control_dt > 0.0)) throw OptionError("control_dt", "must be positive");
-  if (!(physics_dt > 0.0)) throw OptionError("physics_dt", "must be positive");
-  const double ratio = control_dt / physics_dt;
-  const double whole = std::round(ratio);
-  if (!(whole <= static_cast<double>(kMaxSubsteps))) {
-    std::ostringstream msg;
-    msg << "gives " << ratio << " physics steps per control step of " << control_dt
-        << " s; at most " << kMaxSubsteps;
-    throw OptionError("physics_dt", msg.str());
-  }
-  if (whole < 1.0 || std::abs(ratio - whole) > kStepRatioTolerance * ratio) {
-    std::ostringstream msg;
-    msg << "must divide the control step " << control_dt << " s a whole number of times, got "
-        << physics_dt << " s (ratio " << ratio << ")";
-    throw OptionError("physics_dt", msg.str());
-  }
-  return static_cast<int>(whole);
-}
-
-void validate(const SimOptions& options) {
-  require_in("control_dt", options.control_dt, kControlDtLimits);
-  require_in("physics_dt", options.physics_dt, kPhysicsDtLimits);
-  if (options.physics_dt != 0.0 && options.physics_dt < kMinPhysicsDt) {
-    throw OptionError("physics_dt", fmt::format("must be 0 (default) or at least {}, got {}",
-                                                kMinPhysicsDt, options.physics_dt));
-  }
-  require_in("servo_gain", options.servo_gain, kServoGainLimits);
-  require_in("scene.tunnel_length", options.scene.tunnel_length, kTunnelLengthLimits);
-  require_in("scene.tunnel_width", options.scene.tunnel_width, kTunnelWidthLimits);
-  within("scene.terrain", [&] { robot::validate(options.scene.terrain); });
-  within("controller", [&] { neural::validate(options.controller); });
-  within("body", [&] { robot::validate(options.body); });
-  physics_substeps(options.control_dt, resolved_physics_dt(options));
-}
-
-void validate(const SimOptions& options, robot::RobotKind kind) {
-  validate(options);
-  within("body", [&] { robot::disabled_postures(options.body, robot::morphology(kind)); });
-}
-
-std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
-  validate(options, kind);
-  const double physics_dt = resolved_physics_dt(options);
-  const neural::ControllerModel controller =
-      neural::make_controller_model(kind, options.controller, options.body);
-  const robot::RobotFile map = robot::builtin_robot_file(kind, {});
-  return robot::make_mjcf(robot::robot_body(kind, options.body),
-                          mjcf_options(options, physics_dt, start_pose(controller, map)));
-}
-
-void recover_mujoco_errors() {
-  install_mujoco_handlers();
-  recovering = true;
-}
-
-bool recovering_mujoco_errors() {
-  return recovering;
-}
-
-MujocoJump*& armed_mujoco_jump() {
-  thread_local MujocoJump* jump = nullptr;
-  return jump;
-}
-
-void install_mujoco_handlers() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    mju_user_warning = keep_warning;
-    mju_user_error = fatal_error;
-  });
-}
-
-namespace {
-
-// A motor the servo law drives brings its servo's armature (docs/robots.md "Servos", departure 2)
-// to a joint that has none: the explicit velocity loop is stable only with it.
-void give_armature(SimModel& model, const std::vector<std::string>& servo_joints) {
-  mjModel* m = model.mj.get();
-  bool changed = false;
-  for (const std::string& name : servo_joints) {
-    const int dof = m->jnt_dofadr[mj_name2id(m, mjOBJ_JOINT, name.c_str())];
-    if (m->dof_armature[dof] == 0.0) {
-      m->dof_armature[dof] = model.body.tc_servo.armature;
-      changed = true;
-    }
-  }
-  if (!changed) return;
-  // The constants MuJoCo derives from inertias at compile time.
-  const std::unique_ptr<mjData, MjDataDeleter> scratch(mj_makeData(m));
-  if (!scratch) throw RuntimeFailure("MuJoCo: cannot allocate mjData");
-  mj_setConst(m, scratch.get());
-}
-
-// Other ground than a robot file's own flat one (robot::robot_file_mjcf): on a slope and rough
-// ground its own planes no longer collide nor show. Throws OptionError ("scene.terrain") for a
-// model whose contacts are only its <pair>s: they hold its feet to its own ground.
-void leave_own_ground(mjModel* m, const robot::Terrain& terrain, const robot::RobotFile& file) {
-  if (m->opt.collision == mjCOL_PAIR || m->npair > 0) {
-    throw OptionError("scene.terrain",
-                      fmt::format("{}: its model's <contact><pair>s hold the feet to its own "
-                                  "ground: it walks only there, not on {} (docs/robots.md)",
-                                  file.path.string(), robot::terrain_text(terrain)));
-  }
-  if (terrain.kind == robot::TerrainKind::steps) return;
-  const int ours = mj_name2id(m, mjOBJ_GEOM, robot::kRobotFileGround);
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (g == ours || !is_ground_plane(m, g)) continue;
-    m->geom_contype[g] = 0;
-    m->geom_conaffinity[g] = 0;
-    m->geom_rgba[4 * g + 3] = 0.0F;
-  }
-}
-
-// A robot file's start on other ground, as make_mjcf places the built-in robots: above rough
-// ground's highest bump, or on a slope tilted with it about the start.
-void place_on_terrain(SimModel& model, const robot::Terrain& terrain) {
-  const mjModel* m = model.mj.get();
-  std::vector<double> qpos = model.start_qpos;
-  if (model.start_key >= 0) {
-    qpos.assign(m->key_qpos + model.start_key * m->nq, m->key_qpos + (model.start_key + 1) * m->nq);
-  }
-  double* root = qpos.data() + model.root_qpos;
-  if (terrain.kind == robot::TerrainKind::rough) root[2] += terrain.height_m;
-  if (terrain.kind == robot::TerrainKind::slope) {
-    const std::array<double, 4> q = robot::ground_rotation(terrain);
-    const std::array<double, 3> p = robot::rotate(q, {root[0], root[1], root[2]});
-    std::array<double, 4> tilted{};
-    mju_mulQuat(tilted.data(), q.data(), root + 3);
-    std::copy(p.begin(), p.end(), root);
-    std::copy(tilted.begin(), tilted.end(), root + 3);
-  }
-  model.start_key = -1;
-  model.start_qpos = std::move(qpos);
-}
-
-// The model of `kind` or of a robot file with the layout `kind`, before its MJCF is compiled.
-SimModel new_model(robot::RobotKind kind, const SimOptions& options, const robot::RobotFile& map) {
-  install_mujoco_handlers();
-  validate(options, kind);
-  SimModel model{kind,
-                 robot::robot_body(kind, options.body),
-                 neural::make_controller_model(kind, options.controller, options.body),
-                 {},
-                 options.scene,
-                 {},
-                 nullptr,
-                 options.control_dt,
-                 resolved_physics_dt(options),
-                 0,
-                 {},
-                 {}};
-  model.substeps = physics_substeps(model.control_dt, model.physics_dt);
-  model.start_pose = start_pose(model.controller, map);
-  return model;
-}
-
-}  // namespace
-
 SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   const robot::RobotFile map = robot::builtin_robot_file(kind, {});
   SimModel model = new_model(kind, options, map);
@@ -706,28 +159,9 @@ SimModel make_sim_model(robot::RobotKind kind, const SimOptions& options) {
   return model;
 }
 
-SimModel make_sim_model(const robot::RobotFile& file, const SimOptions& options) {
-  SimModel model = new_model(file.layout, options, file);
-  const robot::Terrain& terrain = options.scene.terrain;
-  const bool flat = terrain.kind == robot::TerrainKind::flat;
-  if (options.scene.tunnel || !file.servo_joints.empty() || file.add_ground || !flat) {
-    // Included as MJCF whatever it was (a URDF as MuJoCo's loader read it).
-    const std::string name = file.model.stem().string() + ".xml";
-    model.xml = robot::robot_file_mjcf(model.body, options.scene, file, name);
-    model.files = robot::scene_files(options.scene);
-    model.files.push_back({name, file.model_xml});
-  } else {
-    model.xml = file.model_xml;
-  }
-  model.mj = compile_mjcf(model.xml, model.files);
-  give_armature(model, file.servo_joints);
-  // The physics step and, in the tunnel, the wall contacts, as make_mjcf writes them.
-  model.mj->opt.timestep = robot::mjcf_value(model.physics_dt);
-  if (options.scene.tunnel) model.mj->opt.collision = mjCOL_ALL;
-  if (!flat) leave_own_ground(model.mj.get(), terrain, file);
-  index_model(model, file, options);
-  if (!flat) place_on_terrain(model, terrain);
-  return model;
+std::string model_xml(robot::RobotKind kind, const SimOptions& options) {
+  const SimModel model = new_model(kind, options, robot::builtin_robot_file(kind, {}));
+  return robot::make_mjcf(model.body, mjcf_options(options, model.physics_dt, model.start_pose));
 }
 
 void reset_to_start(const SimModel& model, mjData* d) {
@@ -750,6 +184,7 @@ SimState make_sim_state(const SimModel& model, int period) {
   for (int w = 0; w < mjNWARNING; ++w) state.warnings[w] = state.data->warning[w].number;
   state.controller = neural::make_controller_state(model.controller, period);
   state.targets = model.start_pose;
+  state.faults.schedule = FaultSchedule(model.controller.morphology, {});
   state.faults.joints.resize(model.legs.size());
   return state;
 }

@@ -1,24 +1,43 @@
 #include "sim/stepper.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
 #include "common/errors.h"
-#include "sim/fault_effects.h"
 #include "common/interrupt.h"
 #include "common/limits.h"
-#include "sim/walk.h"
+#include "sim/fault_effects.h"
 
 namespace multicpg::sim {
+
+SimState start_walk_state(const SimModel& model, const std::vector<int>& periods) {
+  if (periods.empty()) return make_sim_state(model);
+  const bool equal =
+      std::all_of(periods.begin(), periods.end(), [&](int p) { return p == periods.front(); });
+  SimState state = make_sim_state(model, periods.front());
+  if (!equal) {
+    neural::set_periods(model.controller, state.controller, periods);
+    neural::set_synchronised(state.controller, false);
+  }
+  return state;
+}
+
+void warm_up_controller(const SimModel& model, SimState& state, long steps) {
+  for (long t = 0; t < steps; ++t) {
+    check_interrupted();  // a warm-up may be long (up to kMaxSteps)
+    neural::controller_step(model.controller, state.controller);
+  }
+}
 
 Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline faults,
                  Observer* observer, WalkRecord* record, bool record_joints)
     : model_(model),
       state_(start_walk_state(model, start.periods)),
-      faults_(model.controller.morphology, std::move(faults)),
       observer_(observer),
       record_(record),
       record_joints_(record_joints) {
+  state_.faults.schedule = FaultSchedule(model.controller.morphology, std::move(faults));
   require_in("start.warmup", start.warmup, kStepLimits);
   state_.faults.sensor.random.seed(start.seed);
   apply_due_faults();
@@ -31,16 +50,16 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
 }
 
 void Stepper::apply_due_faults() {
-  const std::size_t first = faults_.applied().size();
-  if (faults_.apply_due(walked_, state_.controller) > 0) take_faults(first);
+  FaultSchedule& schedule = state_.faults.schedule;
+  const std::size_t first = schedule.applied().size();
+  if (schedule.apply_due(walked_, state_.controller) > 0) take_faults(first);
 }
 
 void Stepper::take_faults(std::size_t first) {
-  for (std::size_t i = first; i < faults_.applied().size(); ++i) {
-    apply_fault_effect(model_, state_, faults_.applied()[i]);
-    if (observer_ != nullptr) {
-      observer_->on_event(model_, state_, fault_event(faults_.applied()[i]));
-    }
+  const std::vector<Fault>& applied = state_.faults.schedule.applied();
+  for (std::size_t i = first; i < applied.size(); ++i) {
+    apply_fault_effect(model_, state_, applied[i]);
+    if (observer_ != nullptr) observer_->on_event(model_, state_, fault_event(applied[i]));
   }
 }
 
@@ -61,18 +80,17 @@ void Stepper::steps(long n) {
 
 void Stepper::apply_now(Fault fault) {
   fault.step = walked_;
-  const std::size_t first = faults_.applied().size();
-  faults_.apply_now(fault, state_.controller);
+  const std::size_t first = state_.faults.schedule.applied().size();
+  state_.faults.schedule.apply_now(fault, state_.controller);
   take_faults(first);
 }
 
 StepperCheckpoint Stepper::checkpoint() const {
-  return {copy_sim_state(model_, state_), faults_, walked_};
+  return {copy_sim_state(model_, state_), walked_};
 }
 
 void Stepper::restore(const StepperCheckpoint& checkpoint) {
   state_ = copy_sim_state(model_, checkpoint.state);
-  faults_ = checkpoint.faults;
   walked_ = checkpoint.walked;
 }
 

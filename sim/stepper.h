@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/limits.h"
 #include "sim/deviation.h"
 #include "sim/events.h"
 #include "sim/sim.h"
@@ -23,6 +24,10 @@ namespace multicpg::sim {
 // about 26 deg left, and p = 4 slips phase until step 737; a warmed-up controller starts the
 // robot in its gait, as the paper's robot was walking before anything failed.
 inline constexpr long kControllerWarmup = 1000;
+
+// Documented ranges of step counts: a run of at least one step, settles and warm-ups of none.
+inline constexpr Limits<long> kRunStepsLimits{1, kMaxSteps};
+inline constexpr Limits<long> kStepLimits{0, kMaxSteps};
 
 // How a run starts.
 struct StartSpec {
@@ -65,10 +70,18 @@ class Observers final : public Observer {
   std::vector<Observer*> all_;
 };
 
+// The state a run starts from before its warm-up: make_sim_state, then `periods` (one per leg;
+// empty = all 4). Equal periods keep the clients synchronised; unequal ones set each leg's
+// period and free the clients (paper §2.3). Throws BadInput for a wrong number of periods or a
+// period outside 1-9.
+SimState start_walk_state(const SimModel& model, const std::vector<int>& periods);
+
+// Runs the neural controller alone for `steps` steps: the robot does not move.
+void warm_up_controller(const SimModel& model, SimState& state, long steps);
+
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
 struct StepperCheckpoint {
-  SimState state;
-  FaultSchedule faults;
+  SimState state;  // with its faults
   long walked = 0;
 };
 
@@ -92,7 +105,7 @@ class Stepper {
   // happen now (a leg that has already failed, a recovery of what is not struck, failing every
   // leg). Scheduled faults still come as planned.
   void apply_now(Fault fault);
-  // A deep copy of the run (copy_sim_state and the fault bookkeeping), and back: after restore
+  // A deep copy of the run (copy_sim_state, its faults with it), and back: after restore
   // the stepper continues exactly as it did from the checkpoint. The checkpoint must come from a
   // stepper of the same model; the record (if any) is not rewound.
   StepperCheckpoint checkpoint() const;
@@ -113,8 +126,8 @@ class Stepper {
   // (sim::sensed_yaw_deg: a drifting or noisy sensor's error included). What the learner and the
   // steering reflex see.
   Pose2 sensed_pose() const;
-  // The run's faults: the timeline, what has come, the legs failed now.
-  const FaultSchedule& faults() const { return faults_; }
+  // The run's faults: the timeline, what has come, what is in force, the legs failed now.
+  const FaultSchedule& faults() const { return state_.faults.schedule; }
 
  private:
   void apply_due_faults();
@@ -123,7 +136,6 @@ class Stepper {
 
   const SimModel& model_;
   SimState state_;
-  FaultSchedule faults_;
   std::function<void(Stepper&)> before_step_;
   Observer* observer_;
   WalkRecord* record_;

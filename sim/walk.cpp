@@ -7,7 +7,6 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
-#include "common/interrupt.h"
 
 namespace multicpg::sim {
 namespace {
@@ -87,61 +86,12 @@ void measure_poses(const SimModel& model, long steps, const std::vector<Pose2>& 
 
 }  // namespace
 
-SimState start_walk_state(const SimModel& model, const std::vector<int>& periods) {
-  if (periods.empty()) return make_sim_state(model);
-  const bool equal =
-      std::all_of(periods.begin(), periods.end(), [&](int p) { return p == periods.front(); });
-  SimState state = make_sim_state(model, periods.front());
-  if (!equal) {
-    neural::set_periods(model.controller, state.controller, periods);
-    neural::set_synchronised(state.controller, false);
-  }
-  return state;
-}
-
-void warm_up_controller(const SimModel& model, SimState& state, long steps) {
-  for (long t = 0; t < steps; ++t) {
-    check_interrupted();  // a warm-up may be long (up to kMaxSteps)
-    neural::controller_step(model.controller, state.controller);
-  }
-}
-
-void append_record(const SimModel& model, const SimState& state, bool joints, WalkRecord& r) {
-  const Position p = trunk_position(model, state);
-  r.time.push_back(state.data->time);
-  r.x.push_back(p.x);
-  r.y.push_back(p.y);
-  r.z.push_back(p.z);
-  r.yaw_deg.push_back(trunk_yaw_deg(model, state));
-  if (!joints) return;
-  for (std::size_t leg = 0; leg < r.legs; ++leg) {
-    const neural::MotorCommands& m = state.controller.legs[leg].command;
-    r.command.insert(r.command.end(), {m.tc, m.ctr, m.fti});
-    for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-      r.target.push_back(state.targets[leg][j]);
-      r.actual.push_back(joint_angle(model, state, leg, robot::kJoints[j]));
-    }
-    r.contact.push_back(foot_contact(model, state, leg) ? 1 : 0);
-  }
-}
-
 std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::size_t first,
                                       long window) {
   std::vector<double> out;
   const auto w = static_cast<std::size_t>(window);
   for (std::size_t end = first + w; end < yaw_deg.size(); end += w) {
     out.push_back(wrap_degrees(yaw_deg[end] - yaw_deg[end - w]));
-  }
-  return out;
-}
-
-std::vector<WindowMeasure> window_measures(const WalkRecord& r, std::size_t first, long window) {
-  std::vector<WindowMeasure> out;
-  const auto w = static_cast<std::size_t>(window);
-  for (std::size_t end = first + w; end < r.rows(); end += w) {
-    const std::size_t begin = end - w;
-    out.push_back(measure_window({r.x[begin], r.y[begin], r.yaw_deg[begin]},
-                                 {r.x[end], r.y[end], r.yaw_deg[end]}));
   }
   return out;
 }

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "common/limits.h"
 #include "sim/deviation.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
@@ -16,10 +15,6 @@ namespace multicpg::sim {
 
 // Paper §4: deviation is measured over windows of 400 controller steps.
 inline constexpr long kDefaultWindow = 400;
-
-// Documented ranges of step counts: a run of at least one step, settles and warm-ups of none.
-inline constexpr Limits<long> kRunStepsLimits{1, kMaxSteps};
-inline constexpr Limits<long> kStepLimits{0, kMaxSteps};
 
 // Step numbers count controller steps from the start of the run (after the warm-up).
 struct WalkSpec {
@@ -64,21 +59,8 @@ void measure_walk(const SimModel& model, long settle, long steps, long window, W
 // becomes unstable; Interrupted when SIGINT or SIGTERM stops it (common/interrupt.h).
 WalkResult walk(const SimModel& model, const WalkSpec& spec);
 
-// The state a run starts from before its warm-up: make_sim_state, then `periods` (one per leg;
-// empty = all 4). Equal periods keep the clients synchronised; unequal ones set each leg's
-// period and free the clients (paper §2.3). Throws BadInput for a wrong number of periods or a
-// period outside 1-9.
-SimState start_walk_state(const SimModel& model, const std::vector<int>& periods);
-
-// Runs the neural controller alone for `steps` steps: the robot does not move.
-void warm_up_controller(const SimModel& model, SimState& state, long steps);
-
 // Deviations of consecutive complete windows of a yaw trace from row `first`.
 std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::size_t first,
                                       long window);
-
-// Yaw change and path angle of consecutive complete windows of a record from row `first`.
-std::vector<WindowMeasure> window_measures(const WalkRecord& record, std::size_t first,
-                                           long window);
 
 }  // namespace multicpg::sim

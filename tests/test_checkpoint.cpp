@@ -101,7 +101,7 @@ TEST(Checkpoint, EveryFaultKindInForceContinuesBitForBit) {
     edit(bad);
     EXPECT_THROW(sim::checkpoint_from_json(m, bad), BadInput) << what;
   };
-  refused("in force", [](json& j) { j["effects"]["in_force"] = json::array(); });
+  refused("in force", [](json& j) { j["faults"]["applied"] = json::array(); });
   refused("torque", [](json& j) { j["effects"]["joints"][0][0][1] = 2.0; });
   refused("servo", [](json& j) { j["effects"]["joints"][0][0][0] = 7; });
   refused("random", [](json& j) { j["effects"]["sensor"]["random"] = "x"; });

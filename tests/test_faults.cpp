@@ -197,7 +197,7 @@ TEST(Faults, RecoveryRestoresThePhysicsExactly) {
        fault("L2:slip=0.2@50"), fault("R2.CTr:locked@150", true), fault("L1:weak@150", true),
        fault("R1:short@150", true), fault("L2:slip@150", true)});
   faulty.steps(151);
-  EXPECT_TRUE(faulty.state().faults.in_force.empty());
+  EXPECT_TRUE(faulty.faults().in_force().empty());
   EXPECT_EQ(sim::physics_model(hexapod(), faulty.state()), hexapod().mj.get());
   sim::Stepper healthy(hexapod(), {}, {});
   healthy.restore(faulty.checkpoint());
@@ -220,6 +220,21 @@ TEST(FaultText, EveryKindReadsBackAsWritten) {
   // A whole leg keeps the record it always had.
   EXPECT_EQ(nlohmann::json(fault("R1,R3@5")),
             nlohmann::json::parse(R"({"step": 5, "legs": [0, 2], "recover": false})"));
+}
+
+// The learning records' form of a run's faults (sim::faults_record): the paper's one whole-leg
+// failure as its legs and step, anything else as the timeline itself.
+TEST(FaultJson, RecordsKeepOneLegFailureAsDisabledAndFailStep) {
+  EXPECT_EQ(sim::faults_record({fault("R1+R3@600")}),
+            nlohmann::json::parse(R"({"disabled": [0, 2], "fail_step": 600, "faults": []})"));
+  EXPECT_EQ(sim::faults_record({}),
+            nlohmann::json::parse(R"({"disabled": [], "fail_step": 0, "faults": []})"));
+  const sim::FaultTimeline other{fault("R2.CTr:locked@5")};
+  EXPECT_EQ(
+      sim::faults_record(other),
+      (nlohmann::json{{"disabled", nlohmann::json::array()}, {"fail_step", 0}, {"faults", other}}));
+  const sim::FaultTimeline twice{fault("R1@0"), fault("R1@90", true)};
+  EXPECT_EQ(sim::faults_record(twice).at("faults").get<sim::FaultTimeline>(), twice);
 }
 
 TEST(FaultText, BadSpecsAreOneLineNamingWhatIsWrong) {
@@ -320,7 +335,7 @@ TEST(Terrain, ASlopeTiltsTheGroundTheRobotAndTheWalls) {
 TEST(Terrain, RoughGroundIsAHeightfieldAndStepsAreBoxes) {
   const sim::SimModel rough = terrain_model("rough:0.02:3");
   ASSERT_EQ(rough.mj->nhfield, 1);
-  const int n = robot::rough_samples_per_side();
+  const int n = robot::heightfield_samples_per_side();
   EXPECT_EQ(rough.mj->hfield_nrow[0], n);
   EXPECT_NEAR(rough.mj->hfield_size[2], 0.02, 1e-12);
   float lo = 1.0F;
@@ -331,11 +346,11 @@ TEST(Terrain, RoughGroundIsAHeightfieldAndStepsAreBoxes) {
   }
   EXPECT_EQ(lo, 0.0F);
   EXPECT_EQ(hi, 1.0F);
-  EXPECT_EQ(robot::rough_samples(robot::parse_terrain("rough:0.02:3")),
-            robot::rough_samples(robot::parse_terrain("rough:0.01:3")))
+  EXPECT_EQ(robot::heightfield_samples(robot::parse_terrain("rough:0.02:3")),
+            robot::heightfield_samples(robot::parse_terrain("rough:0.01:3")))
       << "the seed, not the height, draws the bumps";
-  EXPECT_NE(robot::rough_samples(robot::parse_terrain("rough:0.02:3")),
-            robot::rough_samples(robot::parse_terrain("rough:0.02:4")));
+  EXPECT_NE(robot::heightfield_samples(robot::parse_terrain("rough:0.02:3")),
+            robot::heightfield_samples(robot::parse_terrain("rough:0.02:4")));
   sim::Stepper walker(rough, {}, {});
   walker.steps(600);
   EXPECT_GT(walker.pose().x, 0.3) << "it walks over 2 cm bumps";

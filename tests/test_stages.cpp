@@ -8,6 +8,7 @@
 
 #include "common/errors.h"
 #include "report/figures.h"
+#include "report/reproduce.h"
 #include "report/stages/stage.h"
 
 namespace multicpg::report {

@@ -13,7 +13,7 @@
 #include "experiments/learning_experiments.h"
 #include "report/figures.h"
 #include "report/html.h"
-#include "report/reproduce.h"
+#include "report/reproduce_options.h"
 
 namespace multicpg::report {
 

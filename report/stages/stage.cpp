@@ -1,8 +1,7 @@
-#include <stdexcept>
+#include "report/stages/stage.h"
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
-#include "report/stages/stage.h"
 
 namespace multicpg::report {
 
@@ -32,17 +31,6 @@ const Stage& stage_by_id(std::string_view id) {
     known += (known.empty() ? "" : ", ") + std::string(s.id);
   }
   throw BadInput("unknown reproduce stage '" + std::string(id) + "' (known: " + known + ")");
-}
-
-std::string stage_of_figure(std::string_view figure) {
-  const std::string_view name = figure_by_name(figure).name;  // BadInput for unknown names
-  for (const Stage& s : reproduce_stages()) {
-    for (std::string_view f : s.figures) {
-      if (f == name) return std::string(s.id);
-    }
-  }
-  // Stages.EveryFigureIsDrawnByExactlyOneStage keeps the registry and the table in step.
-  throw std::logic_error("figure '" + std::string(name) + "' is drawn by no reproduce stage");
 }
 
 std::filesystem::path StageContext::dir(const std::string& name) const {
