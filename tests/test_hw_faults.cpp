@@ -61,7 +61,7 @@ TEST(HardwareFaults, DynamixelFaultsStopTheRobotInItsSafePosture) {
       {"dynamixel-hexapod.toml", "silent=5@30", "servo R2.CTr (ID 5) stopped answering"},
       {"dynamixel-hexapod.toml", "corrupt=1@30", "repeated checksum errors"},
       {"dynamixel-hexapod.toml", "drop=1@30", "bus timeout: no answer in 3 control steps"},
-      {"dynamixel-hexapod.toml", "latency=1000@30", "bus timeout: no answer in 3 control steps"},
+      {"dynamixel-hexapod.toml", "latency=5000@30", "bus timeout: no answer in 3 control steps"},
       {"dynamixel-hexapod.toml", "silent-yaw@30", "yaw sensor silent"},
   };
   for (const Fault& f : faults) expect_safe_stop(f, "walk --steps 200");
@@ -71,7 +71,7 @@ TEST(HardwareFaults, AmosiiBoardFaultsStopTheRobotInItsSafePosture) {
   const Fault faults[] = {
       {"amosii.toml", "silent=0@30", "bus timeout: no answer in 3 control steps"},
       {"amosii.toml", "drop=1@30", "bus timeout: no answer in 3 control steps"},
-      {"amosii.toml", "latency=1000@30", "bus timeout: no answer in 3 control steps"},
+      {"amosii.toml", "latency=5000@30", "bus timeout: no answer in 3 control steps"},
       {"amosii.toml", "silent-yaw@30", "yaw sensor silent: no reading in 3 control steps"},
   };
   for (const Fault& f : faults) expect_safe_stop(f, "walk --steps 200");
