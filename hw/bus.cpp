@@ -176,7 +176,7 @@ class DynamixelBus final : public Bus {
           for (std::uint8_t id : ids) {
             if (got.count(id) == 0 &&
                 std::find(rejected.begin(), rejected.end(), id) == rejected.end()) {
-              add(errors, LinkError::missing, "no answer from " + file_.servo_name(id));
+              add(errors, LinkError::missing, "no answer from " + file_.servo_name(id), id);
             }
           }
         }
@@ -334,9 +334,9 @@ long LinkErrors::total() const {
   return sum;
 }
 
-void Bus::add(std::vector<StepError>& errors, LinkError kind, std::string what) {
+void Bus::add(std::vector<StepError>& errors, LinkError kind, std::string what, int servo) {
   ++errors_.counts[static_cast<std::size_t>(kind)];
-  errors.push_back({kind, std::move(what)});
+  errors.push_back({kind, std::move(what), servo});
   resync_ = true;
 }
 
@@ -358,7 +358,7 @@ YawLine::YawLine(const HardwareFile& file) : spec_(file.yaw), port_(file.yaw.por
 std::optional<yaw_line::Reading> YawLine::poll(std::vector<StepError>& errors) {
   const auto fail = [&](LinkError kind, std::string what) {
     ++errors_.counts[static_cast<std::size_t>(kind)];
-    errors.push_back({kind, "yaw sensor: " + std::move(what)});
+    errors.push_back({kind, "yaw sensor: " + std::move(what), -1});
     resync_ = true;
     return std::nullopt;
   };

@@ -47,6 +47,7 @@ struct LinkErrors {
 struct StepError {
   LinkError kind;
   std::string what;
+  int servo = -1;  // the servo it concerns (missing), or -1
 };
 
 // What one step's answers reported (each joint and foot only where the hardware reports it).
@@ -73,7 +74,7 @@ class Bus {
   const LinkErrors& errors() const { return errors_; }
 
  protected:
-  void add(std::vector<StepError>& errors, LinkError kind, std::string what);
+  void add(std::vector<StepError>& errors, LinkError kind, std::string what, int servo = -1);
   // Before a request: after a failed answer, waits until the line is quiet (late bytes of that
   // answer must not pass for this one's), then drops what is waiting.
   void prepare(SerialPort& port, int timeout_ms);

@@ -21,18 +21,17 @@ std::string stop_message(const StopRecord& r, StopAction action) {
 }
 
 // The cause a stop names for the errors of the step that made it (the worst kind first).
-std::string bus_cause(const std::vector<StepError>& errors, int steps, int timeout_ms) {
+std::string bus_cause(const HardwareFile& file, const std::vector<StepError>& errors, int steps) {
   const std::string in_a_row = std::to_string(steps) + " control steps in a row";
   for (const StepError& e : errors) {
     if (e.kind == LinkError::missing) {
-      return "servo " + e.what.substr(std::string("no answer from ").size()) +
-             " stopped answering (" + in_a_row + ")";
+      return "servo " + file.servo_name(e.servo) + " stopped answering (" + in_a_row + ")";
     }
   }
   for (const StepError& e : errors) {
     if (e.kind == LinkError::timeout) {
-      return "bus timeout: no answer in " + in_a_row + " (timeout " + std::to_string(timeout_ms) +
-             " ms)";
+      return "bus timeout: no answer in " + in_a_row + " (timeout " +
+             std::to_string(file.timeout_ms) + " ms)";
     }
   }
   for (const StepError& e : errors) {
@@ -92,8 +91,10 @@ bool HardwareWalker::read_yaw(std::vector<StepError>& errors, const Feedback& fe
   if (file_.yaw.source == YawSource::board) {
     if (!feedback.yaw_deg) {
       ++board_yaw_errors_.counts[static_cast<std::size_t>(LinkError::timeout)];
-      errors.push_back({LinkError::timeout, "yaw input " + std::to_string(file_.yaw.board_port) +
-                                                " reads no heading (0 or 255)"});
+      errors.push_back(
+          {LinkError::timeout,
+           "yaw input " + std::to_string(file_.yaw.board_port) + " reads no heading (0 or 255)",
+           -1});
       return false;
     }
     pose_.yaw_deg = wrap_degrees(*feedback.yaw_deg);
@@ -174,7 +175,7 @@ void HardwareWalker::step() {
   if (sink_ != nullptr) sink_->row(row);
   bad_steps_ = bus_errors.empty() ? 0 : bad_steps_ + 1;
   silent_steps_ = yaw ? 0 : silent_steps_ + 1;
-  if (bad_steps_ >= file_.max_errors) fail(bus_cause(bus_errors, bad_steps_, file_.timeout_ms));
+  if (bad_steps_ >= file_.max_errors) fail(bus_cause(file_, bus_errors, bad_steps_));
   if (silent_steps_ >= file_.max_errors) {
     fail("yaw sensor silent: no reading in " + std::to_string(silent_steps_) +
          " control steps in a row (last: " + yaw_errors.back().what + ")");
