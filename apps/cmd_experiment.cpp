@@ -1,5 +1,6 @@
 // multicpg experiment table|beta|results: the paper's learning experiments on every core
-// (SPEC §8; paper Figs. 11, 13, 14) and the page that sets them beside the paper.
+// (paper Figs. 11, 13, 14; docs/learning.md "The paper's experiments") and the page that sets them
+// beside the paper.
 #include <iostream>
 #include <optional>
 
@@ -80,7 +81,7 @@ void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with
 }  // namespace
 
 void register_experiment(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("experiment", "the paper's learning experiments (SPEC §8)");
+  CLI::App* cmd = app.add_subcommand("experiment", "the paper's learning experiments (paper §4)");
   cmd->require_subcommand(1);
 
   auto table = std::make_shared<ExperimentOptions>();

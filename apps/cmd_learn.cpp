@@ -1,5 +1,5 @@
 // multicpg learn: a leg fails and the robot learns leg periods that walk straight again
-// (paper §3-§4, Fig. 8; SPEC §5-§6).
+// (paper §3-§4, Fig. 8; docs/learning.md "Online compensation").
 #include <filesystem>
 #include <iomanip>
 #include <iostream>

@@ -1,6 +1,6 @@
-// multicpg model: print the MJCF of a robot, as the simulation compiles it (SPEC §7), or write it
-// with its robot file (docs/robots.md "Your robot: robot files"); check a robot file; or list the
-// named body models with every value and its source.
+// multicpg model: print the MJCF of a robot, as the simulation compiles it (docs/robots.md), or
+// write it with its robot file (docs/robots.md "Your robot: robot files"); check a robot file; or
+// list the named body models with every value and its source.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -33,7 +33,7 @@ struct ModelOptions {
 };
 
 // What `model --check` walks: the tripod (robot::kDefaultPeriod) for 300 controller steps, 11 s
-// at the paper's 27 Hz (SPEC §0), in which the built-in robots settle and walk 0.6 m.
+// at the paper's 27 Hz (§4), in which the built-in robots settle and walk 0.6 m.
 constexpr long kCheckSteps = 300;
 // It stands when its trunk ends at least this share of its start height above the ground, and
 // touches neither the ground nor anything else of the world.

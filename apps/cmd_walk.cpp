@@ -1,5 +1,5 @@
 // multicpg walk: walk a simulated robot with given CPG periods and disabled legs, and report the
-// distance, speed and heading deviation per window (SPEC §6-§7).
+// distance, speed and heading deviation per window (docs/learning.md "Deviation").
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -232,7 +232,7 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--steps", opts->steps, "controller steps measured")
       ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();
-  cmd->add_option("--window", opts->window, "steps per yaw-deviation window (SPEC §6)")
+  cmd->add_option("--window", opts->window, "steps per yaw-deviation window (paper §4: 400)")
       ->check(in(learning::kWindowStepsLimits))
       ->capture_default_str();
   add_sim_flags(*cmd, opts->run.sim, opts->run.body);

@@ -1,5 +1,5 @@
 // Flags shared by `learn`, `experiment`, `tunnel --learn` and `render --learn`: the learning
-// options of SPEC §6 and docs/learning.md, bound directly to learning::CompensationOptions.
+// options of paper §3 and docs/learning.md, bound directly to learning::CompensationOptions.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -185,7 +185,7 @@ void add_sim_flags(CLI::App& cmd, sim::SimOptions& o, BodyFlags& body, bool with
       ->default_str("flat");
   if (with_servo) {
     cmd.add_option("--servo-gain", o.servo_gain,
-                   "servo gain K in 1/s (0, the default: the reference's 5.24 1/s at its 0.1 s "
+                   "servo gain K in 1/s (0, the default: lpzrobots' 5.24 1/s at its 0.1 s "
                    "step, scaled to --control-dt: 14.15 1/s at 0.037 s)")
         ->check(in(sim::kServoGainLimits));
   }

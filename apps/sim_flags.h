@@ -1,6 +1,6 @@
-// Flags of every command that simulates a robot: time steps and servo gain (SPEC §7),
-// bound directly to sim::SimOptions, and the body (robot/body_params.h): a named model and one
-// flag per physical parameter over it.
+// Flags of every command that simulates a robot: time steps and servo gain (docs/robots.md
+// "Servos"), bound directly to sim::SimOptions, and the body (robot/body_params.h): a named model
+// and one flag per physical parameter over it.
 #pragma once
 
 #include <CLI/CLI.hpp>

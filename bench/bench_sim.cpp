@@ -1,4 +1,4 @@
-// A 400-step hexapod trial (SPEC §6 window) in MuJoCo, against bare mj_step on the same model
+// A 400-step hexapod trial (paper §4 window) in MuJoCo, against bare mj_step on the same model
 // for the same simulated time: what the controller, servo law, sensing and checks cost; and
 // both against a plain MuJoCo hexapod: what our model and solver settings cost.
 //

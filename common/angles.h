@@ -5,7 +5,7 @@
 
 namespace multicpg {
 
-// Wraps an angle to (-180, 180] (SPEC §6: yaw and its deviations).
+// Wraps an angle to (-180, 180] (docs/learning.md "Deviation": yaw and its deviations).
 inline double wrap_degrees(double degrees) {
   constexpr double kFullTurn = 360.0;
   constexpr double kHalfTurn = 180.0;

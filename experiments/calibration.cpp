@@ -369,11 +369,11 @@ CalibrationTarget parse_calibration_target(std::string_view text) {
 
 std::vector<SearchedParam> default_searched_params() {
   return {
-      // A dead leg's joints: any command (docs/robots.md Body parameters: the reference holds 0,
+      // A dead leg's joints: any command (docs/robots.md Body parameters: the authors hold 0,
       // 0.7, -0.7; the probe's fit
       // needs the leg raised, CTr 1), but the leg never pressed into the ground (CTr below 0
       // props the body, which the paper's dead legs "touched ... intermittently" do not) nor
-      // stretched out past the reference's walking range of FTi (-1..-0.82) by more than 0.82.
+      // stretched out past the authors' walking range of FTi (-1..-0.82) by more than 0.82.
       {"disabled_posture.tc", -1.0, 1.0, false},
       {"disabled_posture.ctr", 0.0, 1.0, false},
       {"disabled_posture.fti", -1.0, 0.0, false},

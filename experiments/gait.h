@@ -15,7 +15,8 @@ struct GaitRecord {
 };
 
 // Steps a fresh controller needs before the gait shows: the slowest CPG lock from reset
-// (p = 4, about 740 steps, reference §1.3) plus the longest delay line.
+// (p = 4, about 740 steps, docs/controller.md "Steps to lock, from reset") plus the longest delay
+// line.
 inline constexpr long kDefaultGaitWarmup = 1000;
 
 // Runs `warmup` steps unrecorded, then records `steps` steps.

@@ -109,8 +109,8 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
   sim::Stepper stepper(model, {}, std::move(faults));
   neural::ControllerState& controller = stepper.state().controller;
 
-  // Learning tries every candidate with the clients free (SPEC §5); equal periods stay locked
-  // because set_periods resets every CPG together.
+  // Learning tries every candidate with the clients free (docs/controller.md "Synchronisation");
+  // equal periods stay locked because set_periods resets every CPG together.
   CombinationMeasure m;
   m.periods = periods;
   neural::set_periods(model.controller, controller, periods);

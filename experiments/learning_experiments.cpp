@@ -23,7 +23,8 @@ nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind
           {"record", {{"check_windows", spec.check_windows}}}};
 }
 
-// The one- and two-leg losses of a robot file's layout (SPEC §8 scenario tables for any body).
+// The one- and two-leg losses of a robot file's layout (docs/learning.md "The paper's experiments"
+// for any body).
 constexpr std::size_t kRobotFileScenarioLegs = 2;
 
 ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& document) {

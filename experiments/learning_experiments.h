@@ -1,5 +1,6 @@
-// The paper's learning experiments on the simulated robots (SPEC §8): the scenario tables
-// (Figs. 11, 13) and the beta study (Fig. 14), run in parallel and resumable (runner.h).
+// The paper's learning experiments on the simulated robots (paper §4; docs/learning.md "The paper's
+// experiments"): the scenario tables (Figs. 11, 13) and the beta study (Fig. 14), run in parallel
+// and resumable (runner.h).
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,5 @@
-// Online learning on the simulated robot (SPEC §5-§6): learning::compensate driving a MuJoCo
-// robot through the one stepping loop (sim::Stepper).
+// Online learning on the simulated robot (docs/learning.md "Online compensation"):
+// learning::compensate driving a MuJoCo robot through the one stepping loop (sim::Stepper).
 #pragma once
 
 #include <vector>

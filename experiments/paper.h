@@ -9,9 +9,9 @@
 
 namespace multicpg::experiments::paper {
 
-// One controller step of the paper's robot: 27 Hz (SPEC §0).
+// One controller step of the paper's robot: 27 Hz (paper §4).
 inline constexpr double kStepSeconds = 0.037;
-// The deviation threshold E_req in degrees (§4.1, SPEC §6).
+// The deviation threshold E_req in degrees (§4.1, docs/learning.md "Deviation").
 inline constexpr double kThresholdDeg = 8.0;
 // §4.1: "the learning time for most of the scenarios can be normally controlled within 20
 // trials".
@@ -31,8 +31,9 @@ struct LegPeriod {
   int period;
 };
 
-// §5, Table 1 and reference §5.4: the tunnel runs on the real robot with the combinations the
-// paper learned; deviation before (all periods 4) and after learning.
+// §5, Table 1 and docs/learning.md "Learned periods of the authors' code": the tunnel runs on the
+// real robot with the combinations the paper learned; deviation before (all periods 4) and after
+// learning.
 struct TunnelResult {
   std::string_view disabled;  // "R1+R3", legs in morphology order
   std::span<const LegPeriod> learned;

@@ -87,7 +87,7 @@ void validate(const RunSpec& spec) {
   if (std::adjacent_find(periods.begin(), periods.end(), std::not_equal_to<>()) != periods.end()) {
     throw OptionError("start.periods",
                       "a learning run starts with every leg at one period, its clients "
-                      "synchronised (SPEC §5)");
+                      "synchronised (paper §2.3)");
   }
 }
 

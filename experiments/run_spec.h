@@ -40,8 +40,8 @@ struct RunSpec {
 };
 
 // How a learning run starts: paper mode from a cold controller with every CPG reset, as the
-// reference did (SPEC §6); robust mode from a running, locked one, as a robot that was walking
-// when a leg failed.
+// authors' code did (docs/learning.md "Where the authors' code differs"); robust mode from a
+// running, locked one, as a robot that was walking when a leg failed.
 sim::StartSpec learning_start(learning::Mode mode);
 
 // Throws OptionError naming the key of the first bad value: "sim.control_dt",

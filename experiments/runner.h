@@ -1,8 +1,8 @@
 // Many independent runs on J threads, each saved as soon as it finishes, so an interrupted
-// experiment started again with the same arguments continues where it stopped (SPEC §8).
-// Under mpirun the runs are shared among the processes too (experiments/processes.h).
-// Results never depend on J or the processes: each run's seed comes from its key, never from
-// thread, process or order.
+// experiment started again with the same arguments continues where it stopped (docs/learning.md
+// "Running experiments"). Under mpirun the runs are shared among the processes too
+// (experiments/processes.h). Results never depend on J or the processes: each run's seed comes from
+// its key, never from thread, process or order.
 #pragma once
 
 #include <cstdint>

@@ -85,7 +85,7 @@ std::vector<Scenario> paper_scenarios(robot::RobotKind kind) {
   const Morphology& morph = robot::morphology(kind);
   switch (kind) {
     case robot::RobotKind::hexapod: {
-      constexpr std::size_t kMaxDisabled = 3;  // SPEC §8: 1-3 disabled legs
+      constexpr std::size_t kMaxDisabled = 3;  // 1-3 disabled legs (paper Fig. 11)
       return mirror_scenarios(morph, kMaxDisabled);
     }
     case robot::RobotKind::quadruped: {

@@ -1,4 +1,5 @@
-// The malfunction scenarios the paper reports (SPEC §8; paper Fig. 11, 13, 14).
+// The malfunction scenarios the paper reports (paper Fig. 11, 13, 14; docs/learning.md "The paper's
+// experiments").
 #pragma once
 
 #include <cstddef>

@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 constexpr int kJsonIndent = 2;
-constexpr std::size_t kMaxScenarioLegs = 3;  // SPEC §8: 1-3 disabled legs ("all")
+constexpr std::size_t kMaxScenarioLegs = 3;  // 1-3 disabled legs ("all"; paper Fig. 11)
 
 // Keys each run sets itself: its disabled legs or fault timeline and its seed.
 const std::set<std::string> kPerRunLearningKeys{"disabled", "faults", "seed"};

@@ -1,4 +1,4 @@
-// Tables of an experiment's runs (paper Fig. 11, 13, 14; SPEC §8): per scenario or beta the
+// Tables of an experiment's runs (paper Fig. 11, 13, 14): per scenario or beta the
 // mean and SD of final deviation and trials, the share converged and the most frequent final
 // combination, as common/table.h Tables with fixed decimals, so equal runs give byte-equal tables.
 #pragma once

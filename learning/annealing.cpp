@@ -29,8 +29,8 @@ std::uint64_t neighbours_at(std::size_t m, std::size_t d, std::uint64_t q) {
   return count;
 }
 
-// Smallest number of legs to change so that an untried combination can come out (SPEC §6:
-// one-leg changes first, then two, ...); 0 when every combination has been tried.
+// Smallest number of legs to change so that an untried combination can come out (docs/learning.md
+// "Candidates": one-leg changes first, then two, ...); 0 when every combination has been tried.
 std::size_t escalation_level(const AnnealingParams& params, const AnnealingState& state) {
   const std::size_t m = state.working.size();
   std::vector<std::uint64_t> tried_at(m + 1, 0);
@@ -126,7 +126,7 @@ std::optional<Candidate> propose(const AnnealingParams& params, AnnealingState& 
   std::vector<std::size_t> legs = state.working;
   for (;;) {
     // Table 2 steps 1-2, `level` times without repeating a leg (partial Fisher-Yates); every
-    // draw starts again from the accepted combination (step 4, SPEC §6).
+    // draw starts again from the accepted combination (Table 2 step 4).
     candidate.periods = state.accepted;
     for (std::size_t i = 0; i < level; ++i) {
       std::swap(legs[i], legs[i + draw_below(state.rng, legs.size() - i)]);

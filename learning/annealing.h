@@ -1,5 +1,6 @@
-// Simulated annealing over the working legs' periods (paper §3, Table 2; SPEC §6).
-// Model/state split: AnnealingParams is what the search is, AnnealingState what one run is doing.
+// Simulated annealing over the working legs' periods (paper §3, Table 2; docs/learning.md "The
+// search"). Model/state split: AnnealingParams is what the search is, AnnealingState what one run
+// is doing.
 #pragma once
 
 #include <cstddef>
@@ -19,11 +20,11 @@ using Periods = std::vector<int>;
 
 inline constexpr double kDefaultBeta = 0.5;          // paper §3: "usually 0.5"
 inline constexpr double kDefaultThresholdDeg = 8.0;  // E_req, paper §4
-inline constexpr int kDefaultMaxTrials = 200;        // SPEC §6 cap
+inline constexpr int kDefaultMaxTrials = 200;        // docs/learning.md "Stop and trial cap"
 inline constexpr int kStartPeriod = 4;               // C0 = all 4 (tripod), Table 2
 
 // Documented ranges: beta far past the paper's greedy 10 (Fig. 14); a threshold
-// between a thousandth of a degree and a U-turn; a trial cap far past the paper's 200 (SPEC §6).
+// between a thousandth of a degree and a U-turn; a trial cap far past the paper's 200.
 inline constexpr Limits<double> kBetaLimits{0.0, 100.0};
 inline constexpr Limits<double> kThresholdLimits{0.001, 180.0};
 inline constexpr Limits<int> kMaxTrialsLimits{1, 100'000};
@@ -71,7 +72,7 @@ struct AnnealingState {
   std::optional<Candidate> pending;  // proposed, not yet decided
   int trials = 0;
   StopReason stop = StopReason::running;
-  std::mt19937_64 rng;  // the run's only source of randomness (SPEC §6)
+  std::mt19937_64 rng;  // the run's only source of randomness (docs/learning.md "Seeding")
   std::vector<TrialRecord> trace;
 };
 
@@ -95,9 +96,9 @@ struct Decision {
   StopReason stop = StopReason::running;
 };
 
-// Decides the pending candidate given its measured deviation (Table 2 step 7, SPEC §6):
-// accept if E < E_ref, else iff a uniform draw x in [0,1) satisfies x < exp(-beta (E - E_ref)).
-// Then stops if E < threshold, or if the trial cap is reached.
+// Decides the pending candidate given its measured deviation (Table 2 step 7, docs/learning.md
+// "Acceptance"): accept if E < E_ref, else iff a uniform draw x in [0,1) satisfies
+// x < exp(-beta (E - E_ref)). Then stops if E < threshold, or if the trial cap is reached.
 Decision decide(const AnnealingParams& params, AnnealingState& state, double deviation_deg);
 // The same with the uniform draw given (used only when E >= E_ref), for scripted tests.
 Decision decide_with_draw(const AnnealingParams& params, AnnealingState& state,

@@ -38,7 +38,7 @@ class Walk {
     }
   }
 
-  // E of one measured window (SPEC §6): |yaw(end) - yaw(start)| wrapped.
+  // E of one measured window (docs/learning.md "Deviation"): |yaw(end) - yaw(start)| wrapped.
   double window() { return std::abs(measured_window().yaw_deg); }
 
   // Yaw change and path angle of one window (robust mode).
@@ -210,7 +210,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   const AnnealingParams& params = options.annealing;
   Walk walk(walker, options);
 
-  // Detection (SPEC §6): consecutive windows until one deviates more than the threshold.
+  // docs/learning.md "Detection": consecutive windows until one deviates more than the threshold.
   walk.steps(result.settle_steps);
   long windows_since_failure = 0;
   double e = 0.0;
@@ -235,7 +235,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   detected.periods = result.periods;
   walker.emit(detected);
 
-  // SPEC §5: a deviation desynchronises every client; then learning from C0 = current periods.
+  // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
   AnnealingState state = start_annealing(
       params, result.periods, sim::failing_legs(walker.faults().timeline()), e, options.seed);
@@ -355,7 +355,7 @@ class RobustRun {
     walk_.steps(settle_for(p));
   }
 
-  // SPEC §5: every leg works again: all legs at the master's period, clients synchronised.
+  // Paper §2.3: every leg works again: all legs at the master's period, clients synchronised.
   void resynchronise() {
     neural::ControllerState& c = walker_.controller();
     neural::set_period(model_, c, c.legs.front().cpg.period);
@@ -391,7 +391,7 @@ class RobustRun {
     detected.periods = periods();
     walker_.emit(detected);
 
-    neural::set_synchronised(walker_.controller(), false);  // SPEC §5
+    neural::set_synchronised(walker_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
     AnnealingState state =

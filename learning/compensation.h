@@ -1,6 +1,7 @@
-// Online malfunction compensation (paper §3-§4, SPEC §5-§6): the robot walks on without resets,
-// legs fail, a deviating 400-step window desynchronises the CPGs and starts the annealing of
-// learning/annealing.h, each trial walking the candidate periods for one window.
+// Online malfunction compensation (paper §3-§4, docs/learning.md "Online compensation"): the robot
+// walks on without resets, legs fail, a deviating 400-step window desynchronises the CPGs and
+// starts the annealing of learning/annealing.h, each trial walking the candidate periods for one
+// window.
 #pragma once
 
 #include <cstddef>
@@ -27,15 +28,16 @@ class Walker {
   virtual ~Walker() = default;
   // One controller step and the physics it drives.
   virtual void step() = 0;
-  // Trunk position (m) and yaw in degrees, (-180, 180] (SPEC §6): the orientation sensor and
-  // odometry (in simulation, the trunk's position).
+  // Trunk position (m) and yaw in degrees, (-180, 180] (docs/learning.md "Deviation"): the
+  // orientation sensor and odometry (in simulation, the trunk's position).
   virtual sim::Pose2 pose() const = 0;
   // Controller steps taken so far.
   virtual long step_count() const = 0;
   virtual neural::ControllerState& controller() = 0;
   virtual const neural::ControllerModel& controller_model() const = 0;
-  // The run's faults (SPEC §4): the walker applies them before the steps they name, counted
-  // from its start (sim::Stepper), and the learner reads from it what came.
+  // The run's faults (docs/faults.md "When faults strike"): the walker applies them before the
+  // steps they name, counted from its start (sim::Stepper), and the learner reads from it what
+  // came.
   virtual const sim::FaultSchedule& faults() const = 0;
   // Shows what the learner is doing to whoever watches (a film, the viewer, Python).
   virtual void emit(const sim::Event& /*event*/) {}
@@ -43,7 +45,7 @@ class Walker {
 
 // Which algorithm compensates.
 enum class Mode {
-  paper,  // paper §3 exactly as SPEC §6: one window judges a trial, yaw only, learning ends there
+  paper,   // paper §3 exactly: one window judges a trial, yaw only, learning ends there
   robust,  // yaw and path angle, several windows to accept, monitoring on, optional steering
 };
 enum class Steering { off, reflex };  // learning/steering.h
@@ -63,8 +65,8 @@ inline constexpr long kDefaultDetectionWindows = 5;
 inline constexpr long kSlowestLockSteps = 211;
 
 // Steps walked unmeasured after a period change: the slowest CPG lock plus the longest delay
-// line, whose contents still come from before the change (SPEC §3). Hexapod 211 + 126 = 337,
-// quadruped 211 + 108 = 319, octopod 211 + 144 = 355.
+// line, whose contents still come from before the change (docs/controller.md "Delay lines").
+// Hexapod 211 + 126 = 337, quadruped 211 + 108 = 319, octopod 211 + 144 = 355.
 long default_settle_steps(const neural::ControllerModel& model);
 
 // Steps after a reset of every CPG to `periods` until no window can see a transient: the
@@ -113,7 +115,7 @@ struct CompensationOptions {
 void validate(const CompensationOptions& options);
 
 // Throws OptionError (key "mode") for a fault timeline these options cannot learn with: paper
-// mode takes one fault and no recovery (SPEC §6).
+// mode takes one fault and no recovery (paper §3).
 void validate_faults(const CompensationOptions& options, const sim::FaultTimeline& faults);
 
 // One learning episode: from a detecting window to the end of its annealing.
@@ -162,14 +164,14 @@ struct LearningResult {
 // synchronised (as make_controller_state leaves it), at its step 0 (else std::invalid_argument:
 // a caller's mistake), its faults to come as its schedule says. Throws OptionError for options or
 // a timeline validate() or validate_faults() refuse. Paper mode is
-// SPEC §6 exactly; robust mode:
+// paper §3 exactly (docs/learning.md "The search"); robust mode:
 // - a window is judged on both its yaw change and its path angle (sim::measure_window);
 // - a combination is accepted only when it holds for hold_windows consecutive windows (a trial
 //   stops at its first window over the threshold, whose deviation is the trial's E);
 // - after an episode the robot keeps walking and monitoring, and a window over the threshold
 //   starts a new episode; the run ends after monitor_windows clean windows past the last fault;
 // - a recovery that leaves no fault in force sets every period back to the master's and
-//   resynchronises the clients (SPEC §5), then settles;
+//   resynchronises the clients (paper §2.3), then settles;
 // - with Steering::reflex, learning/steering.h holds the course set where the run started.
 LearningResult compensate(Walker& walker, const CompensationOptions& options);
 

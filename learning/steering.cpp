@@ -10,9 +10,9 @@
 namespace multicpg::learning {
 namespace {
 
-// The VRN's steering weight (reference §3.2): u1 = tanh(5 input).
+// The VRN's steering weight (docs/controller.md "VRN"): u1 = tanh(5 input).
 constexpr double kSteerWeight = 5.0;
-// Forward walking: input3 = input4 = -1 (reference §3).
+// Forward walking: input3 = input4 = -1 (docs/controller.md "Drive inputs").
 constexpr double kForward = -1.0;
 
 // The steering input that leaves `amplitude` (0..1) of a side's swing: u1 = -amplitude.

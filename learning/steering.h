@@ -1,5 +1,5 @@
-// The orientation reflex on the VRN's steering inputs (beyond the paper). SPEC §2 and
-// reference §3.2: the VRN acts like u0 * u1 with u1 = tanh(5 input3/4), so a side's steering
+// The orientation reflex on the VRN's steering inputs (beyond the paper). docs/controller.md
+// "VRN": the VRN acts like u0 * u1 with u1 = tanh(5 input3/4), so a side's steering
 // input scales that side's TC swing from full (-1) to none (0). The paper names these inputs as
 // the place for sensory feedback; this reflex feeds them the orientation sensor and odometry.
 //

@@ -12,7 +12,7 @@ namespace {
 using robot::LegType;
 using robot::Side;
 
-constexpr std::size_t kMaster = 0;  // R1 (SPEC §5)
+constexpr std::size_t kMaster = 0;  // R1 (paper §2.2)
 
 void step_cpgs(const ControllerModel& model, ControllerState& state) {
   LegState& master = state.legs[kMaster];
@@ -31,9 +31,10 @@ void step_postprocessing(const ControllerModel& model, ControllerState& state) {
     LegState& leg = state.legs[i];
     const bool window = advance_window(leg.post, leg.cpg.period);
     if (i == kMaster) master_window = window;
-    // SPEC §5: a synchronised client's post-processing follows the master: its period, window
-    // and CPG output. Eq. 5 already makes x1 equal; x2 is not coupled and differs by the
-    // master's own control input, so reading the master's keeps the outputs equal bit for bit.
+    // docs/controller.md "Synchronisation": a synchronised client's post-processing follows the
+    // master: its period, window and CPG output. Eq. 5 already makes x1 equal; x2 is not coupled
+    // and differs by the master's own control input, so reading the master's keeps the outputs
+    // equal bit for bit.
     const bool follow = follows_master(state, i);
     const CpgState& source = follow ? master.cpg : leg.cpg;
     postprocessing_step(model.params.post, leg.post, source.x1, source.x2,

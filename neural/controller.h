@@ -1,4 +1,5 @@
-// The multi-CPG locomotion controller: one CPG circuit per leg, R1 the master (SPEC §1-§5).
+// The multi-CPG locomotion controller: one CPG circuit per leg, R1 the master (paper §2;
+// docs/controller.md).
 #pragma once
 
 #include <span>
@@ -33,7 +34,7 @@ struct LegCircuit {
   bool front = false;
   bool hind = false;
   LegMotorMap map;
-  MotorCommands disabled;  // what the leg's joints hold while it is disabled (SPEC §4)
+  MotorCommands disabled;  // what the leg's joints hold while it is disabled (paper §4)
 };
 
 // What the controller is: immutable once made, shared by any number of states.
@@ -45,11 +46,11 @@ struct ControllerModel {
   std::size_t size() const { return legs.size(); }
 };
 
-// Far beyond any weight, bias or constant of the paper (the largest is |w11| = 22, SPEC §1), yet
+// Far beyond any weight, bias or constant of the paper (the largest is |w11| = 22, Eq. 1), yet
 // small enough that no neuron input overflows.
 inline constexpr double kMaxParamMagnitude = 1000.0;
-// Longest delay line step of tau or tau_l (the paper's are 18 and 90, SPEC §3): a delay line
-// holds a leg's whole history over 6 * tau + tau_l steps, so this keeps it small.
+// Longest delay line step of tau or tau_l (ours are 18 and 90, docs/controller.md "Delay lines"): a
+// delay line holds a leg's whole history over 6 * tau + tau_l steps, so this keeps it small.
 inline constexpr int kMaxDelayStep = 1000;
 
 // Throws OptionError (key "cpg.w11", ...) for a non-finite parameter, one beyond
@@ -73,7 +74,7 @@ struct LegState {
   DelayedSignals delayed;  // after the delay and shaping
   MotorCommands command;   // to the joints, m in [-1, 1]
   double alpha = 0.0;      // synchronisation to the master (paper Eq. 5); unused on the master
-  bool disabled = false;   // holds its circuit's disabled posture (SPEC §4)
+  bool disabled = false;   // holds its circuit's disabled posture (paper §4)
 };
 
 // What the controller is doing.
@@ -83,19 +84,20 @@ struct ControllerState {
   long step = 0;
 };
 
-// A state with every CPG reset to `period` and every client synchronised (SPEC §5: all legs
+// A state with every CPG reset to `period` and every client synchronised (paper §2.3: all legs
 // functional means alpha = 1).
 ControllerState make_controller_state(const ControllerModel& model, int period = 4);
 
 // Sets each leg's period and resets every CPG together (x, mu, counters, windows), so legs with
-// equal periods stay phase-locked (SPEC §1). Throws BadInput for a period outside 1-9.
+// equal periods stay phase-locked (docs/controller.md "Control law"). Throws BadInput for a period
+// outside 1-9.
 void set_periods(const ControllerModel& model, ControllerState& state,
                  std::span<const int> periods);
 void set_period(const ControllerModel& model, ControllerState& state, int period);
 
-// Alpha of every client: 1 synchronises all to the master, 0 frees all (SPEC §5).
+// Alpha of every client: 1 synchronises all to the master, 0 frees all (paper Eq. 5).
 void set_synchronised(ControllerState& state, bool synchronised);
-// Uncontrolled (chaotic) CPGs: c = 0 on every step (SPEC §1).
+// Uncontrolled (chaotic) CPGs: c = 0 on every step (paper §2.1).
 void set_chaotic(ControllerState& state, bool chaotic);
 void set_disabled(ControllerState& state, std::size_t leg, bool disabled);
 

@@ -26,10 +26,11 @@ void cpg_step(const CpgParams& params, CpgState& state, const SyncInput& sync) {
   double c1 = 0.0;
   double c2 = 0.0;
   if (control_event) {
-    // Paper Eqs. 2-4 in the reference's form (reference §1.2): Delta compares outputs p apart.
+    // Paper Eqs. 2-4 in the authors' form (docs/controller.md "Control law"): Delta compares
+    // outputs p apart.
     const double d1 = state.buffer[p][0] - state.buffer[0][0];
     const double d2 = state.buffer[p][1] - state.buffer[0][1];
-    const double shunt = 1.0 - sync.alpha;  // SPEC §5: a synchronised client is uncontrolled
+    const double shunt = 1.0 - sync.alpha;  // Paper §2.3: a synchronised client is uncontrolled
     c1 = shunt * state.mu * (params.w11 * d1 + params.w12 * d2);
     c2 = shunt * state.mu * (params.w21 * d1);
     state.mu += params.lambda * (d1 * d1 + d2 * d2) / p;

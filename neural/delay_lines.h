@@ -1,4 +1,4 @@
-// Delay lines and post-delay shaping (SPEC §3, reference §4.1-4.2).
+// Delay lines and post-delay shaping (docs/controller.md "Delay lines", "Post-delay shaping").
 #pragma once
 
 #include <vector>
@@ -7,14 +7,15 @@
 
 namespace multicpg::neural {
 
-// Inter-leg delays in controller steps. Defaults are the authors' code (reference §4.1); the
-// paper's text says 16 and 48, which do not give the named gaits (reference §4.3).
+// Inter-leg delays in controller steps. Defaults are the authors' code (docs/controller.md
+// "Delay lines"); the paper's text says 16 and 48, which do not give the named gaits
+// (docs/controller.md "Gaits").
 struct DelayParams {
   int tau = 18;    // ipsilateral lag per leg, hind to front
   int tau_l = 90;  // left side lags the right
 };
 
-// One leg's FIFO of pre-motor signals, starting as zeros (reference §4.1). Holds d + 2 entries:
+// One leg's FIFO of pre-motor signals, starting as zeros. Holds d + 2 entries:
 // the value d steps ago and the one before it (for the CTr falling test).
 struct DelayLine {
   std::vector<MotorNeuronOutputs> ring;
@@ -23,17 +24,17 @@ struct DelayLine {
 
 DelayLine make_delay_line(int delay);
 
-// Delay of a leg: (legs per side - 1 - position) tau, plus tau_L on the left (reference §4.1).
+// Delay of a leg: (legs per side - 1 - position) tau, plus tau_L on the left.
 int leg_delay(const DelayParams& params, int legs_per_side, int position, bool left);
 
 // A leg's delayed, shaped pre-motor signals and its phase.
 struct DelayedSignals {
   MotorNeuronOutputs pre;
-  bool swing = false;  // the delayed CTr signal rises (reference §4.2: swing = rising part)
+  bool swing = false;  // the delayed CTr signal rises (swing = rising part)
 };
 
-// Pushes this step's signals; returns the delayed ones shaped as reference §4.2: CTr = -1 while
-// the delayed CTr falls (stance), hind-leg FTi inverted, TC unchanged.
+// Pushes this step's signals; returns the delayed ones shaped as docs/controller.md "Post-delay
+// shaping": CTr = -1 while the delayed CTr falls (stance), hind-leg FTi inverted, TC unchanged.
 DelayedSignals delay_step(DelayLine& line, const MotorNeuronOutputs& input, bool hind_leg);
 
 }  // namespace multicpg::neural

@@ -1,9 +1,9 @@
-// Drive inputs of the neural motor control (reference §3: input0..input4).
+// Drive inputs of the neural motor control (docs/controller.md "Drive inputs").
 #pragma once
 
 namespace multicpg::neural {
 
-// Forward walking: input0 = 0, input1 = 1, input2 = 1, input3 = input4 = -1 (reference §3).
+// Forward walking: input0 = 0, input1 = 1, input2 = 1, input3 = input4 = -1.
 struct DriveInputs {
   double inhibition = 0.0;    // input0: 1 inhibits every joint
   double lateral = 1.0;       // input1: scales the FTi drive (sideways walking)

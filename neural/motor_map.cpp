@@ -10,7 +10,8 @@ namespace {
 using robot::LegType;
 using robot::RobotKind;
 
-// Reference §4.4: ranges of the motor neurons (a, b) and command windows [lo, hi].
+// docs/controller.md "Motor mapping and joint windows": ranges of the motor neurons (a, b) and
+// command windows [lo, hi].
 constexpr double kTcPreRange = 0.91;
 constexpr LinearMap kCtrMap{-1.0, 0.96, 0.5985, 0.9975};   // 45..75 deg elevation
 constexpr LinearMap kFtiMap{-1.0, 1.0, -1.0024, -0.8204};  // 130..120 deg flexion
@@ -21,7 +22,8 @@ struct Window {
 
 Window tc_window(RobotKind kind, LegType type) {
   if (kind == RobotKind::quadruped) {
-    // AmosFour (reference §4.4, S3): front pair -10..+40 deg, hind pair -40..+10 deg.
+    // AmosFour (docs/controller.md "Motor mapping and joint windows"): front pair -10..+40 deg,
+    // hind pair -40..+10 deg.
     return type == LegType::hind ? Window{-0.572, 0.143} : Window{-0.167, 0.668};
   }
   switch (type) {

@@ -1,5 +1,5 @@
-// Linear maps from pre-motor signals to motor commands m in [-1, 1] (SPEC §4, docs/robots.md Joint
-// angles).
+// Linear maps from pre-motor signals to motor commands m in [-1, 1] (docs/controller.md "Motor
+// mapping and joint windows", docs/robots.md Joint angles).
 #pragma once
 
 #include "neural/motor_neurons.h"
@@ -22,7 +22,7 @@ struct MotorCommands {
   double fti = 0.0;
 };
 
-// Maps of one leg (reference §4.4 table).
+// Maps of one leg (docs/controller.md "Motor mapping and joint windows").
 struct LegMotorMap {
   LinearMap tc, ctr, fti;
   MotorCommands operator()(const MotorNeuronOutputs& pre) const {
@@ -32,7 +32,7 @@ struct LegMotorMap {
 
 // The TC window depends on the robot and the leg design; CTr and FTi windows are shared. A body
 // lift of `lift_body_deg` takes that many degrees off the CTr window and adds them to the FTi
-// window (docs/robots.md Body parameters, the real-robot controller S2's lift_body_up), so the legs
+// window (docs/robots.md Body parameters, the authors' real-robot lift_body_up), so the legs
 // stand taller.
 LegMotorMap leg_motor_map(robot::RobotKind kind, robot::LegType type, double lift_body_deg = 0.0);
 

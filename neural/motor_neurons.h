@@ -1,11 +1,11 @@
-// The three motor neurons of a leg (SPEC §2, reference §3.3 "Three neuron Control").
+// The three motor neurons of a leg (docs/controller.md "Motor neurons").
 #pragma once
 
 #include "neural/drive.h"
 
 namespace multicpg::neural {
 
-// Weights of reference §3.3.
+// Weights of docs/controller.md "Motor neurons".
 struct MotorNeuronParams {
   double tc_weight = -2.5;   // TC_pre = tanh(-2.5 v +- 10 input0)
   double inhibition = 10.0;  // input0 weight

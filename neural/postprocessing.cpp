@@ -18,8 +18,9 @@ double slope_up(int period) {
   return 2.0 / window_length(period);
 }
 
-// Reference §2.3: 2/((1-p)N). At p = 1 it is 2/0 = +inf, so the ramp clips to a constant +1:
-// the paper's "stop" (reference §1.4). We name that case instead of dividing by zero.
+// docs/controller.md "Post-processing": 2/((1-p)N). At p = 1 it is 2/0 = +inf, so the ramp
+// clips to a constant +1: the paper's "stop" (docs/controller.md "Period 1: stop"). We name that
+// case instead of dividing by zero.
 double slope_down(int period) {
   if (period == 1) return std::numeric_limits<double>::infinity();
   return 2.0 / ((1.0 - period) * window_length(period));
@@ -32,7 +33,7 @@ int window_length(int period) {
 }
 
 bool advance_window(PostProcessingState& state, int period) {
-  ++state.window_counter;  // pre-incremented (reference §2.1)
+  ++state.window_counter;  // pre-incremented, as the authors' code
   return state.window_counter % window_length(period) == 0;
 }
 
@@ -73,7 +74,8 @@ long lock_steps(int period) {
     default:
       break;
   }
-  throw BadInput("period " + std::to_string(period) + " never locks (SPEC §1: 1, 4, 5, 6, 8, 9 do)");
+  throw BadInput("period " + std::to_string(period) +
+                 " never locks (paper §2.1: 1, 4, 5, 6, 8, 9 do)");
 }
 
 }  // namespace multicpg::neural

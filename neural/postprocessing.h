@@ -1,9 +1,10 @@
-// CPG post-processing: hysteresis neurons and ramp integrators (SPEC §2, reference §2).
+// CPG post-processing: hysteresis neurons and ramp integrators (docs/controller.md
+// "Post-processing").
 #pragma once
 
 namespace multicpg::neural {
 
-// What the post-processing is (reference §2 constants).
+// What the post-processing is (its constants).
 struct PostProcessingParams {
   double input_gain = 8.0;   // FAC: I = 8 (x - b) at a window step
   double bias1 = 0.5;        // b1
@@ -22,13 +23,13 @@ struct PostProcessingState {
   double y2 = 0.0;
 };
 
-// Window length N = 2p + 1 steps (reference §2.1).
+// Window length N = 2p + 1 steps .
 int window_length(int period);
 
 // Controller steps after a CPG reset (x = 0, mu = -1) until this period's post-processed output
-// is exactly periodic (reference §1.3, reproduced by tests/test_postprocessing.cpp): 737 for
-// p = 4, 43 / 64 / 84 / 208 for p = 5 / 6 / 8 / 9, 0 for the constant output of p = 1. Periods
-// that never lock (2, 3, 7) throw BadInput.
+// is exactly periodic (docs/controller.md "Steps to lock, from reset";
+// tests/test_postprocessing.cpp): 737 for p = 4, 43 / 64 / 84 / 208 for p = 5 / 6 / 8 / 9, 0 for
+// the constant output of p = 1. Periods that never lock (2, 3, 7) throw BadInput.
 long lock_steps(int period);
 
 // Advances this leg's window counter; true when this step is a window step (k mod N == 0).

@@ -1,4 +1,4 @@
-// Phase switching network, one per leg (SPEC §2, reference §3.1).
+// Phase switching network, one per leg (docs/controller.md "PSN").
 #pragma once
 
 #include <array>
@@ -7,7 +7,7 @@
 
 namespace multicpg::neural {
 
-// Weights of reference §3.1.
+// Weights of docs/controller.md "PSN".
 struct PsnParams {
   double selector_weight = 1.0;  // o0 = tanh(-w input2 + bias), o1 = tanh(w input2)
   double selector_bias = 1.0;
@@ -22,7 +22,7 @@ struct PsnParams {
 // Neuron outputs o0..o11, all starting at 0.
 struct PsnState {
   std::array<double, 12> o{};
-  // o11: the PSN output fed to the VRN and the motor neurons (reference §3.1).
+  // o11: the PSN output fed to the VRN and the motor neurons (docs/controller.md "PSN").
   double output() const { return o[11]; }
 };
 

@@ -13,7 +13,7 @@ void vrn_step(const VrnParams& p, VrnState& s, double psn_output, double steer) 
          std::tanh(p.hidden_weight * diff + p.hidden_bias),
          std::tanh(-p.hidden_weight * diff + p.hidden_bias)};
   s.v = v;
-  // The input layer reads the PSN output of this same step (reference §3).
+  // The input layer reads the PSN output of this same step (docs/controller.md "VRN").
   s.u = {std::tanh(p.input_weight * psn_output), std::tanh(p.steer_weight * steer)};
 }
 

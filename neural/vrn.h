@@ -1,11 +1,11 @@
-// Velocity regulating network, one half per leg (SPEC §2, reference §3.2).
+// Velocity regulating network, one half per leg (docs/controller.md "VRN").
 #pragma once
 
 #include <array>
 
 namespace multicpg::neural {
 
-// Weights of reference §3.2.
+// Weights of docs/controller.md "VRN".
 struct VrnParams {
   double input_weight = 1.75;  // u0 = tanh(1.75 o11)
   double steer_weight = 5.0;   // u1 = tanh(5 input3/4)

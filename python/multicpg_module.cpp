@@ -54,7 +54,8 @@ namespace {
 
 using Json = nlohmann::json;
 
-// A window's deviation E: the size of a wrapped yaw change (SPEC §6), 0..180 deg.
+// A window's deviation E, 0..180 deg: the size of a wrapped yaw change (docs/learning.md
+// "Deviation").
 constexpr Limits<double> kDeviationLimits{0.0, 180.0};
 // A trunk coordinate: well past any walk (the fastest gait covers about 5 cm/s).
 constexpr Limits<double> kCoordinateLimits{-1e6, 1e6};
@@ -1131,7 +1132,7 @@ PYBIND11_MODULE(_multicpg, m) {
 
   py::class_<mp::FaultArg>(
       m, "Fault",
-      "What breaks before controller step `step` of a run (SPEC §4; docs/faults.md).\n"
+      "What breaks before controller step `step` of a run (paper §4; docs/faults.md).\n"
       "kind: 'leg' (the whole leg holds its disabled posture, the paper's fault), 'locked' (a\n"
       "joint stuck at the angle it had, or at `value` rad), 'passive' (a joint's motor off),\n"
       "'weak' (the torque limit times `value` in (0, 1]), 'short' (the tibia shortened to\n"
@@ -1186,7 +1187,7 @@ PYBIND11_MODULE(_multicpg, m) {
                       }));
   py::class_<mp::RecoveryArg, mp::FaultArg>(
       m, "Recovery",
-      "What broke works again before controller step `step` (SPEC §5: when every leg works\n"
+      "What broke works again before controller step `step` (paper §2.3: when every leg works\n"
       "again the clients resynchronise). Arguments as for Fault; a value may be left out.")
       .def(py::init([](py::object legs, py::object step, py::object kind, py::object joint,
                        py::object value) {
@@ -1281,7 +1282,7 @@ PYBIND11_MODULE(_multicpg, m) {
       "A robot (hexapod, quadruped or octopod) and its MuJoCo model, shared read-only by every\n"
       "Simulation of it. tunnel=True adds the 3.0 m x 1.2 m corridor of paper §5. control_dt\n"
       "(s per controller step), physics_dt (MuJoCo's step; None: the largest <= 5 ms that divides\n"
-      "control_dt) and servo_gain (1/s; None: the reference's, scaled to control_dt) are the\n"
+      "control_dt) and servo_gain (1/s; None: lpzrobots', scaled to control_dt) are the\n"
       "CLI's --control-dt, --physics-dt, --servo-gain. Robots are equal (and hash equal) when "
       "made\n"
       "of the same name and options; a State of one restores into a Simulation of any equal one.")

@@ -170,7 +170,7 @@ std::string join(const std::vector<std::string>& words) {
   return out;
 }
 
-// Gait names of SPEC §3 / paper §2.1.
+// Gait names of paper §2.1 (docs/controller.md "Gaits").
 std::string gait_name(int period) {
   switch (period) {
     case 1:
@@ -280,7 +280,7 @@ FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
   header.insert(header.end(), legs.begin(), legs.end());
   Csv csv(header);
   // reference_deg: E_ref, the deviation of the combination accepted so far; change: the legs
-  // whose period differs from that combination (SPEC §6).
+  // whose period differs from that combination (docs/learning.md "Candidates").
   double reference = trials.front().deviation_deg;
   std::vector<int> accepted = trials.front().periods;
   for (const TrialPoint& trial : trials) {

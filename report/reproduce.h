@@ -1,6 +1,7 @@
-// `multicpg reproduce`: every experiment of SPEC §8 — figures, tables, videos and the tunnel —
-// into one folder with an index.html that sets each beside what the paper reports.
-// The stages themselves are in report/stages/ (one table, stage.h); this is the driver.
+// `multicpg reproduce`: every experiment of docs/learning.md "The paper's experiments" — figures,
+// tables, videos and the tunnel — into one folder with an index.html that sets each beside what the
+// paper reports. The stages themselves are in report/stages/ (one table, stage.h); this is the
+// driver.
 #pragma once
 
 #include <cstdint>

@@ -178,7 +178,7 @@ class Viewer {
   }
 
  private:
-  static constexpr std::size_t kFirstClient = 1;  // leg 0 (R1) is the master (SPEC §5)
+  static constexpr std::size_t kFirstClient = 1;  // leg 0 (R1) is the master (paper §2.2)
 
   static Viewer& of(GLFWwindow* w) { return *static_cast<Viewer*>(glfwGetWindowUserPointer(w)); }
 

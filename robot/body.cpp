@@ -7,7 +7,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// --- Trunk (reference §6.1 "Trunk", lpzrobots AmosII v2 at scale 1) ---
+// --- Trunk (docs/robots.md "Trunk", lpzrobots AmosII v2 at scale 1) ---
 constexpr double kTrunkLength = 0.43;         // hexapod, m
 constexpr double kTrunkWidth = 0.07;          // m
 constexpr double kTrunkHeight = 0.065;        // m
@@ -16,29 +16,29 @@ constexpr double kTrunkMass = kSimTrunkMass;  // both boxes, kg (density 3.0 / (
 constexpr double kTrunkDensity = kTrunkMass / kTrunkLength;  // kg per m of trunk length
 constexpr double kBackboneLimit = kPi / 4.0;                 // +-45 deg
 
-// --- Leg roots (reference §6.1 "Leg roots") ---
+// --- Leg roots (docs/robots.md "Leg roots") ---
 constexpr double kFrontLegX = 0.175;       // m
 constexpr double kLegDistFrontMid = 0.15;  // legdist2: front to middle, m
 constexpr double kLegDistMidHind = 0.19;   // legdist1: middle to hind, m
 constexpr double kRearOverhang = 0.05;     // trunk rear end behind the hind legs: 0.215 - 0.165
-// Quadruped AmosFour (reference §6.2): one 0.31 m box centred at the origin.
+// Quadruped AmosFour (docs/robots.md "Trunk"): one 0.31 m box centred at the origin.
 constexpr double kQuadFrontLegX = 0.09;
 constexpr double kQuadHindLegX = -0.10;
 
-// --- Masses (reference §6.1 "Mass budget") ---
+// --- Masses (docs/robots.md "Mass budget") ---
 // Total 5.758 / 2.2 x trunk mass = 7.8518 kg; the 4.8518 kg of legs are shared as
 // shoulder = coxa = femur = tibia = 4.8518 / 24 x 19/20 and foot = 4.8518 / 6 / 20.
 constexpr double kSegmentMass = kSimSegmentMass;  // kg
 constexpr double kFootMass = kSimFootMass;        // kg
 
-// --- Segments (reference §6.1 "Segments": lpzrobots Capsule(radius, cylinder length)) ---
+// --- Segments (docs/robots.md "Segments": lpzrobots Capsule(radius, cylinder length)) ---
 constexpr Capsule kShoulder{0.0129, 0.045, kSegmentMass};
 constexpr Capsule kCoxa{0.0172, 0.035, kSegmentMass};
 constexpr Capsule kFemur{0.0129, 0.06, kSegmentMass};
 constexpr Capsule kTibia{0.013, 0.087, kSegmentMass};
 constexpr Capsule kFoot{0.015, 0.013, kFootMass};
 
-// --- Servos (reference §6.1 "Servos") ---
+// --- Servos (docs/robots.md "Servos") ---
 constexpr double kMaxVelocity = kSimServoSpeed;    // 10.47 rad/s
 constexpr double kServoGain = kMaxVelocity / 2.0;  // K = 5.2366 1/s (at the 0.1 s step)
 // coxaPower = 10 (1.962 / (0.035 2.2)) 0.035 3.0 = 26.75 N m; backPower is 30/10 of it. The
@@ -46,16 +46,16 @@ constexpr double kServoGain = kMaxVelocity / 2.0;  // K = 5.2366 1/s (at the 0.1
 constexpr double kLegPower = kSimServoTorque;
 constexpr double kBackPower = 3.0 * kLegPower;  // 80.26 N m
 constexpr double kFtiDamp = 0.01;
-// Gearbox rotor inertia reflected to the joint (the reference's ODE motors are constraints and
+// Gearbox rotor inertia reflected to the joint (lpzrobots' ODE motors are constraints and
 // need none): a geared hobby servo (~200:1, rotor ~2.5e-7 kg m^2) reflects about 0.01 kg m^2.
 // It also keeps the explicit velocity loop stable at the physics step: Kv h / I < 2 for the
 // lightest joint (FTi, I = 0.011 kg m^2; docs/robots.md).
 constexpr double kServoArmature = 0.01;  // kg m^2
 
-// --- Foot (reference §6.1 "Foot spring") ---
+// --- Foot (docs/robots.md "Foot spring") ---
 // footPower = (350 0.08 / 2.2) 3.0 / 0.08 = 477.3 N/m, KD 0.05, stops 2 mm apart, preload 0.08 m.
 constexpr FootSpring kFootSpring{(350.0 * 0.08 / 2.2) * kTrunkMass / 0.08, 0.05, 0.002, 0.08};
-constexpr double kContactSensorRadius = 0.01515;  // reference §6.1 "Foot contact sensor"
+constexpr double kContactSensorRadius = 0.01515;  // docs/robots.md "Sensors, start, settling"
 // Passive coupling of each joint (paper §5: "a passive coupling is installed at each joint"): a
 // Kelvin-Voigt element whose damping is its stiffness times this relaxation time, a rubber-like
 // loss (docs/robots.md "Body parameters": the walk hardly depends on it).
@@ -125,7 +125,7 @@ RobotBody amos_body(RobotKind kind) {
   return b;
 }
 
-// AmosFour (reference §6.2): the hexapod's centre box alone, no backbone, two leg pairs.
+// AmosFour (docs/robots.md "Trunk"): the hexapod's centre box alone, no backbone, two leg pairs.
 RobotBody quadruped_body() {
   RobotBody b = common_body(RobotKind::quadruped);
   const double length = kTrunkLength - kFrontLength;

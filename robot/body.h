@@ -1,8 +1,8 @@
-// The physical description of each robot (SPEC §7, reference §6): trunk boxes, leg roots,
-// segment capsules, masses, servos, feet and materials. One description per morphology; the MJCF
-// (robot/mjcf.h) and the simulation (sim/) are made from it.
+// The physical description of each robot (docs/robots.md "Geometry and masses"): trunk boxes, leg
+// roots, segment capsules, masses, servos, feet and materials. One description per morphology; the
+// MJCF (robot/mjcf.h) and the simulation (sim/) are made from it.
 //
-// Frame: x forward, y left, z up; origin at the trunk centre of the hexapod (reference §6.1).
+// Frame: x forward, y left, z up; origin at the trunk centre of the hexapod.
 #pragma once
 
 #include <string>
@@ -29,13 +29,13 @@ struct Capsule {
   double mass;    // kg
 };
 
-// The segments of one leg, trunk outward (reference §6.1 "Segments"). The shoulder is rigidly
+// The segments of one leg, trunk outward (docs/robots.md "Segments"). The shoulder is rigidly
 // fixed to the trunk; the foot slides along the tibia on a spring.
 struct LegSegments {
   Capsule shoulder, coxa, femur, tibia, foot;
 };
 
-// A compliant velocity servo (reference §6.1 "Servos"): commanded velocity
+// A compliant velocity servo (docs/robots.md "Servos"): commanded velocity
 // gain * (target - angle), capped at max_velocity; torque capped at
 // power * tanh(|2 error / (max - min)| + damp).
 struct ServoSpec {
@@ -49,7 +49,7 @@ struct ServoSpec {
   double loop_gain;
 };
 
-// The sprung foot (reference §6.1 "Foot spring"): a slider along the tibia, pushed outward
+// The sprung foot (docs/robots.md "Foot spring"): a slider along the tibia, pushed outward
 // against its stop by a preloaded spring.
 struct FootSpring {
   double stiffness;       // N/m
@@ -93,9 +93,9 @@ struct RobotBody {
   double coupling_damping;
 };
 
-// The description of a robot as the paper's simulator has it: the hexapod AMOSII v2 (reference
-// §6.1), the quadruped AmosFour (§6.2) or the octopod (the hexapod's leg design, four legs a
-// side).
+// The description of a robot as the paper's simulator has it: the hexapod AMOSII v2, the quadruped
+// AmosFour (docs/robots.md "Geometry and masses") or the octopod (the hexapod's leg design, four
+// legs a side).
 const RobotBody& robot_body(RobotKind kind);
 
 // The same robot with the physical parameters `params` (validate()d): masses, friction, slip,

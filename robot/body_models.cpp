@@ -8,10 +8,11 @@ namespace multicpg::robot {
 namespace {
 
 // --- The real AMOSII (paper §5): its documented values, and the calibrated ones ---
-// Reference §6.1 "Mass budget": lpzrobots scales the real robot's 5.758 kg with its 2.2 kg trunk.
+// docs/robots.md "Mass budget": lpzrobots scales the real robot's 5.758 kg with its 2.2 kg trunk.
 constexpr double kRealTotalMass = 5.758;  // kg
 constexpr double kRealTrunkMass = 2.2;    // kg
-// Reference §4.4: the real-robot controller S2 lifts the body by 5 deg (lift_body_up).
+// docs/controller.md "Motor mapping and joint windows": the authors' real-robot controller lifts
+// the body by 5 deg (lift_body_up).
 constexpr double kRealLiftBody = 5.0;  // deg
 // Calibrated against paper §5 Table 1 before learning (`multicpg calibrate --budget 160`, the
 // best of its 160 candidates whose fitted runs all ended at a wall, d0038; docs/fidelity.md
@@ -39,8 +40,8 @@ constexpr Source kSources[] = {
      "docs/robots.md Body parameters (disabled leg: TC 0, CTr 0.7, FTi -0.7)", kCalibrated},
     {"leg_postures", "", "docs/robots.md Body parameters (every leg alike)", kAsPaperSim},
     {"lift_body", "deg",
-     "docs/robots.md Body parameters (the simulation controller S1 does not lift)",
-     "docs/robots.md Body parameters (real-robot controller S2: lift_body_up 5 deg)"},
+     "docs/robots.md Body parameters (the authors' simulation controller does not lift)",
+     "docs/robots.md Body parameters (the authors' real-robot controller: lift_body_up 5 deg)"},
     {"total_mass", "kg", "docs/robots.md Geometry and masses (5.758 / 2.2 x 3.0 kg)",
      "docs/robots.md Geometry and masses (the real robot: 5.758 kg)"},
     {"trunk_mass", "kg", "docs/robots.md Geometry and masses (3.0 kg)",

@@ -13,7 +13,8 @@ namespace multicpg::robot {
 enum class BodyModel {
   // The paper's simulator, lpzrobots AMOSII v2 (docs/robots.md): the default everywhere.
   paper_sim,
-  // The real AMOSII of paper §5. For now its documented values (mass, trunk, S2's body lift,
+  // The real AMOSII of paper §5. For now its documented values (mass, trunk, the authors'
+  // real-robot body lift,
   // lpzrobots' slip) over paper-sim: the starting point a calibration against Table 1 replaces.
   real,
 };
@@ -29,7 +30,7 @@ BodyParams body_params(BodyModel model);
 // One line: what the model is.
 std::string_view describe(BodyModel model);
 // Where the model's value of a BodyParams key ("total_mass", "disabled_posture") comes from:
-// a paper or reference section, or a measurement in docs/.
+// a paper or docs/ section, or a measurement in docs/.
 std::string_view value_source(BodyModel model, std::string_view key);
 // The unit of a BodyParams key ("kg"; "" for none).
 std::string_view value_unit(std::string_view key);

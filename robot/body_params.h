@@ -19,9 +19,9 @@
 
 namespace multicpg::robot {
 
-// Constant motor commands a disabled leg's joints hold, m in [-1, 1] (SPEC §4: + = forward,
-// elevation, extension). The default is the reference's: TC 0, CTr 0.7, FTi -0.7 (reference
-// §4.4; paper §4 "constant values").
+// Constant motor commands a disabled leg's joints hold, m in [-1, 1] (+ = forward,
+// elevation, extension). The default is the authors': TC 0, CTr 0.7, FTi -0.7 (paper §4
+// "constant values"; docs/controller.md "Disabled legs").
 struct LegPosture {
   double tc = 0.0;
   double ctr = 0.7;
@@ -30,8 +30,8 @@ struct LegPosture {
 inline constexpr LegPosture kReferenceDisabledPosture{};
 
 // One leg held in another posture than the others when disabled. An unset joint keeps the
-// all-legs value (the real-robot test, S2 (docs/robots.md Body parameters), changes only R3's FTi
-// to -0.55).
+// all-legs value (the authors' real-robot test (docs/robots.md Body parameters), changes only R3's
+// FTi to -0.55).
 struct LegPostureOverride {
   std::string leg;  // "R3"
   std::optional<double> tc;
@@ -47,14 +47,15 @@ inline constexpr double kSimFootMass = 0.040432;    // kg
 inline constexpr int kHexapodLegs = 6;
 inline constexpr double kSimLegsMass = kHexapodLegs * (4.0 * kSimSegmentMass + kSimFootMass);
 inline constexpr double kSimTotalMass = kSimTrunkMass + kSimLegsMass;  // 7.8518 kg
-// Reference §6.1 "Materials": mu = roughness product 3.0 x 0.8 for every robot-ground pair.
+// docs/robots.md "Contacts and materials": mu = roughness product 3.0 x 0.8 for every robot-ground
+// pair.
 inline constexpr double kSimFriction = 2.4;
 // MuJoCo's own tangential creep at a foot of the default hexapod, m/s per N of tangential force
 // on one contact, at impratio 1 (docs/robots.md "Body parameters": 0.00510 for pushes of 3-24 N,
 // tests/test_body.cpp). The slip parameter is mapped onto MuJoCo as impratio = this / slip, so
 // this value is today's contact, unchanged.
 inline constexpr double kMujocoFootSlip = 0.0051;  // m/s per N
-// Reference §6.1 "Servos": coxaPower = 10 (1.962 / (0.035 2.2)) 0.035 3.0 and
+// docs/robots.md "Servos": coxaPower = 10 (1.962 / (0.035 2.2)) 0.035 3.0 and
 // maxVel = 1.7 1.961 pi.
 inline constexpr double kSimServoTorque = 10.0 * (1.962 / (0.035 * 2.2)) * 0.035 * 3.0;  // N m
 inline constexpr double kSimServoSpeed = 1.7 * 1.961 * std::numbers::pi;                 // rad/s
@@ -69,7 +70,7 @@ inline constexpr Limits<double> kTrunkMassLimits{1.5, 4.0};
 // that the sprung foot's 38 N preload drives it through its stop (measured: legs of 2.5 kg
 // blow up in the first physics step, docs/robots.md "Body parameters").
 inline constexpr double kMinLegsMass = 3.0;  // kg
-// Coulomb friction: rubber on a smooth floor (~0.5) to the reference's 2.4 and a little past.
+// Coulomb friction: rubber on a smooth floor (~0.5) to lpzrobots' 2.4 and a little past.
 inline constexpr Limits<double> kFrictionLimits{0.2, 3.0};
 // Tangential slip, m/s per N: from 10x harder than MuJoCo's own to 5x lpzrobots' 0.01.
 inline constexpr Limits<double> kSlipLimits{0.0005, 0.05};
@@ -84,7 +85,7 @@ inline constexpr Limits<double> kRollingFrictionLimits{0.0, 0.005};
 inline constexpr Limits<double> kServoTorqueLimits{2.0, 30.0};
 // Servo no-load speed: 3 rad/s to past the simulator's 10.47 rad/s.
 inline constexpr Limits<double> kServoSpeedLimits{3.0, 12.0};
-// Body lift (docs/robots.md Body parameters, S2: 5 deg) either way.
+// Body lift (docs/robots.md Body parameters; the authors' real robot: 5 deg) either way.
 inline constexpr Limits<double> kLiftBodyLimits{-10.0, 15.0};
 // Disabled-leg posture: any command a joint takes.
 inline constexpr Limits<double> kPostureLimits{-1.0, 1.0};
@@ -94,7 +95,7 @@ struct BodyParams {
   LegPosture disabled_posture = kReferenceDisabledPosture;
   std::vector<LegPostureOverride> leg_postures;
   // Degrees taken off the CTr window and added to the FTi window of every walking leg, so the
-  // legs push the body up (docs/robots.md Body parameters, S2's lift_body_up: 5).
+  // legs push the body up (docs/robots.md Body parameters; the authors' lift_body_up: 5).
   double lift_body = 0.0;
   // Hexapod masses (kg); the legs share total - trunk as the simulator does. Other robots keep
   // the trunk's density and the per-leg mass.

@@ -10,8 +10,8 @@ constexpr double deg(double d) {
   return d * std::numbers::pi / 180.0;
 }
 
-// Reference §4.5: the servo maps m linearly onto its limits, so an angle is half the range
-// times m plus the centre of the range.
+// docs/robots.md "Joint angles": the servo maps m linearly onto its limits, so an angle is half the
+// range times m plus the centre of the range.
 constexpr double kTcOuterHalfRange = deg(70.0);   // front and hind legs
 constexpr double kTcMiddleHalfRange = deg(60.0);  // middle legs
 constexpr double kCtrHalfRange = deg(75.0);

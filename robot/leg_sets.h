@@ -13,7 +13,7 @@
 
 namespace multicpg::robot {
 
-// Periods that give a gait (SPEC §1: 1 = stop, 4 tripod, 5 tetrapod, 6 transition, 8, 9 waves).
+// Periods that give a gait (paper §2.1: 1 = stop, 4 tripod, 5 tetrapod, 6 transition, 8, 9 waves).
 inline constexpr std::array<int, 6> kGaitPeriods{1, 4, 5, 6, 8, 9};
 bool is_gait_period(int period);
 // The tripod (period 4): every leg's period unless told otherwise (paper Table 2 C0).

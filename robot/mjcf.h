@@ -1,4 +1,4 @@
-// MJCF text of a robot on flat ground (SPEC §7), made from its RobotBody. The file is plain
+// MJCF text of a robot on flat ground (docs/robots.md), made from its RobotBody. The file is plain
 // MuJoCo 2.2 MJCF: it loads in MuJoCo's own tools (mujoco-testxml, mujoco-simulate).
 //
 // Names, so that tools can find a leg's parts: bodies and geoms "trunk", "front_trunk",
@@ -19,7 +19,7 @@
 
 namespace multicpg::robot {
 
-// The world around the robot. The corridor of paper §5 (SPEC §8) is two walls parallel to x,
+// The world around the robot. The corridor of paper §5 (Table 1) is two walls parallel to x,
 // from x = 0 (the robot starts at its entrance) to x = tunnel_length, tunnel_width apart.
 struct Scene {
   bool tunnel = false;

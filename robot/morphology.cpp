@@ -8,8 +8,8 @@ namespace multicpg::robot {
 namespace {
 
 LegType leg_type(RobotKind kind, int position, int per_side) {
-  // The quadruped AmosFour is AMOSII without its front legs (reference §6.2): its front pair
-  // uses the middle-leg design and its hind pair the hind-leg design.
+  // The quadruped AmosFour is AMOSII without its front legs (docs/robots.md "Trunk"): its front
+  // pair uses the middle-leg design and its hind pair the hind-leg design.
   if (kind == RobotKind::quadruped) return position == 0 ? LegType::middle : LegType::hind;
   if (position == 0) return LegType::front;
   return position == per_side - 1 ? LegType::hind : LegType::middle;

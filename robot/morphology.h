@@ -1,4 +1,5 @@
-// Leg layout of the three robots (SPEC §0): names, sides and positions front to hind.
+// Leg layout of the three robots (docs/controller.md "Legs, joints and the controller step"):
+// names, sides and positions front to hind.
 #pragma once
 
 #include <array>
@@ -17,9 +18,11 @@ constexpr std::size_t robot_index(RobotKind kind) {
   return static_cast<std::size_t>(kind);
 }
 enum class Side { right, left };
-// Which AMOSII leg design a leg uses; decides its TC window and limit (reference §4.4, §6).
+// Which AMOSII leg design a leg uses; decides its TC window and limit (docs/controller.md "Motor
+// mapping and joint windows", docs/robots.md "Joint limits").
 enum class LegType { front, middle, hind };
-// Joints of a leg, in the order used everywhere (SPEC §0).
+// Joints of a leg, in the order used everywhere (docs/controller.md "Legs, joints and the
+// controller step").
 enum class Joint { TC, CTr, FTi };
 inline constexpr std::size_t kJointsPerLeg = 3;
 inline constexpr std::array<Joint, kJointsPerLeg> kJoints{Joint::TC, Joint::CTr, Joint::FTi};

@@ -25,7 +25,7 @@ struct JointMap {
 };
 
 struct LegMap {
-  std::string name;  // R1..Rn, L1..Ln (SPEC §0)
+  std::string name;  // R1..Rn, L1..Ln (paper §4.1)
   Side side;
   int position;                                // 0 = front
   std::array<JointMap, kJointsPerLeg> joints;  // TC, CTr, FTi

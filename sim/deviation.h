@@ -1,7 +1,7 @@
-// What one measuring window says about the robot's course (SPEC §6): the yaw change of
-// the paper's criterion, and the path angle of its Table 1 (the trunk's displacement against the
-// course: the heading at the window's start, or the line a steering reflex keeps), which sees a
-// sideways crab that the yaw change cannot.
+// What one measuring window says about the robot's course (docs/learning.md "Deviation"): the yaw
+// change of the paper's criterion, and the path angle of its Table 1 (the trunk's displacement
+// against the course: the heading at the window's start, or the line a steering reflex keeps),
+// which sees a sideways crab that the yaw change cannot.
 #pragma once
 
 #include <cmath>
@@ -20,7 +20,7 @@ struct Pose2 {
 };
 
 struct WindowMeasure {
-  double yaw_deg = 0.0;    // wrap(yaw(end) - yaw(start)), + = left turn (SPEC §6)
+  double yaw_deg = 0.0;    // wrap(yaw(end) - yaw(start)), + = left turn (paper §4.1)
   double path_deg = 0.0;   // atan2(lateral, forward) of the displacement, + = left (Table 1)
   double forward_m = 0.0;  // displacement along the course (see measure_window)
   double lateral_m = 0.0;  // and to its left

@@ -66,11 +66,11 @@ FaultTimeline in_force_after(const robot::Morphology& morph, const FaultTimeline
 // partly changed.
 void take_fault(const robot::Morphology& morph, const Fault& fault, FaultTimeline& in_force);
 
-// A run's faults as they come (SPEC §4): its timeline, how much of it has come, and what is in
-// force now. The one home of fault bookkeeping: sim::Stepper applies a run's faults through it
-// (and the learner's fake walker likewise), and the learner reads from it what came. A leg fault
-// is the controller's (the leg holds its posture, neural::set_disabled); every other kind is the
-// physics' (sim/fault_effects.h), which the stepper applies to what came.
+// A run's faults as they come (docs/faults.md "When faults strike"): its timeline, how much of it
+// has come, and what is in force now. The one home of fault bookkeeping: sim::Stepper applies a
+// run's faults through it (and the learner's fake walker likewise), and the learner reads from it
+// what came. A leg fault is the controller's (the leg holds its posture, neural::set_disabled);
+// every other kind is the physics' (sim/fault_effects.h), which the stepper applies to what came.
 class FaultSchedule {
  public:
   // Throws BadInput (validate's message) for a bad timeline.

@@ -1,4 +1,4 @@
-// What can break on a walking robot, and when (SPEC §4; docs/faults.md). A fault strikes some legs
+// What can break on a walking robot, and when (paper §4; docs/faults.md). A fault strikes some legs
 // (or one joint of each) or the yaw sensor at a controller step, and may be recovered later. The
 // kind is a variant: a whole leg holding its disabled posture (the paper's malfunction), a
 // locked, passive or weak joint, a shortened tibia, a slippery foot, a drifting or noisy yaw
@@ -38,7 +38,8 @@ struct ValueSpec {
   bool required;  // false: the kind may be written without a value
 };
 
-// The paper's malfunction: the leg's three joints hold the disabled posture (SPEC §4).
+// The paper's malfunction: the leg's three joints hold the disabled posture (docs/controller.md
+// "Disabled legs").
 struct LegFault {
   static constexpr std::string_view kName = "leg";
   static constexpr Strikes kStrikes = Strikes::legs;
@@ -50,8 +51,8 @@ struct LegFault {
 struct LockedJoint {
   static constexpr std::string_view kName = "locked";
   static constexpr Strikes kStrikes = Strikes::joints;
-  // Within the widest joint window (reference §6.1: FTi -130..-20 deg, TC up to +-70 deg);
-  // validate checks the joint's own limits.
+  // Within the widest joint window (docs/robots.md "Joint limits": FTi -130..-20 deg, TC up to
+  // +-70 deg); validate checks the joint's own limits.
   static constexpr ValueSpec kValue{"angle", "deg", {-180.0, 180.0}, false};
   std::optional<double> value;  // the lock angle, deg
   bool operator==(const LockedJoint&) const = default;
@@ -117,7 +118,8 @@ struct ImuNoise {
 using Malfunction = std::variant<LegFault, LockedJoint, PassiveJoint, WeakMotor, ShortTibia,
                                  SlipperyFoot, ImuDrift, ImuNoise>;
 
-// Malfunctions fail or recover before controller step `step` of a run (SPEC §4: at any step).
+// Malfunctions fail or recover before controller step `step` of a run (docs/faults.md "When
+// faults strike").
 struct Fault {
   long step = 0;
   std::vector<std::size_t> legs;  // sorted leg indices; empty for a sensor fault

@@ -98,7 +98,7 @@ robot::RobotKind layout_of(std::size_t legs, const Reader& r) {
   }
   r.fail("legs", std::to_string(legs) +
                      " legs; a robot file has 4, 6 or 8 (the quadruped's, hexapod's or octopod's "
-                     "layout, SPEC §0)");
+                     "layout, docs/controller.md)");
 }
 
 // The joints of the map (legs, backbone) that the model `m` has but drives with no actuator.

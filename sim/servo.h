@@ -1,12 +1,12 @@
-// The compliant velocity servo of the lpzrobots AMOSII model (reference §6.1 "Servos",
+// The compliant velocity servo of the lpzrobots AMOSII model (docs/robots.md "Servos",
 // lpzrobots OneAxisServoVel), for one physics step.
 //
-// The reference drives an ODE velocity motor: a constraint that reaches the commanded velocity
+// lpzrobots drives an ODE velocity motor: a constraint that reaches the commanded velocity
 // unless that needs more than fmax, and then pushes with fmax. MuJoCo has no such constraint, so
 // the servo is a torque from a velocity loop, clamped to fmax: Kv (commanded - actual velocity),
 // Kv = ServoSpec::loop_gain (docs/robots.md).
 //
-// The reference's gain K = maxVel / 2 belongs to its 0.1 s controller step; SimOptions scales it
+// lpzrobots' gain K = maxVel / 2 belongs to its 0.1 s controller step; SimOptions scales it
 // to the controller step used (sim/sim.h).
 #pragma once
 
@@ -14,7 +14,7 @@
 
 namespace multicpg::sim {
 
-// What one servo is: the reference's constants (gain already scaled to the controller step)
+// What one servo is: lpzrobots' constants (gain already scaled to the controller step)
 // and its joint range.
 struct ServoModel {
   robot::ServoSpec spec;

@@ -85,8 +85,9 @@ const char* warning_name(int warning) {
   return "warning";
 }
 
-// The start pose: every leg in mid-stance (SPEC §4 windows): TC and FTi at the centre of their
-// windows (pre-motor signal 0), CTr fully depressed (-1, the stance value of reference §4.2).
+// The start pose: every leg in mid-stance (docs/controller.md "Motor mapping and joint windows"):
+// TC and FTi at the centre of their windows (pre-motor signal 0), CTr fully depressed (-1, the
+// stance value of docs/controller.md "Post-delay shaping").
 std::vector<LegAngles> start_pose(const neural::ControllerModel& controller,
                                   const robot::RobotFile& map) {
   std::vector<LegAngles> pose;

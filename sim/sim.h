@@ -1,4 +1,4 @@
-// The simulated robot: a MuJoCo model driven by the neural controller (SPEC §7).
+// The simulated robot: a MuJoCo model driven by the neural controller (docs/robots.md).
 //
 // SimModel is what the simulation is (the mjModel, index tables, time steps, the controller's
 // model): immutable after make_sim_model and shareable read-only by any number of threads.
@@ -26,15 +26,15 @@
 
 namespace multicpg::sim {
 
-// One controller step of simulated time: 0.037 s, the paper's 27 Hz (SPEC §0).
+// One controller step of simulated time: 0.037 s, the paper's 27 Hz (paper §4).
 inline constexpr double kDefaultControlDt = 0.037;
-// Largest default physics step (SPEC §7).
+// Largest default physics step (docs/robots.md "Integrator and time steps").
 inline constexpr double kMaxDefaultPhysicsDt = 0.005;
 // How close control_dt / physics_dt must be to a whole number (relative).
 inline constexpr double kStepRatioTolerance = 1e-6;
 // A foot touches the ground when its touch sensor reads more than this normal force.
 inline constexpr double kContactThresholdN = 0.5;
-// The controller step of the reference simulation (reference §7), at which its servo gain
+// The controller step of the authors' simulation (docs/robots.md "Servos"), at which its servo gain
 // K = maxVel / 2 was set.
 inline constexpr double kReferenceControlDt = 0.1;
 
@@ -64,8 +64,8 @@ inline constexpr Limits<double> kTunnelWidthLimits{0.1, 10.0};
 struct SimOptions {
   double control_dt = kDefaultControlDt;  // s
   double physics_dt = 0.0;                // s; 0 = default_physics_dt(control_dt)
-  // Servo gain K (1/s). 0 = the reference's K scaled by kReferenceControlDt / control_dt, so a
-  // servo closes the same share of its error per controller step as in the reference
+  // Servo gain K (1/s). 0 = lpzrobots' K scaled by kReferenceControlDt / control_dt, so a
+  // servo closes the same share of its error per controller step as in lpzrobots
   // (14.15 1/s at 0.037 s; docs/robots.md).
   double servo_gain = 0.0;
   robot::Scene scene;

@@ -1,6 +1,6 @@
 // Walking a simulated robot for a number of controller steps with given CPG periods and a
-// fault timeline, measuring distance, speed and heading deviation (SPEC §6). Used by
-// `multicpg walk`; rendering and figures reuse it. It steps through sim::Stepper.
+// fault timeline, measuring distance, speed and heading deviation (docs/learning.md "Deviation").
+// Used by `multicpg walk`; rendering and figures reuse it. It steps through sim::Stepper.
 #pragma once
 
 #include <cstddef>
@@ -14,7 +14,7 @@
 
 namespace multicpg::sim {
 
-// SPEC §6: deviation is measured over windows of 400 controller steps.
+// Paper §4: deviation is measured over windows of 400 controller steps.
 inline constexpr long kDefaultWindow = 400;
 
 // Documented ranges of step counts: a run of at least one step, settles and warm-ups of none.
@@ -25,7 +25,7 @@ inline constexpr Limits<long> kStepLimits{0, kMaxSteps};
 struct WalkSpec {
   StartSpec start;       // periods and warm-up (default: a running, locked controller)
   FaultTimeline faults;  // legs that fail or recover, and when
-  // Steps walked before measuring (SPEC §6: settling steps are not counted).
+  // Steps walked before measuring (docs/learning.md "Deviation": not counted).
   long settle = 0;
   long steps = 1200;             // measured steps, after the settling ones
   long window = kDefaultWindow;  // steps per deviation window
@@ -45,7 +45,7 @@ struct WalkResult {
   double forward_m = 0.0;   // its component along the heading at the start of measuring
   double lateral_m = 0.0;   // its component to the left of that heading
   double speed_m_s = 0.0;   // distance / duration
-  // wrap(yaw(end) - yaw(start)) of each complete window; positive = left turn (SPEC §6).
+  // wrap(yaw(end) - yaw(start)) of each complete window; positive = left turn.
   std::vector<double> window_deviations_deg;
   // Yaw change and Table 1 path angle of each complete window (sim/deviation.h).
   std::vector<WindowMeasure> windows;
@@ -66,14 +66,14 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec);
 
 // The state a run starts from before its warm-up: make_sim_state, then `periods` (one per leg;
 // empty = all 4). Equal periods keep the clients synchronised; unequal ones set each leg's
-// period and free the clients (SPEC §5). Throws BadInput for a wrong number of periods or a
+// period and free the clients (paper §2.3). Throws BadInput for a wrong number of periods or a
 // period outside 1-9.
 SimState start_walk_state(const SimModel& model, const std::vector<int>& periods);
 
 // Runs the neural controller alone for `steps` steps: the robot does not move.
 void warm_up_controller(const SimModel& model, SimState& state, long steps);
 
-// Deviations of consecutive complete windows of a yaw trace from row `first` (SPEC §6).
+// Deviations of consecutive complete windows of a yaw trace from row `first`.
 std::vector<double> window_deviations(const std::vector<double>& yaw_deg, std::size_t first,
                                       long window);
 

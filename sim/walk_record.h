@@ -1,5 +1,5 @@
-// The per-step sensor record of a run (SPEC §7: trunk pose and yaw, every joint's command, target
-// and actual angle, foot contact per leg).
+// The per-step sensor record of a run (docs/robots.md "Sensors, start, settling": trunk pose and
+// yaw, every joint's command, target and actual angle, foot contact per leg).
 #pragma once
 
 #include <cstddef>
@@ -16,7 +16,7 @@ struct WalkRecord {
   std::vector<double> x, y, z;  // trunk position, m
   std::vector<double> yaw_deg;  // front trunk yaw, (-180, 180]
   // Only when joints are recorded, indexed [row * legs * 3 + leg * 3 + joint] (TC, CTr, FTi):
-  std::vector<double> command;         // motor command m in [-1, 1] (SPEC §4)
+  std::vector<double> command;         // motor command m in [-1, 1] (docs/controller.md)
   std::vector<double> target;          // commanded joint angle, rad
   std::vector<double> actual;          // joint angle, rad
   std::vector<unsigned char> contact;  // [row * legs + leg], 1 = foot touches the ground

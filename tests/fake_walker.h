@@ -15,7 +15,7 @@ namespace multicpg::learning {
 
 // Yaw rate = gain * (left thrust - right thrust), thrust of a working leg = 1/period, of a
 // disabled leg 0. Hexapod, R1 disabled, all 4: 0.25 * 0.38 * 400 = 38 deg per window (Fig. 8:
-// 37.86). While clients are synchronised every leg moves with the master's period (SPEC §5).
+// 37.86). While clients are synchronised every leg moves with the master's period (paper §2.3).
 class FakeWalker : public Walker {
  public:
   static constexpr double kGainDegPerStep = 0.38;

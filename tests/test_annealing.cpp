@@ -1,4 +1,5 @@
-// Simulated annealing over leg periods (SPEC §6, paper Table 2 and the Fig. 8 walk-through).
+// Simulated annealing over leg periods (paper Table 2 and the Fig. 8 walk-through; docs/learning.md
+// "The search").
 #include <gtest/gtest.h>
 
 #include <cmath>

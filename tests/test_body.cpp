@@ -1,5 +1,5 @@
 // The physical parameters of the body (robot/body_params.h) and the named models
-// (robot/body_models.h) on the real MuJoCo model: masses, the slip measured as the reference
+// (robot/body_models.h) on the real MuJoCo model: masses, the slip measured as lpzrobots
 // states it (m/s per N on one contact), compliant joints, torsional and rolling friction, ranges.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// The online compensation loop (SPEC §5-§6) on a fake walker whose yaw rate is a fixed function
-// of the periods of its working legs, plus the settle-time claim behind the default.
+// The online compensation loop (docs/learning.md "Online compensation") on a fake walker whose yaw
+// rate is a fixed function of the periods of its working legs, plus the settle-time claim behind
+// the default.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,7 +17,7 @@ namespace {
 
 using robot::RobotKind;
 
-// The paper's algorithm (SPEC §6); robust mode has its own tests below.
+// The paper's algorithm (§3); robust mode has its own tests below.
 CompensationOptions options_for(std::uint64_t seed) {
   CompensationOptions o;
   o.mode = Mode::paper;

@@ -1,5 +1,5 @@
-// The multi-CPG controller: gaits from the delay lines, synchronisation, disabled legs (SPEC
-// §3-§5).
+// The multi-CPG controller: gaits from the delay lines, synchronisation, disabled legs
+// (docs/controller.md §3-§5).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,7 +69,8 @@ TEST(Gait, QuadrupedPeriodFourIsATrot) {
 }
 
 TEST(Gait, SwingOnsetsMatchReferenceTable) {
-  // Reference §4.3: swing onsets as fractions of the cycle after R3 (tau = 18, tau_L = 90).
+  // docs/controller.md "Gaits": swing onsets as fractions of the cycle after R3 (tau = 18, tau_L =
+  // 90).
   const std::map<int, std::vector<double>> onsets{{5, {0.655, 0.327, 0.0, 0.291, 0.964, 0.636}},
                                                   {6, {0.462, 0.231, 0.0, 0.615, 0.385, 0.154}},
                                                   {8, {0.265, 0.132, 0.0, 0.926, 0.794, 0.662}},
@@ -262,7 +263,7 @@ TEST(Controller, CommandsStayInTheirWindows) {
     neural::controller_step(model, state);
     if (t < kStartup + longest_delay) continue;
     for (const auto& leg : state.legs) {
-      EXPECT_GE(leg.command.ctr, 0.5985 - 1e-9);  // reference §4.4: CTr 45..75 deg
+      EXPECT_GE(leg.command.ctr, 0.5985 - 1e-9);  // CTr 45..75 deg (docs/controller.md)
       EXPECT_LE(leg.command.ctr, 0.9975 + 1e-9);
       EXPECT_GE(leg.command.fti, -1.0024 - 1e-9);
       EXPECT_LE(leg.command.fti, -0.8204 + 1e-9);

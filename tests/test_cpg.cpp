@@ -1,4 +1,4 @@
-// The chaotic CPG against the reference oracles (SPEC §1, reference §1.3).
+// The chaotic CPG against its oracles (docs/controller.md "Converged values").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,7 +24,7 @@ CpgState converged(int period, long steps = kConvergeSteps) {
 
 struct Oracle {
   int period;
-  double mu_plus_one;  // reference §1.3 "final cl"
+  double mu_plus_one;  // mu + 1, the authors' "cl"
 };
 
 class CpgOracle : public ::testing::TestWithParam<Oracle> {};
@@ -40,7 +40,8 @@ INSTANTIATE_TEST_SUITE_P(Periods, CpgOracle,
                                            Oracle{9, 0.021984}));
 
 TEST(Cpg, PeriodFourOrbitMatchesReference) {
-  // Reference §1.3: x1 orbit 0.6534, 0.0000, 0.2333, 0.0595 and x2 0.9679, 0.3746, 0.9781, 0.9056.
+  // docs/controller.md "Converged values": x1 orbit 0.6534, 0.0000, 0.2333, 0.0595 and x2 0.9679,
+  // 0.3746, 0.9781, 0.9056.
   const std::vector<double> x1{0.6534, 0.0000, 0.2333, 0.0595};
   const std::vector<double> x2{0.9679, 0.3746, 0.9781, 0.9056};
   CpgParams params;
@@ -120,7 +121,7 @@ double largest_lyapunov(long steps, long transient) {
 TEST(Cpg, UncontrolledIsChaotic) {
   const double lambda = largest_lyapunov(100000, 1000);
   EXPECT_GT(lambda, 0.2);
-  EXPECT_LT(lambda, 0.4);  // SPEC §1: about +0.30 per step
+  EXPECT_LT(lambda, 0.4);  // about +0.30 per step (docs/controller.md "CPG")
 
   // The library's uncontrolled mode follows the same map: no orbit of period <= 9.
   CpgParams params;

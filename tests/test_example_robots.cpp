@@ -20,7 +20,8 @@ namespace {
 using namespace multicpg::testing;
 using nlohmann::json;
 
-// The paper's threshold: a window deviates when its yaw or path angle exceeds 8° (SPEC §6).
+// The paper's threshold: a window deviates when its yaw or path angle exceeds 8° (docs/learning.md
+// "Deviation").
 constexpr double kThresholdDeg = 8.0;
 
 struct Example {

@@ -26,7 +26,7 @@ constexpr double kBaselineL1TurnDeg = 43.34;
 // Tolerances of the contact rework (docs/robots.md).
 constexpr double kSpeedTolerance = 0.05;  // relative
 constexpr double kTurnToleranceDeg = 2.0;
-constexpr double kStraightDeg = 8.0;  // SPEC §6 threshold
+constexpr double kStraightDeg = 8.0;  // paper §4.1 threshold
 
 constexpr long kSettle = 400;
 constexpr long kSteps = 1200;

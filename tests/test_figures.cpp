@@ -32,7 +32,8 @@ constexpr double kMinInkShare = 0.01;
 constexpr std::array<unsigned char, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
 constexpr long kGaitSteps = 120;
 constexpr double kPi = std::numbers::pi;
-// SPEC §2-§3: swing lasts 2p+1 steps of a p(2p+1)-step cycle; legs lag by tau, left by tau_L.
+// docs/controller.md "Gaits": swing lasts 2p+1 steps of a p(2p+1)-step cycle; legs lag by tau,
+// left by tau_L.
 constexpr long kTau = 18;
 constexpr long kTauLeft = 90;
 
@@ -125,7 +126,7 @@ class FiguresTest : public ::testing::Test {
   fs::path dir_;
 };
 
-// A gait as SPEC §2-§3 describes it: leg i swings for 2p+1 steps of every p(2p+1).
+// A gait as docs/controller.md "Gaits" describes it: leg i swings for 2p+1 steps of every p(2p+1).
 std::vector<std::vector<bool>> synthetic_gait(int period) {
   const long cycle = static_cast<long>(period) * (2 * period + 1);
   const std::array<long, 6> delay{2 * kTau,        kTau,    0, 2 * kTau + kTauLeft,
@@ -280,7 +281,7 @@ TEST_F(FiguresTest, LandscapeSortsCombinationsAndMarksBestAndLearned) {
 
 TEST_F(FiguresTest, TrunkPathsWithTunnelWalls) {
   constexpr int kPoints = 50;
-  constexpr double kLength = 3.0;     // m, the paper's tunnel (SPEC §8)
+  constexpr double kLength = 3.0;     // m, the paper's tunnel (Table 1)
   constexpr double kHalfWidth = 0.6;  // m
   TrunkPaths paths;
   for (int i = 0; i < kPoints; ++i) {

@@ -1,4 +1,5 @@
-// Post-processed CPG output: a sawtooth of period p(2p+1) rising for 1/p of it (reference §2.4).
+// Post-processed CPG output: a sawtooth of period p(2p+1) rising for 1/p of it (docs/controller.md
+// "Post-processing").
 #include <gtest/gtest.h>
 
 #include <map>
@@ -10,7 +11,8 @@ namespace {
 
 using namespace multicpg;
 
-// Long enough for every period to lock exactly (p = 4 is slowest, reference §1.3: step 737).
+// Long enough for every period to lock exactly (p = 4 is slowest, step 737: docs/controller.md
+// "Steps to lock, from reset").
 constexpr long kLockSteps = 3000;
 
 std::vector<double> ramp(int period, long steps) {
@@ -52,8 +54,8 @@ TEST_P(PostProcessing, SawtoothPeriodAndSwingFraction) {
 INSTANTIATE_TEST_SUITE_P(GaitPeriods, PostProcessing, ::testing::Values(4, 5, 6, 8, 9));
 
 TEST(PostProcessing, LocksAtTheReferenceSteps) {
-  // Reference §1.3: from reset (x = 0) the post-processed output is exactly periodic from these
-  // steps on (counted from 0, step t = the output after t + 1 updates).
+  // docs/controller.md "Steps to lock, from reset": from reset (x = 0) the post-processed output is
+  // exactly periodic from these steps on (counted from 0, step t = the output after t + 1 updates).
   for (const int p : {4, 5, 6, 8, 9}) {
     const long expected = neural::lock_steps(p);
     const auto model = neural::make_controller_model(robot::RobotKind::hexapod);
@@ -77,7 +79,7 @@ TEST(PostProcessing, LocksAtTheReferenceSteps) {
 
 TEST(PostProcessing, PeriodOneHoldsConstant) {
   const std::vector<double> y1 = ramp(1, 100);
-  for (double y : y1) EXPECT_EQ(y, 1.0);  // reference §1.4: the ramp clips to +1
+  for (double y : y1) EXPECT_EQ(y, 1.0);  // docs/controller.md "Period 1: stop"
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ using multicpg::testing::load_render_test_model;
 using multicpg::testing::ModelPtr;
 
 constexpr int kVideoFrames = 12;
-constexpr int kVideoFps = 27;  // the controller's rate (SPEC §0)
+constexpr int kVideoFps = 27;  // the controller's rate (paper §4)
 // Share of the frame the trunk or the red leg must cover to count as seen.
 constexpr double kMinShare = 0.002;
 // How far (share of the frame width) the trunk may sit from the centre with a tracking camera.

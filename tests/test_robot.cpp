@@ -1,5 +1,5 @@
-// The robot descriptions, joint maps, servo law and MuJoCo models (SPEC §4, §7; reference §4.5,
-// §6), and `multicpg model` accepted by MuJoCo's own compiler.
+// The robot descriptions, joint maps, servo law and MuJoCo models (docs/robots.md "Joint angles",
+// "Servos", §6), and `multicpg model` accepted by MuJoCo's own compiler.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,7 +28,7 @@ double model_mass(const mjModel* m) {
 }
 
 TEST(RobotBody, MassesMatchReference) {
-  // Reference §6.1: 7.8518 kg in all; §6.2: 5.397 kg.
+  // docs/robots.md "Mass budget": 7.8518 kg in all; the quadruped 5.397 kg.
   EXPECT_NEAR(robot::total_mass(robot::robot_body(RobotKind::hexapod)), 7.85, 0.01 * 7.85);
   EXPECT_NEAR(robot::total_mass(robot::robot_body(RobotKind::quadruped)), 5.40, 0.01 * 5.40);
   const robot::RobotBody& hex = robot::robot_body(RobotKind::hexapod);
@@ -42,7 +42,7 @@ TEST(RobotBody, MassesMatchReference) {
 
 TEST(RobotBody, LegRoots) {
   const robot::RobotBody& hex = robot::robot_body(RobotKind::hexapod);
-  const std::vector<double> x{0.175, 0.025, -0.165, 0.175, 0.025, -0.165};  // reference §6.1
+  const std::vector<double> x{0.175, 0.025, -0.165, 0.175, 0.025, -0.165};  // docs/robots.md
   for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_NEAR(hex.mounts[i].x, x[i], 1e-12) << i;
     EXPECT_EQ(hex.mounts[i].side, i < 3 ? -1.0 : 1.0);
@@ -50,13 +50,13 @@ TEST(RobotBody, LegRoots) {
   }
   const robot::RobotBody& quad = robot::robot_body(RobotKind::quadruped);
   ASSERT_EQ(quad.trunk.size(), 1u);
-  EXPECT_NEAR(quad.mounts[0].x, 0.09, 1e-12);  // reference §6.2
+  EXPECT_NEAR(quad.mounts[0].x, 0.09, 1e-12);  // docs/robots.md "Leg roots"
   EXPECT_NEAR(quad.mounts[1].x, -0.10, 1e-12);
 }
 
 TEST(JointMap, ReferenceAngles) {
-  // Reference §4.5 in the paper's convention: TC 70 deg m (front, hind), 60 deg m (middle),
-  // CTr 75 deg m, FTi (55 m - 75) deg.
+  // docs/robots.md "Joint angles", in the paper's convention: TC 70 deg m (front, hind), 60 deg m
+  // (middle), CTr 75 deg m, FTi (55 m - 75) deg.
   EXPECT_NEAR(robot::joint_angle(LegType::front, Joint::TC, 0.5), 35.0 * kDeg, 1e-12);
   EXPECT_NEAR(robot::joint_angle(LegType::hind, Joint::TC, -0.858), -60.06 * kDeg, 1e-12);
   EXPECT_NEAR(robot::joint_angle(LegType::middle, Joint::TC, 0.334), 20.04 * kDeg, 1e-12);
@@ -79,7 +79,7 @@ TEST(JointMap, Limits) {
 
 TEST(Servo, CommandedVelocity) {
   const robot::ServoSpec& s = robot::robot_body(RobotKind::hexapod).ctr_servo;
-  EXPECT_NEAR(s.max_velocity, 10.47, 0.01);  // reference §6.1
+  EXPECT_NEAR(s.max_velocity, 10.47, 0.01);  // docs/robots.md "Servos"
   EXPECT_NEAR(s.gain, 5.2366, 1e-4);
   EXPECT_NEAR(s.power, 26.75, 0.01);
   EXPECT_NEAR(sim::commanded_velocity(s, 0.1, 0.005), 0.52366, 1e-4);

@@ -1,5 +1,6 @@
-// Experiment machinery without physics: scenario lists (SPEC §8), the parallel, resumable
-// runner and the tables. The task function is a stand-in driven only by the task's seed.
+// Experiment machinery without physics: scenario lists (docs/learning.md "The paper's
+// experiments"), the parallel, resumable runner and the tables. The task function is a stand-in
+// driven only by the task's seed.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

@@ -17,10 +17,10 @@ namespace {
 using namespace multicpg;
 using robot::RobotKind;
 
-// p = 4 from reset locks after about 740 steps (reference §1.3) and the delay lines fill after
-// 126; measuring starts after both.
+// p = 4 from reset locks after about 740 steps (docs/controller.md "Steps to lock, from reset")
+// and the delay lines fill after 126; measuring starts after both.
 constexpr long kSettle = 800;
-constexpr double kStraightDeg = 8.0;  // SPEC §6 threshold
+constexpr double kStraightDeg = 8.0;  // paper §4.1 threshold
 
 const sim::SimModel& model(RobotKind kind) {
   static const std::array<sim::SimModel, robot::kRobotKinds.size()> models{
@@ -99,7 +99,7 @@ TEST(Walk, DisabledFrontLegTurnsTowardItsSide) {
   RecordProperty("R1_deviations_deg", list(right.window_deviations_deg));
   RecordProperty("L1_deviations_deg", list(left.window_deviations_deg));
 
-  // The disabled leg still touches the ground at times (SPEC §4).
+  // The disabled leg still touches the ground at times (paper §4).
   const sim::WalkRecord& rec = right.record;
   long touches = 0;
   for (std::size_t row = kSettle; row < rec.rows(); ++row) touches += rec.contact[row * rec.legs];
@@ -174,7 +174,7 @@ TEST(Walk, LegsFailAtTheGivenStep) {
   for (std::size_t row = 1; row <= 100; ++row) moved = moved || command(row, 1) != command(1, 1);
   EXPECT_TRUE(moved);
   for (std::size_t row = 101; row < rec.rows(); ++row) {
-    EXPECT_EQ(command(row, 0), 0.0);  // SPEC §4 posture
+    EXPECT_EQ(command(row, 0), 0.0);  // docs/controller.md "Disabled legs"
     EXPECT_EQ(command(row, 1), 0.7);
     EXPECT_EQ(command(row, 2), -0.7);
   }
@@ -305,7 +305,7 @@ TEST(Stepper, LegsFailAndRecoverNowOrSayWhyNot) {
 }
 
 TEST(Walk, WindowDeviationsWrapAndSign) {
-  // A left turn across +-180 deg is +20, not -340 (SPEC §6).
+  // A left turn across +-180 deg is +20, not -340 (docs/learning.md "Deviation").
   const std::vector<double> yaw{170.0, 0.0, -170.0, 0.0, -150.0};
   EXPECT_EQ(sim::window_deviations(yaw, 0, 2), (std::vector<double>{20.0, 20.0}));
   EXPECT_EQ(sim::window_deviations(yaw, 1, 2), (std::vector<double>{0.0}));

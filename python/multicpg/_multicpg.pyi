@@ -37,7 +37,7 @@ def build_info() -> Dict[str, str]:
     """What this module is: version, git_commit, mujoco_version, compiler, pybind11_version."""
 
 class Fault:
-    """What breaks before controller step `step` of a run (SPEC §4; docs/faults.md)."""
+    """What breaks before controller step `step` of a run (paper §4; docs/faults.md)."""
 
     def __init__(self, legs: Legs = None, step: int = 0, *, kind: str = "leg",
                  joint: Optional[str] = None, value: Optional[float] = None) -> None: ...

@@ -75,11 +75,11 @@ MODES = ("paper", "robust")
 # Reflex choices, the last action element in robust mode.
 STEERING_OFF, STEERING_ON = 0, 1
 # Bounds of an observation: a window's yaw change and path angle are wrapped angles (deg), the
-# reflex cuts at most a whole side's swing, a CPG period is 1..9 (SPEC §1).
+# reflex cuts at most a whole side's swing, a CPG period is 1..9 (paper §2.1).
 _ANGLE_DEG = 180.0
 _MAX_EFFORT = 1.0
 _MIN_PERIOD, _MAX_PERIOD = 1.0, 9.0
-# Frames play at the controller's rate: 27 Hz (SPEC §0).
+# Frames play at the controller's rate: 27 Hz (paper §4).
 _RENDER_FPS = 27
 
 
@@ -100,9 +100,10 @@ class CompensationEnv(_EnvBase):
     working_legs, step, trials; reset's also detected and detection_step.
 
     reset() walks the robot as the learning run does before it learns: paper mode from a cold
-    controller (SPEC §6), robust mode from a running one with the reflex on; windows are walked
-    until one deviates more than the threshold (or DETECTION_WINDOWS after the failure do not),
-    and the CPGs are desynchronised. reset(seed=) seeds np_random and both spaces' sample().
+    controller (docs/learning.md "Where the authors' code differs"), robust mode from a running
+    one with the reflex on; windows are walked until one deviates more than the threshold (or
+    DETECTION_WINDOWS after the failure do not), and the CPGs are desynchronised. reset(seed=)
+    seeds np_random and both spaces' sample().
     render_mode="rgb_array": render() returns the frame multicpg.render draws.
     """
 
@@ -245,7 +246,8 @@ class CompensationEnv(_EnvBase):
             self.observation_space.seed(seed)
         self.trials = 0
         paper = self.mode == "paper"
-        # Paper mode starts cold (SPEC §6); robust mode from a running controller, steering.
+        # Paper mode starts cold (as the authors' code); robust mode from a running controller,
+        # steering.
         self.sim = Simulation(self.robot, disable=self.disable, disable_at=self.disable_at,
                               record=False, **({"warmup": 0} if paper else {}))
         if not paper:
@@ -265,7 +267,7 @@ class CompensationEnv(_EnvBase):
         info["detected"] = m["deviation_deg"] > self.threshold
         info["detection_step"] = self.sim.step_count if info["detected"] else None
         if info["detected"]:
-            self.sim.synchronise(False)  # SPEC §5: a deviation frees every client CPG
+            self.sim.synchronise(False)  # Paper §2.3: a deviation frees every client CPG
         return self._observation(m), info
 
     def step(self, action: Any) -> Tuple[np.ndarray, SupportsFloat, bool, bool, Dict[str, Any]]:

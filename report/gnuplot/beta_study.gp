@@ -1,4 +1,4 @@
-# Fig. 14 (paper §5, SPEC §8): trials to converge for each annealing factor beta, mean ± SD,
+# Fig. 14 (paper §4.3): trials to converge for each annealing factor beta, mean ± SD,
 # the mean written in blue above each bar as in the paper. Bar colours follow the paper:
 # beta = 0 (random search) blue, beta >= 10 (about greedy) green, simulated annealing red.
 # Variables: data (beta, mean_trials, sd_trials, share_converged), disabled_legs.

@@ -1,5 +1,5 @@
-# Fig. 2 (paper §2.1, SPEC §3): gait diagrams, one panel per period, legs as rows top to bottom;
-# blue = stance (the leg supports the body), white = swing.
+# Fig. 2 (paper §2.1; docs/controller.md "Gaits"): gait diagrams, one panel per period, legs as
+# rows top to bottom; blue = stance (the leg supports the body), white = swing.
 # Variables: data (period,leg,row,stance_start_step,stance_end_step), panels, period<i>,
 # title<i> (i = 1..panels), steps, step_seconds, legs (names, space-separated, top to bottom).
 load dir.'common.gp'

@@ -1,4 +1,4 @@
-# Figs. 11 and 13 (paper §4-§5, SPEC §8): per disabled-leg scenario the trials learning needed
+# Figs. 11 and 13 (paper §4): per disabled-leg scenario the trials learning needed
 # and the final deviation, mean ± SD over the runs; the label is the share of runs that
 # converged (reached the threshold within the trial cap), or "n/d" when no run had
 # anything to learn.

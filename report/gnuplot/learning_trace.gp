@@ -1,4 +1,4 @@
-# Fig. 8 (paper §4, SPEC §6): the deviation E of every trial of one learning run; accepted
+# Fig. 8 (paper §4.1): the deviation E of every trial of one learning run; accepted
 # trials move the combination, the grey steps show E_ref (the accepted combination's deviation)
 # and learning stops below the threshold E_req. Short runs get each trial's period change
 # written above its point.

@@ -81,7 +81,7 @@ Section calibration_stage(const StageContext& ctx) {
           "Calibrating the body against the real robot",
           "The paper gives the real AMOSII's tunnel runs (Table 1, §5): before learning 42°, 21° "
           "and 23° to the right, R1 the worst; its mass (5.758 kg, 2.2 kg trunk) and its "
-          "controller's body lift (5°) come from the reference. Nothing else of the body is "
+          "controller's body lift (5°) come from the authors' code. Nothing else of the body is "
           "stated.",
           "`multicpg calibrate --budget " + std::to_string(summary.at("budget").get<int>()) +
               "` walked " + std::to_string(summary.at("candidates").get<int>()) +

@@ -9,7 +9,7 @@ namespace {
 
 const std::vector<int> kGaitFigurePeriods{1, 4, 5, 6, 8, 9};
 constexpr long kShownCycles = 2;
-constexpr long kSlowestCycle = 9 * (2 * 9 + 1);  // p = 9: 171 steps (reference §2.4)
+constexpr long kSlowestCycle = 9 * (2 * 9 + 1);  // p = 9: p(2p + 1) = 171 steps
 constexpr int kFractionDecimals = 3;
 
 }  // namespace

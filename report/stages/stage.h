@@ -17,10 +17,11 @@
 
 namespace multicpg::report {
 
-// Runs per experiment and film speeds: the paper's (SPEC §8) or, with --quick, a few.
+// Runs per experiment and film speeds: the paper's (docs/learning.md "The paper's experiments") or,
+// with --quick, a few.
 struct Sizes {
   int hexapod_runs, quadruped_runs, beta_runs;
-  int beta_max_trials;    // trial cap of the β study's runs (SPEC §6: 200)
+  int beta_max_trials;    // trial cap of the β study's runs (paper: 200)
   int film_speed;         // controller steps per video frame of the learning film
   int tunnel_film_speed;  // and of the tunnel films (slower: the walls are the point)
   long walk_film_steps;   // steps of the walking videos, filmed in real time

@@ -13,7 +13,7 @@ namespace {
 
 // Walk of each period for the speed table.
 constexpr long kSpeedWalkSteps = 1200;
-// Gait names of SPEC §3 / paper §2.1.
+// Gait names of paper §2.1 (docs/controller.md "Gaits").
 const std::map<int, std::string> kGaits{{1, "stop"},       {4, "tripod"},    {5, "tetrapod"},
                                         {6, "transition"}, {8, "fast wave"}, {9, "slow wave"}};
 
