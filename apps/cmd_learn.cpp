@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
+#include "apps/hardware_flags.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/run_flags.h"
@@ -28,6 +29,7 @@ struct LearnOptions {
   RunFlags run;  // robot, faults, learning and simulation flags
   bool json = false;
   std::string out;
+  hw::HardwareFlags hardware;  // learn on a real robot
 };
 
 std::string period_cells(const std::vector<int>& periods,
@@ -108,11 +110,92 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearnerCho
   return f.str();
 }
 
-void run_learn(const LearnOptions& o) {
-  const experiments::RunSpec spec = run_spec(o.run, /*learn=*/true);
+// The header, Fig. 8's trace, the episodes and the outcome.
+void print_learning(const experiments::RunSpec& spec, const experiments::LearningRun& run) {
   const robot::Morphology& morph = experiments::morphology(spec);
   const learning::CompensationOptions& options = *spec.learning;
   const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
+  const learning::LearningResult& r = run.result;
+  std::cout << morph.name << ", " << learning::to_string(options.mode) << " mode";
+  if (options.mode == learning::Mode::robust) {
+    std::cout << " (steering " << learning::to_string(options.steering) << ", "
+              << options.hold_windows << " windows to hold)";
+  }
+  std::cout << ", faults";
+  for (const sim::Fault& f : spec.faults) {
+    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
+              << f.step;
+  }
+  if (options.learner.name != learning::kDefaultLearner) {
+    std::cout << ", learner " << options.learner.name;
+  }
+  std::cout << ", beta " << options.annealing.beta << ", threshold "
+            << options.annealing.threshold_deg << "°, window " << options.window_steps
+            << ", settle " << r.settle_steps << ", seed " << options.seed << "\n\n";
+  print_trace(std::cout, morph, run, failing);
+  print_episodes(std::cout, morph, r, failing);
+  std::cout << "\n" << learning::to_string(r.outcome);
+  if (r.detection_step) {
+    std::cout << " after " << r.trials
+              << " trials: " << robot::period_map_text(morph, r.periods, failing) << " (deviation "
+              << std::fixed << std::setprecision(2) << r.initial_deviation_deg << "° -> "
+              << r.final_deviation_deg << "°)";
+  }
+  std::cout << "\n";
+}
+
+// learn --hardware: the same learning on a real robot (docs/hardware.md). A run a fault or a
+// signal stops keeps its record so far in --out and --json.
+void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& spec) {
+  const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
+  const std::filesystem::path dir(o.out);
+  std::optional<AtomicFile> steps;
+  std::optional<hw::StepCsv> rows;
+  if (!o.out.empty()) {
+    ensure_writable_dir(o.out);
+    steps.emplace(dir / "hardware.csv");
+    rows.emplace(steps->stream(), setup.file, experiments::morphology(spec));
+  }
+  const hw::StoppedSink record = stopped_record(o.json, "");
+  const auto stopped = [&](const nlohmann::json& j) {
+    if (!o.out.empty()) {
+      write_file_atomic(dir / "learning.json", j.dump(2) + "\n");
+      steps->commit();
+    }
+    record(j);
+  };
+  experiments::LearningRun run;
+  hw::HardwareLearning learned =
+      hw::learn_on_hardware(spec, setup, stopped, rows ? &*rows : nullptr);
+  run.result = std::move(learned.result);
+  nlohmann::json json = experiments::learn_json(spec, run.result);
+  json["hardware"] = learned.hardware;
+  if (!o.out.empty()) {
+    write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
+    write_file_atomic(dir / "trace.csv",
+                      trace_csv(experiments::morphology(spec), spec.learning->learner, run.result));
+    steps->commit();
+  }
+  if (o.json) {
+    std::cout << json.dump(2) << "\n";
+    return;
+  }
+  std::cout << "on " << setup.file.name << " (" << hw::to_string(setup.file.protocol) << ", "
+            << setup.file.path.string() << ")\n";
+  print_learning(spec, run);
+  std::cout << hardware_summary(learned.hardware) << "\n";
+  if (!o.out.empty()) {
+    std::cout << "wrote " << o.out << "/{learning.json,trace.csv,hardware.csv}\n";
+  }
+}
+
+void run_learn(const LearnOptions& o) {
+  const experiments::RunSpec spec = run_spec(o.run, /*learn=*/true);
+  if (o.hardware.given() || o.hardware.lock_step) {
+    run_learn_on_hardware(o, spec);
+    return;
+  }
+  const robot::Morphology& morph = experiments::morphology(spec);
   const std::filesystem::path dir(o.out);
   // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
   // only when the run has ended well (common/atomic_file.h).
@@ -139,29 +222,7 @@ void run_learn(const LearnOptions& o) {
     std::cout << json.dump(2) << "\n";
     return;
   }
-  std::cout << morph.name << ", " << learning::to_string(options.mode) << " mode";
-  if (options.mode == learning::Mode::robust) {
-    std::cout << " (steering " << learning::to_string(options.steering) << ", "
-              << options.hold_windows << " windows to hold)";
-  }
-  std::cout << ", faults";
-  for (const sim::Fault& f : spec.faults) {
-    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
-              << f.step;
-  }
-  std::cout << ", beta " << options.annealing.beta << ", threshold "
-            << options.annealing.threshold_deg << "°, window " << options.window_steps
-            << ", settle " << r.settle_steps << ", seed " << options.seed << "\n\n";
-  print_trace(std::cout, morph, run, failing);
-  print_episodes(std::cout, morph, r, failing);
-  std::cout << "\n" << learning::to_string(r.outcome);
-  if (r.detection_step) {
-    std::cout << " after " << r.trials
-              << " trials: " << robot::period_map_text(morph, r.periods, failing) << " (deviation "
-              << std::fixed << std::setprecision(2) << r.initial_deviation_deg << "° -> "
-              << r.final_deviation_deg << "°)";
-  }
-  std::cout << "\n";
+  print_learning(spec, run);
   if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
 }
 
@@ -175,6 +236,7 @@ void register_learn(CLI::App& app) {
   add_fault_flags(*cmd, opts->run);
   add_learning_flags(*cmd, opts->run.learning);
   add_sim_flags(*cmd, opts->run.sim, opts->run.body);
+  add_hardware_flags(*cmd, opts->hardware);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");

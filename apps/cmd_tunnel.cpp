@@ -8,6 +8,7 @@
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
+#include "apps/hardware_flags.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/run_flags.h"
@@ -29,7 +30,60 @@ struct TunnelOptions {
   std::string video;  // .mp4 to film the tunnel walk; empty = none
   bool json = false;
   bool scale_tunnel = false;
+  hw::HardwareFlags hardware;  // a real robot, in a real tunnel
 };
+
+// tunnel --hardware: on a real robot in a real tunnel (docs/hardware.md "Running it"): learning
+// first with --learn, then the controller walks on for the tunnel. Where the robot senses its
+// position the walk ends at the tunnel's end and Table 1's angle is measured; otherwise only the
+// yaw change is, and whether it passed is the operator's to see.
+void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& spec) {
+  if (!o.video.empty()) throw BadInput("--video films the simulation; not with --hardware");
+  if (o.scale_tunnel)
+    throw BadInput("--scale-tunnel scales the simulated tunnel; not with --hardware");
+  const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
+  const robot::Morphology& morph = experiments::morphology(spec);
+  const hw::HardwareTunnel t = hw::tunnel_on_hardware(
+      spec, setup, o.max_steps, spec.sim.scene.tunnel_length, stopped_record(o.json, ""));
+  const std::vector<std::size_t> disabled = sim::failed_after(morph, spec.faults);
+  const auto optional = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
+  if (o.json) {
+    nlohmann::json j{{"passed", optional(t.passed)},
+                     {"steps", t.steps},
+                     {"forward_m", optional(t.forward_m)},
+                     {"lateral_m", optional(t.lateral_m)},
+                     {"deviation_deg", optional(t.deviation_deg)},
+                     {"yaw_change_deg", t.yaw_change_deg},
+                     {"periods", robot::period_map_json(morph, t.periods)},
+                     {"hardware", t.hardware}};
+    if (t.learned) {
+      j["learning"] = learning::to_json(*t.learned, morph, disabled);
+      j["options"] = experiments::learning_record(*spec.learning, spec.faults);
+    }
+    experiments::record_robot_file(j, spec);
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << std::fixed << std::setprecision(2) << "tunnel on " << setup.file.name << " ("
+            << hw::to_string(setup.file.protocol) << "), disabled "
+            << (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled)) << "\n";
+  if (t.learned) {
+    std::cout << "learned (" << learning::to_string(spec.learning->mode)
+              << " mode): " << learning::to_string(t.learned->outcome) << " after "
+              << t.learned->trials << " trials, "
+              << robot::period_map_text(morph, t.learned->periods, disabled)
+              << (t.learned->steering ? ", steering reflex on" : "") << "\n";
+  }
+  if (t.passed) {
+    std::cout << (*t.passed ? "passed" : "did not reach the end") << " after " << t.steps
+              << " steps: forward " << *t.forward_m << " m, lateral " << *t.lateral_m
+              << " m, deviation " << *t.deviation_deg << "° (+ = left)\n";
+  } else {
+    std::cout << "walked " << t.steps << " steps, yaw change " << t.yaw_change_deg
+              << "° (+ = left); no position sensed: whether it passed is for you to see\n";
+  }
+  std::cout << hardware_summary(t.hardware) << "\n";
+}
 
 void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (o.learn && periods_given) {
@@ -39,6 +93,10 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
     throw BadInput("--video must name an .mp4 file");
   }
   experiments::RunSpec spec = run_spec(o.run, o.learn);
+  if (o.hardware.given() || o.hardware.lock_step) {
+    run_tunnel_on_hardware(o, spec);
+    return;
+  }
   std::optional<experiments::TunnelScale> scale;
   if (o.scale_tunnel) {
     try {
@@ -119,6 +177,7 @@ void register_tunnel(CLI::App& app) {
                 "scale the tunnel's length and width by the robot's width (its feet's span at the "
                 "start) over the built-in robot's of its layout");
   add_sim_flags(*cmd, o->run.sim, o->run.body);
+  add_hardware_flags(*cmd, o->hardware);
   cmd->callback([o, periods] { run_tunnel(*o, periods->count() > 0); });
 }
 

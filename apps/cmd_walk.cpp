@@ -9,6 +9,7 @@
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
+#include "apps/hardware_flags.h"
 #include "apps/options.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
@@ -35,6 +36,7 @@ struct WalkOptions {
   long window = sim::kDefaultWindow;
   std::string csv;
   bool json = false;
+  hw::HardwareFlags hardware;  // walk a real robot
 };
 
 struct Run {
@@ -112,8 +114,71 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
   out << "final yaw " << r.final_yaw_deg << " deg\n";
 }
 
+// walk --hardware: the same walk on a real robot (docs/hardware.md): the yaw change of each
+// window, the path angle only where the robot senses its position.
+void run_walk_on_hardware(const WalkOptions& o, const experiments::RunSpec& spec) {
+  const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
+  const robot::Morphology& morph = experiments::morphology(spec);
+  std::optional<AtomicFile> csv;
+  std::optional<hw::StepCsv> rows;
+  if (!o.csv.empty()) {
+    csv.emplace(o.csv);
+    rows.emplace(csv->stream(), setup.file, morph);
+  }
+  const hw::StoppedSink record = stopped_record(o.json, "");
+  const auto stopped = [&](const nlohmann::json& j) {
+    if (csv) csv->commit();
+    record(j);
+  };
+  const hw::HardwareWalk w = hw::walk_on_hardware(spec, setup, o.settle, o.steps, o.window, stopped,
+                                                  rows ? &*rows : nullptr);
+  if (csv) csv->commit();
+  const bool path = setup.file.senses_position();
+  nlohmann::json windows = nlohmann::json::array();
+  for (const sim::WindowMeasure& m : w.windows) {
+    windows.push_back({{"yaw_deg", m.yaw_deg},
+                       {"path_deg", path ? nlohmann::json(m.path_deg) : nlohmann::json()}});
+  }
+  if (o.json) {
+    nlohmann::json json{
+        {"robot", morph.name},
+        {"periods",
+         robot::period_map_json(morph, spec.start.periods.empty()
+                                           ? std::vector<int>(morph.size(), learning::kStartPeriod)
+                                           : spec.start.periods)},
+        {"settle", o.settle},
+        {"steps", w.steps},
+        {"window", o.window},
+        {"windows", windows},
+        {"final_yaw_deg", w.final_yaw_deg},
+        {"hardware", w.hardware}};
+    experiments::record_robot_file(json, spec);
+    std::cout << json.dump(2) << "\n";
+    return;
+  }
+  std::cout << std::fixed << std::setprecision(3) << morph.name << " on " << setup.file.name << " ("
+            << hw::to_string(setup.file.protocol) << "): " << w.steps << " steps measured";
+  if (o.settle > 0) std::cout << " after " << o.settle << " settling steps";
+  std::cout << "\nper " << o.window << "-step window: yaw change"
+            << (path ? " and path angle" : " (no position sensed: no path angle)")
+            << " (deg, + = left):\n";
+  if (w.windows.empty()) std::cout << "  (no complete window)\n";
+  for (std::size_t k = 0; k < w.windows.size(); ++k) {
+    const long first = o.settle + static_cast<long>(k) * o.window;
+    std::cout << "  steps " << std::setw(6) << first << "-" << std::left << std::setw(6)
+              << first + o.window << std::right << std::setw(9) << w.windows[k].yaw_deg;
+    if (path) std::cout << std::setw(9) << w.windows[k].path_deg;
+    std::cout << "\n";
+  }
+  std::cout << "final yaw " << w.final_yaw_deg << " deg\n" << hardware_summary(w.hardware) << "\n";
+}
+
 void run_walk(const WalkOptions& o) {
   const experiments::RunSpec run_spec = apps::run_spec(o.run, /*learn=*/false);
+  if (o.hardware.given() || o.hardware.lock_step) {
+    run_walk_on_hardware(o, run_spec);
+    return;
+  }
   const robot::Morphology& morph = experiments::morphology(run_spec);
   Run run{&morph, {}, 0.0, 0.0};
   sim::WalkSpec& spec = run.spec;
@@ -175,6 +240,7 @@ void register_walk(CLI::App& app) {
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the summary");
+  add_hardware_flags(*cmd, opts->hardware);
   cmd->callback([opts] { run_walk(*opts); });
 }
 

@@ -72,6 +72,7 @@ experiments::Ending run(int argc, char** argv) {
   apps::register_learner_benchmark(app);
   apps::register_calibrate(app);
   apps::register_run(app);
+  apps::register_emulate(app);
   apps::refuse_empty_values(app);
   app.parse_complete_callback([&app] { check_processes(app); });  // before the command runs
   const auto failed = [](int code, const char* what) {

@@ -22,7 +22,7 @@ WindowMeasure measure_window(const Pose2& start, const Pose2& end,
   const double dy = end.y - start.y;
   m.forward_m = dx * std::cos(heading) + dy * std::sin(heading);
   m.lateral_m = -dx * std::sin(heading) + dy * std::cos(heading);
-  if (m.forward_m < kMinForwardForPathM) {
+  if (!(m.forward_m >= kMinForwardForPathM)) {  // NaN too: no position sensed
     m.path_deg = m.lateral_m < 0.0 ? -90.0 : 90.0;
   } else {
     m.path_deg = std::atan2(m.lateral_m, m.forward_m) * kDegPerRad;

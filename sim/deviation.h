@@ -4,15 +4,19 @@
 // which sees a sideways crab that the yaw change cannot.
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 namespace multicpg::sim {
 
-// Trunk pose at one instant: position in the ground plane (m) and yaw (deg, + = left).
+// Trunk pose at one instant: position in the ground plane (m) and yaw (deg, + = left). A body
+// that senses no position (a real robot with an orientation sensor only, docs/hardware.md) reports
+// x and y as NaN, never a made-up position.
 struct Pose2 {
   double x = 0.0;
   double y = 0.0;
   double yaw_deg = 0.0;
+  bool has_position() const { return std::isfinite(x) && std::isfinite(y); }
 };
 
 struct WindowMeasure {
@@ -35,7 +39,9 @@ inline bool holds(double deviation_deg, double threshold_deg) {
 }
 
 // Below this forward displacement (m) the path angle is not defined (the robot stands or walks
-// backwards): it is reported as +-90 deg, so a robot that does not advance never "holds".
+// backwards): it is reported as +-90 deg, so a robot that does not advance never "holds". So is
+// the path angle of a body that senses no position (Pose2::has_position; forward and lateral
+// are then NaN).
 inline constexpr double kMinForwardForPathM = 1e-3;
 
 // `course_yaw_deg`: the direction of the course the robot keeps (a steering reflex's line,

@@ -214,6 +214,10 @@ void sim_step(const SimModel& model, SimState& state) {
     state.targets[i] = {robot::joint_angle(w[0], c.tc), robot::joint_angle(w[1], c.ctr),
                         robot::joint_angle(w[2], c.fti)};
   }
+  physics_step(model, state);
+}
+
+void physics_step(const SimModel& model, SimState& state) {
   const mjModel* m = physics_model(model, state);
   mjData* d = state.data.get();
   for (int s = 0; s < model.substeps; ++s) {

@@ -1,0 +1,94 @@
+// multicpg emulate: a fake robot on pseudo-terminals that speaks a hardware file's protocol and
+// moves the simulated robot with what it receives (docs/hardware.md "Rehearse on the emulator").
+#include <iostream>
+
+#include "apps/commands.h"
+#include "apps/flag_checks.h"
+#include "apps/run_flags.h"
+#include "apps/sim_flags.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "common/limits.h"
+#include "hw/emulator.h"
+#include "hw/hardware_file.h"
+
+namespace multicpg::apps {
+namespace {
+
+struct EmulateOptions {
+  RunFlags run;  // the robot and its simulation
+  std::string hardware;
+  std::string protocol;
+  std::vector<std::string> injections;
+  std::uint64_t seed = 1;
+  bool wire_time = false;
+  std::string log;
+  std::string rehearsal;
+};
+
+void run_emulate(const EmulateOptions& o) {
+  const experiments::RunSpec spec = run_spec(o.run, /*learn=*/false);
+  const hw::HardwareFile file = hw::load_hardware_file(o.hardware, experiments::morphology(spec));
+  if (!o.protocol.empty() && hw::parse_protocol(o.protocol) != file.protocol) {
+    throw BadInput("--protocol " + o.protocol + ": the hardware file '" + o.hardware + "' speaks " +
+                   std::string(hw::to_string(file.protocol)));
+  }
+  hw::EmulatorSpec emulator;
+  for (const std::string& text : o.injections) {
+    try {
+      emulator.injections.push_back(hw::parse_injection(text, file));
+    } catch (const BadInput& e) {
+      throw BadInput(std::string("--inject ") + e.what());
+    }
+  }
+  emulator.seed = o.seed;
+  emulator.wire_time = o.wire_time;
+  emulator.log = o.log;
+  if (!o.rehearsal.empty()) require_writable_file(o.rehearsal);
+  const sim::SimModel model = experiments::make_run_model(spec);
+  hw::Emulator emu(model, file, emulator);
+  if (!o.rehearsal.empty()) {
+    write_file_atomic(o.rehearsal, hw::with_ports(file.path, emu.bus_path(), emu.yaw_path()));
+  }
+  std::cout << "emulating " << file.name << " (" << hw::to_string(file.protocol) << ") on the "
+            << experiments::morphology(spec).name << "\nbus " << emu.bus_path() << "\n";
+  if (!emu.yaw_path().empty()) std::cout << "yaw " << emu.yaw_path() << "\n";
+  if (!o.rehearsal.empty()) std::cout << "rehearsal file " << o.rehearsal << "\n";
+  std::cout << std::flush;
+  const hw::EmulatorSummary s = emu.run();
+  std::cout << "served " << s.steps << " control steps and " << s.answers << " answers; refused "
+            << s.malformed << " malformed frames"
+            << (s.posture ? "; the safe posture was commanded" : "")
+            << (s.torque_off ? "; the torque was turned off" : "") << "\n";
+}
+
+}  // namespace
+
+void register_emulate(CLI::App& app) {
+  auto o = std::make_shared<EmulateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "emulate",
+      "a fake robot on a pseudo-terminal: speaks the hardware file's protocol and moves the "
+      "simulated robot with what it receives (docs/hardware.md)");
+  cmd->add_option("--hardware", o->hardware, "the hardware file to emulate")->required();
+  cmd->add_option("--protocol", o->protocol,
+                  "amosii or dynamixel: must be the file's (a check, not a choice)");
+  add_robot_flag(*cmd, o->run);
+  cmd->add_option("--inject", o->injections,
+                  "a fault from command frame STEP on, repeatable: drop=P@STEP, corrupt=P@STEP "
+                  "(answer bytes lost or changed with probability P), latency=MS@STEP, "
+                  "silent=ID@STEP (a servo; the board: any ID), drift=DEG_PER_S@STEP, "
+                  "silent-yaw@STEP");
+  cmd->add_option("--seed", o->seed, "the draws of drop and corrupt")
+      ->check(seed_value())
+      ->capture_default_str();
+  cmd->add_flag("--wire-time", o->wire_time,
+                "each frame and answer also takes its bytes' time on the wire at the file's baud");
+  cmd->add_option("--log", o->log, "write what happened as JSON lines with monotonic times");
+  cmd->add_option("--rehearsal", o->rehearsal,
+                  "write the hardware file with the emulator's ports here, for --hardware");
+  add_sim_flags(*cmd, o->run.sim, o->run.body);
+  cmd->callback([o] { run_emulate(*o); });
+}
+
+}  // namespace multicpg::apps

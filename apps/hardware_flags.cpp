@@ -1,0 +1,66 @@
+#include "apps/hardware_flags.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "apps/flag_checks.h"
+#include "common/atomic_file.h"
+#include "common/errors.h"
+
+namespace multicpg::apps {
+
+void add_hardware_flags(CLI::App& cmd, hw::HardwareFlags& flags) {
+  cmd.add_option("--hardware", flags.file,
+                 "run on a real robot through this hardware file (docs/hardware.md), in real time "
+                 "at the control rate");
+  cmd.add_flag("--lock-step", flags.lock_step,
+               "with --hardware: no pacing, each step as soon as the last one's answers came "
+               "(rehearsal with `multicpg emulate`; never on a real robot)");
+}
+
+hw::HardwareSetup hardware_setup(const experiments::RunSpec& spec, const hw::HardwareFlags& flags,
+                                 const RunFlags& run) {
+  if (flags.lock_step && !flags.given()) throw BadInput("--lock-step needs --hardware");
+  try {
+    return hw::hardware_setup(spec, flags);
+  } catch (const OptionError& e) {
+    throw BadInput(flag_of(e.key(), run) + ": " + e.what());
+  }
+}
+
+hw::StoppedSink stopped_record(bool json, const std::string& file) {
+  return [json, file](const nlohmann::json& record) {
+    if (!file.empty()) write_file_atomic(file, record.dump(2) + "\n");
+    if (json) std::cout << record.dump(2) << "\n" << std::flush;
+  };
+}
+
+std::string hardware_summary(const nlohmann::json& h) {
+  const nlohmann::json& t = h.at("timing");
+  std::string text;
+  const double period = t.at("period_mean_s").get<double>();
+  if (h.at("pacing") == "lock_step") {
+    text = fmt::format("loop: lock-step, {:.0f} steps/s", period > 0.0 ? 1.0 / period : 0.0);
+  } else {
+    text = fmt::format("loop: {:.1f} Hz (period {:.2f} ms, p99 jitter {:.2f} ms, {} overruns)",
+                       period > 0.0 ? 1.0 / period : 0.0, 1e3 * period,
+                       1e3 * t.at("jitter_p99_s").get<double>(), t.at("overruns").get<long>());
+  }
+  std::string errors;
+  for (const char* line : {"bus", "yaw"}) {
+    for (const auto& [kind, count] : h.at("errors").at(line).items()) {
+      if (count.get<long>() > 0) {
+        errors +=
+            fmt::format("{}{} {} {}", errors.empty() ? "" : ", ", line, kind, count.get<long>());
+      }
+    }
+  }
+  text += ", link errors: " + (errors.empty() ? std::string("none") : errors);
+  if (const long clamped = h.at("clamped_targets").get<long>(); clamped > 0) {
+    text += fmt::format(", {} targets clamped to their limits", clamped);
+  }
+  return text;
+}
+
+}  // namespace multicpg::apps

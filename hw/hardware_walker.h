@@ -1,0 +1,147 @@
+// A real robot as the learner's walker (learning::Walker): each control step computes the
+// controller as the simulation does (neural::controller_step, the joint windows of the robot's
+// leg map), clamps the joint targets to the hardware file's limits, sends them over the serial
+// bus, and reads back the yaw (and joint angles and foot contacts where the hardware reports
+// them), paced at the control rate in real time, or in lock-step with an emulator. Bus errors,
+// a silent yaw sensor or a signal stop the robot in its safe posture (or torque off) within the
+// step they are detected in (docs/hardware.md "Safety").
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hw/bus.h"
+#include "hw/hardware_file.h"
+#include "hw/loop_timing.h"
+#include "learning/compensation.h"
+#include "neural/controller.h"
+#include "sim/events.h"
+#include "sim/stepper.h"
+
+namespace multicpg::hw {
+
+// What the controller drives: its model and each leg's joint windows (the angles commands -1..1
+// span; robot/joint_map.h), as the simulation of the same robot has them.
+struct BodyMap {
+  neural::ControllerModel controller;
+  std::vector<std::array<robot::AngleRange, robot::kJointsPerLeg>> windows;
+  double control_dt = 0.0;  // s: the control period (27 Hz: 0.037 s)
+};
+
+enum class Pacing {
+  real_time,  // one step per control period on the monotonic clock
+  lock_step,  // each step as soon as the last one's answers came (rehearsal with the emulator)
+};
+
+// One control step as it happened (the per-step record, docs/hardware.md "Outputs").
+struct StepRow {
+  long step = 0;
+  double time_s = 0.0;  // monotonic, when the command went out
+  sim::Pose2 pose;      // x, y NaN when the position is not sensed
+  std::vector<std::array<double, robot::kJointsPerLeg>> targets;  // rad, clamped
+  Feedback feedback;
+  int errors = 0;  // link errors of this step
+};
+
+// Sees every step (to stream it to a file).
+class StepSink {
+ public:
+  virtual ~StepSink() = default;
+  virtual void row(const StepRow& row) = 0;
+};
+
+// How a run on hardware stopped.
+struct StopRecord {
+  std::string cause;          // what stopped the run
+  std::string message;        // the one line: the cause, the step and what the robot was commanded
+  bool fault = false;         // a fault (or a signal) stopped it, not the end of the run
+  long step = 0;              // steps walked
+  double detected_s = 0.0;    // monotonic: when the cause was seen
+  double commanded_s = 0.0;   // monotonic: when the stop's command went out (0: it could not)
+  std::string command_error;  // why the stop's command could not be sent
+};
+
+// A run stopped by a fault: the robot was commanded to its stop action. RuntimeFailure, so the
+// command exits 1 with its one line.
+class HardwareStop : public RuntimeFailure {
+ public:
+  explicit HardwareStop(const StopRecord& record) : RuntimeFailure(record.message) {}
+};
+
+class HardwareWalker final : public learning::Walker {
+ public:
+  // Opens the ports and runs the start-up check (every servo or the board answers, the yaw
+  // arrives) before anything moves; then starts the controller as sim::Stepper does (`start`'s
+  // periods, the faults due at step 0, the warm-up). `faults` must hold leg faults only (the
+  // controller's; require_hardware_faults). Throws RuntimeFailure naming what failed the check.
+  HardwareWalker(const HardwareFile& file, BodyMap body, const sim::StartSpec& start,
+                 sim::FaultTimeline faults, Pacing pacing, StepSink* sink = nullptr);
+  HardwareWalker(const HardwareWalker&) = delete;
+  HardwareWalker& operator=(const HardwareWalker&) = delete;
+  // Commands the stop action if no stop did yet.
+  ~HardwareWalker() override;
+
+  // One control step. Throws HardwareStop after commanding the stop when a fault is detected,
+  // Interrupted (after the same) on SIGINT or SIGTERM.
+  void step() override;
+  void steps(long n);
+  // The orientation sensor's yaw; x and y are the trunk's position only when the yaw line reports
+  // it (POSE lines), NaN otherwise: never made up.
+  sim::Pose2 pose() const override { return pose_; }
+  long step_count() const override { return walked_; }
+  neural::ControllerState& controller() override { return controller_; }
+  const neural::ControllerModel& controller_model() const override { return body_.controller; }
+  const sim::FaultSchedule& faults() const override { return faults_; }
+  void emit(const sim::Event& event) override;
+  // Called before every step (the steering reflex, as sim::Stepper::set_before_step).
+  void set_before_step(std::function<void(HardwareWalker&)> hook) {
+    before_step_ = std::move(hook);
+  }
+
+  // Commands the stop action (the safe posture, or torque off) once; later calls do nothing.
+  void stop(const std::string& cause, bool fault = false);
+  const std::optional<StopRecord>& stopped() const { return stopped_; }
+  bool senses_position() const { return file_.senses_position(); }
+  LoopTiming timing() const { return clock_.timing(); }
+  // Link errors by kind: the servos' bus, then the yaw line.
+  LinkErrors bus_errors() const { return bus_->errors(); }
+  LinkErrors yaw_errors() const;
+  long clamped_targets() const { return clamped_; }
+  // The learner's events (detection, trials, episodes), as they came.
+  const std::vector<sim::Event>& events() const { return events_; }
+
+ private:
+  void start_check();
+  JointCounts counts(const std::vector<std::array<double, robot::kJointsPerLeg>>& angles);
+  [[noreturn]] void fail(const std::string& cause);
+  bool read_yaw(std::vector<StepError>& errors, const Feedback& feedback);
+
+  const HardwareFile& file_;
+  BodyMap body_;
+  neural::ControllerState controller_;
+  sim::FaultSchedule faults_;
+  std::unique_ptr<Bus> bus_;
+  std::unique_ptr<YawLine> yaw_;
+  LoopClock clock_;
+  StepSink* sink_;
+  std::function<void(HardwareWalker&)> before_step_;
+  sim::Pose2 pose_;
+  long walked_ = 0;
+  long clamped_ = 0;
+  int bad_steps_ = 0;            // bus: steps in a row with an error
+  int silent_steps_ = 0;         // yaw: steps in a row without a reading
+  LinkErrors board_yaw_errors_;  // an AMOSII yaw input that read no heading
+  std::vector<sim::Event> events_;
+  std::optional<StopRecord> stopped_;
+};
+
+// Throws BadInput unless every fault of `faults` can be enacted on hardware: the paper's leg
+// fault (the controller holds the leg's posture); the others are a real robot's physics or
+// sensors.
+void require_hardware_faults(const robot::Morphology& morph, const sim::FaultTimeline& faults);
+
+}  // namespace multicpg::hw

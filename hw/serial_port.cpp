@@ -1,0 +1,161 @@
+#include "hw/serial_port.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <utility>
+
+#include "common/errors.h"
+
+namespace multicpg::hw {
+namespace {
+
+struct Baud {
+  int rate;
+  speed_t constant;
+};
+constexpr std::array<Baud, 30> kBauds{
+    {{50, B50},           {75, B75},           {110, B110},         {134, B134},
+     {150, B150},         {200, B200},         {300, B300},         {600, B600},
+     {1200, B1200},       {1800, B1800},       {2400, B2400},       {4800, B4800},
+     {9600, B9600},       {19200, B19200},     {38400, B38400},     {57600, B57600},
+     {115200, B115200},   {230400, B230400},   {460800, B460800},   {500000, B500000},
+     {576000, B576000},   {921600, B921600},   {1000000, B1000000}, {1152000, B1152000},
+     {1500000, B1500000}, {2000000, B2000000}, {2500000, B2500000}, {3000000, B3000000},
+     {3500000, B3500000}, {4000000, B4000000}}};
+
+speed_t baud_constant(int baud) {
+  for (const Baud& b : kBauds) {
+    if (b.rate == baud) return b.constant;
+  }
+  require_baud(baud);
+  return B0;
+}
+
+std::string system_error(const std::string& what) {
+  return what + ": " + std::strerror(errno);
+}
+
+}  // namespace
+
+double monotonic_s(Clock::time_point t) {
+  return std::chrono::duration<double>(t.time_since_epoch()).count();
+}
+
+std::string baud_rates_text() {
+  std::string text;
+  for (const Baud& b : kBauds) text += (text.empty() ? "" : ", ") + std::to_string(b.rate);
+  return text;
+}
+
+void require_baud(int baud) {
+  for (const Baud& b : kBauds) {
+    if (b.rate == baud) return;
+  }
+  throw BadInput("baud " + std::to_string(baud) + " is not a termios rate (" + baud_rates_text() +
+                 ")");
+}
+
+SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
+  const speed_t speed = baud_constant(baud);
+  fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (fd_ < 0) throw RuntimeFailure(system_error("cannot open port " + path));
+  termios t{};
+  if (::tcgetattr(fd_, &t) != 0) {
+    const std::string message = system_error("port " + path + " is not a serial line");
+    ::close(fd_);
+    throw RuntimeFailure(message);
+  }
+  ::cfmakeraw(&t);  // 8 data bits, no parity, no echo, no translation
+  t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | CRTSCTS);  // one stop bit, no flow control
+  t.c_cflag |= CLOCAL | CREAD;
+  t.c_cc[VMIN] = 0;  // reads return what has come; poll() waits
+  t.c_cc[VTIME] = 0;
+  if (::cfsetispeed(&t, speed) != 0 || ::cfsetospeed(&t, speed) != 0 ||
+      ::tcsetattr(fd_, TCSANOW, &t) != 0) {
+    const std::string message = system_error("cannot set up port " + path);
+    ::close(fd_);
+    throw RuntimeFailure(message);
+  }
+  drop_input();
+}
+
+SerialPort::~SerialPort() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void SerialPort::write(std::span<const std::uint8_t> bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) throw RuntimeFailure(system_error("cannot write to port " + path_));
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+std::size_t SerialPort::read_some(Bytes& into, Clock::time_point deadline) {
+  for (;;) {
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+    pollfd p{fd_, POLLIN, 0};
+    const int ready = ::poll(&p, 1, static_cast<int>(std::max<long>(0, left.count())));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready < 0) throw RuntimeFailure(system_error("cannot read port " + path_));
+    if (ready == 0) return 0;
+    std::array<std::uint8_t, 512> buffer{};
+    const ssize_t n = ::read(fd_, buffer.data(), buffer.size());
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n < 0) throw RuntimeFailure(system_error("cannot read port " + path_));
+    if (n == 0) {
+      // POLLHUP with nothing to read: the other end is gone (a pty whose emulator ended).
+      if ((p.revents & (POLLHUP | POLLERR)) != 0) {
+        throw RuntimeFailure("port " + path_ + " hung up");
+      }
+      if (Clock::now() >= deadline) return 0;
+      continue;
+    }
+    into.insert(into.end(), buffer.begin(), buffer.begin() + n);
+    return static_cast<std::size_t>(n);
+  }
+}
+
+void SerialPort::drop_input() {
+  ::tcflush(fd_, TCIFLUSH);
+}
+
+void SerialPort::wait_quiet(Clock::duration quiet, Clock::time_point give_up) {
+  Bytes late;
+  for (;;) {
+    const Clock::time_point now = Clock::now();
+    if (now >= give_up || read_some(late, std::min(now + quiet, give_up)) == 0) return;
+    late.clear();
+  }
+}
+
+Pty open_pty() {
+  Pty pty;
+  termios t{};
+  ::cfmakeraw(&t);
+  t.c_cflag |= CLOCAL | CREAD;
+  std::array<char, 256> name{};
+  if (::openpty(&pty.master, &pty.slave, name.data(), &t, nullptr) != 0) {
+    throw RuntimeFailure(system_error("cannot open a pseudo-terminal"));
+  }
+  ::fcntl(pty.master, F_SETFD, FD_CLOEXEC);
+  ::fcntl(pty.slave, F_SETFD, FD_CLOEXEC);
+  pty.path = name.data();
+  return pty;
+}
+
+void close_pty(Pty& pty) {
+  if (pty.slave >= 0) ::close(std::exchange(pty.slave, -1));
+  if (pty.master >= 0) ::close(std::exchange(pty.master, -1));
+}
+
+}  // namespace multicpg::hw

@@ -1,0 +1,41 @@
+// A rehearsal for a test: `multicpg emulate` on a copy of an example hardware file (its timeouts
+// widened so a busy machine's scheduling is not taken for a fault), the rehearsal file the host
+// commands use (--hardware), and the emulator's log.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tests/cli_process.h"
+
+namespace multicpg::testing {
+
+class Rehearsal {
+ public:
+  // `example`: a file of examples/hardware; every `timeout_ms = ` in it becomes `timeout_ms`;
+  // `edits` then replace text in it (from, to); `args`: more emulator flags (--inject ...).
+  Rehearsal(const std::string& example, int timeout_ms, const std::vector<std::string>& args = {},
+            const std::vector<std::pair<std::string, std::string>>& edits = {});
+  ~Rehearsal();
+
+  const std::string& file() const { return rehearsal_; }
+  const std::string& dir() const { return dir_; }
+  // Waits for the emulator to end (it does when the host has hung up); false if it hangs.
+  bool finish();
+  int exit_code() const { return emulator_->exit_code(); }
+  std::string out() const { return emulator_->out(); }
+  std::string err() const { return emulator_->err(); }
+  // The log's events of `kind` ("posture", "torque_off", "inject", ...).
+  std::vector<nlohmann::json> events(const std::string& kind) const;
+
+ private:
+  std::string dir_;
+  std::string rehearsal_;
+  std::string log_;
+  std::unique_ptr<CliProcess> emulator_;
+};
+
+}  // namespace multicpg::testing
