@@ -9,6 +9,7 @@
 #include "apps/commands.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -27,6 +28,7 @@ struct LearnOptions {
   RunFlags run;  // robot, faults, learning and simulation flags
   bool json = false;
   std::string out;
+  std::string replay;
 };
 
 std::string period_cells(const std::vector<int>& periods,
@@ -114,10 +116,11 @@ void run_learn(const LearnOptions& o) {
     steps.emplace(dir / "steps.csv");
     rows.emplace(steps->stream(), morph, (dir / "steps.csv").string());
   }
+  ReplayOutput replay(o.replay);
   const sim::SimModel model = experiments::make_run_model(spec);
 
-  const experiments::LearningRun run =
-      experiments::run_learning(model, spec, 0, rows ? &*rows : nullptr);
+  sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
+  const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &observers);
   const learning::LearningResult& r = run.result;
   const nlohmann::json json = experiments::learn_json(spec, r);
 
@@ -126,6 +129,7 @@ void run_learn(const LearnOptions& o) {
     write_file_atomic(dir / "trace.csv", trace_csv(morph, r));
     steps->commit();
   }
+  replay.write();
   if (o.json) {
     std::cout << json.dump(2) << "\n";
     return;
@@ -154,6 +158,7 @@ void run_learn(const LearnOptions& o) {
   }
   std::cout << "\n";
   if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
+  if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
 }
 
 }  // namespace
@@ -169,6 +174,7 @@ void register_learn(CLI::App& app) {
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");
+  add_replay_flag(*cmd, opts->replay);
   cmd->callback([opts] { run_learn(*opts); });
 }
 

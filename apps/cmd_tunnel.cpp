@@ -10,6 +10,7 @@
 #include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/errors.h"
@@ -26,7 +27,8 @@ struct TunnelOptions {
   RunFlags run;  // robot, the legs that fail, learning and simulation flags
   bool learn = false;
   long max_steps = experiments::kTunnelMaxSteps;
-  std::string video;  // .mp4 to film the tunnel walk; empty = none
+  std::string video;   // .mp4 to film the tunnel walk; empty = none
+  std::string replay;  // .html of the tunnel walk; empty = none
   bool json = false;
   bool scale_tunnel = false;
 };
@@ -60,9 +62,12 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
           << " m x " << corridor.scene.tunnel_width << " m";
     observer.emplace(*film, label.str());
   }
+  ReplayOutput replay(o.replay);
+  sim::Observers observers({observer ? &*observer : nullptr, replay.observer()});
   const experiments::TunnelOutcome out =
-      experiments::run_tunnel(spec, corridor, o.max_steps, observer ? &*observer : nullptr);
+      experiments::run_tunnel(spec, corridor, o.max_steps, &observers);
   if (film) film->finish();
+  replay.write();
   const experiments::TunnelRun& run = out.run;
   if (o.json) {
     std::cout << experiments::tunnel_json(spec, out, scale).dump(2) << "\n";
@@ -93,6 +98,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
             << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
             << "° (+ = left)\n";
   if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
+  if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
 }
 
 }  // namespace
@@ -114,6 +120,7 @@ void register_tunnel(CLI::App& app) {
       ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
+  add_replay_flag(*cmd, o->replay);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->add_flag("--scale-tunnel", o->scale_tunnel,
                 "scale the tunnel's length and width by the robot's width (its feet's span at the "

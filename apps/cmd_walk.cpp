@@ -10,6 +10,7 @@
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -34,6 +35,7 @@ struct WalkOptions {
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
   std::string csv;
+  std::string replay;
   bool json = false;
 };
 
@@ -130,8 +132,10 @@ void run_walk(const WalkOptions& o) {
   if (!o.csv.empty()) {
     csv.emplace(o.csv);
     rows.emplace(csv->stream(), morph, o.csv);
-    spec.observer = &*rows;
   }
+  ReplayOutput replay(o.replay);
+  sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
+  spec.observer = &observers;
 
   const sim::SimModel model = experiments::make_run_model(run_spec);
   run.control_dt = model.control_dt;
@@ -143,12 +147,14 @@ void run_walk(const WalkOptions& o) {
     throw BadInput(flag_of(e.key(), o.run) + ": " + e.what());
   }
   if (csv) csv->commit();
+  replay.write();
   if (o.json) {
     nlohmann::json json = to_json(run, result);
     experiments::record_robot_file(json, run_spec);
     std::cout << json.dump(2) << "\n";
   } else {
     print_summary(std::cout, run, result);
+    if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   }
 }
 
@@ -174,6 +180,7 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--csv", opts->csv,
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");
+  add_replay_flag(*cmd, opts->replay);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the summary");
   cmd->callback([opts] { run_walk(*opts); });
 }

@@ -24,6 +24,7 @@ void register_figure(CLI::App& app);
 void register_landscape(CLI::App& app);
 void register_calibrate(CLI::App& app);
 void register_run(CLI::App& app);  // run, rerun, merge
+void register_replay(CLI::App& app);
 
 // Walks a landscape in OUT (resumable), draws its map and prints what holds: `landscape` and
 // `run` of a kind = "landscape" file.
