@@ -310,8 +310,8 @@ TEST(Replay, LearningTimelineHoldsEveryEventOfTheRun) {
     EXPECT_EQ(e.at("trial"), std::to_string(trace[t].at("trial").get<int>()));
     std::string periods;
     for (const robot::Leg& leg : morph.legs) {
-      periods += (periods.empty() ? "" : ",") +
-                 std::to_string(trace[t].at("periods").at(leg.name).get<int>());
+      if (!periods.empty()) periods += ',';
+      periods += std::to_string(trace[t].at("periods").at(leg.name).get<int>());
     }
     EXPECT_EQ(e.at("periods"), periods);
     EXPECT_NEAR(std::stod(e.at("deviation").get<std::string>()),
@@ -463,7 +463,14 @@ TEST(Replay, ExperimentRunFilesReplayAndBadRunFilesAreRefused) {
   expect_bad_input(
       "replay " + (out / "runs" / "damaged.json").string() + " --out " + (dir / "x.html").string(),
       "damaged.json");
-  expect_bad_input("walk --steps 10 --replay " + (dir / "x.mp4").string(), "--replay");
+  // A page that cannot be written fails before any run.
+  for (const std::string& command :
+       std::vector<std::string>{"walk --steps 10", "learn --disable R1", "tunnel --disable R1",
+                                "render --out " + (dir / "r.png").string()}) {
+    expect_bad_input(command + " --replay " + (dir / "x.mp4").string(), "--replay");
+    expect_bad_input(command + " --replay " + (dir / "no" / "x.html").string(), "--replay");
+  }
+  expect_bad_input("replay " + run.string() + " --out " + (dir / "x.png").string(), "x.png");
   EXPECT_FALSE(fs::exists(dir / "x.html"));
   fs::remove_all(dir);
 }

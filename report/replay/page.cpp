@@ -221,7 +221,15 @@ json paint_json(const Recording& r, const ReplayPaint& p) {
   for (const ReplayReshape& s : p.reshaped) {
     reshaped.push_back({{"geom", s.geom}, {"pos", s.pos}, {"quat", s.quat}, {"size", s.size}});
   }
-  return {{"step", p.step}, {"faults", p.faults}, {"colours", colours}, {"reshaped", reshaped}};
+  json legs = json::object();
+  for (const auto& [leg, rgba] : p.legs) {
+    legs[r.scene.morphology.legs[leg].name] = colour_json(rgba);
+  }
+  return {{"step", p.step},
+          {"faults", p.faults},
+          {"colours", colours},
+          {"legs", legs},
+          {"reshaped", reshaped}};
 }
 
 // Splits the page template at "@NAME@" markers and joins it with the values, in one pass (so

@@ -198,6 +198,9 @@ void ReplayRecorder::paint(const sim::SimModel& model, const sim::SimState& stat
   ReplayPaint p;
   p.step = step;
   p.colours = fault_colours(model, state.faults.in_force);
+  for (const sim::Fault& f : state.faults.in_force) {
+    for (std::size_t leg : f.legs) p.legs.emplace_back(leg, kind_colour(f.kind));
+  }
   p.faults = faults_caption(model.controller.morphology, state.faults.in_force);
   const mjModel* shared = model.mj.get();
   const mjModel* now = sim::physics_model(model, state);

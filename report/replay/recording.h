@@ -91,11 +91,13 @@ struct ReplayReshape {
   std::array<double, 3> size{};
 };
 
-// The faults in force from `step` on: each struck geom's colour (fault_colours), the faults as
-// the films' caption names them, and the geoms they reshape.
+// The faults in force from `step` on: each struck geom's colour (fault_colours), each struck
+// leg's (its fault kind's colour), the faults as the films' caption names them, and the geoms
+// they reshape.
 struct ReplayPaint {
   long step = 0;
   Colouring colours;  // model geom ids
+  std::vector<std::pair<std::size_t, Rgba>> legs;
   std::string faults;
   std::vector<ReplayReshape> reshaped;
 };
