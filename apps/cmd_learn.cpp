@@ -109,6 +109,7 @@ void run_learn(const LearnOptions& o) {
   const std::filesystem::path dir(o.out);
   // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
   // only when the run has ended well (common/atomic_file.h).
+  ReplayOutput replay(o.replay);
   std::optional<AtomicFile> steps;
   std::optional<sim::RecordCsvWriter> rows;
   if (!o.out.empty()) {
@@ -116,7 +117,6 @@ void run_learn(const LearnOptions& o) {
     steps.emplace(dir / "steps.csv");
     rows.emplace(steps->stream(), morph, (dir / "steps.csv").string());
   }
-  ReplayOutput replay(o.replay);
   const sim::SimModel model = experiments::make_run_model(spec);
 
   sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});

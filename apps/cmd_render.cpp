@@ -30,6 +30,7 @@ struct RenderOptions {
 
 void run_render(const RenderOptions& o) {
   report::film_format(o.out);  // an unknown file type fails before any work
+  ReplayOutput replay(o.replay);
   experiments::RunSpec run = run_spec(o.run, o.learn);
   run.sim.scene.tunnel = o.tunnel;
   const sim::SimModel model = experiments::make_run_model(run);
@@ -39,7 +40,6 @@ void run_render(const RenderOptions& o) {
   spec.height = o.height;
   spec.speed = o.speed;
   report::Film film(model, spec);
-  ReplayOutput replay(o.replay);
 
   if (run.learning) {
     report::FilmObserver film_observer(film);

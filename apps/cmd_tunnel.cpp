@@ -40,6 +40,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (!o.video.empty() && report::film_format(o.video) != report::FilmFormat::video) {
     throw BadInput("--video must name an .mp4 file");
   }
+  ReplayOutput replay(o.replay);
   experiments::RunSpec spec = run_spec(o.run, o.learn);
   std::optional<experiments::TunnelScale> scale;
   if (o.scale_tunnel) {
@@ -62,7 +63,6 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
           << " m x " << corridor.scene.tunnel_width << " m";
     observer.emplace(*film, label.str());
   }
-  ReplayOutput replay(o.replay);
   sim::Observers observers({observer ? &*observer : nullptr, replay.observer()});
   const experiments::TunnelOutcome out =
       experiments::run_tunnel(spec, corridor, o.max_steps, &observers);

@@ -127,13 +127,13 @@ void run_walk(const WalkOptions& o) {
   // Every step streams to the CSV as it is made (README: memory flat in the walk's length); the
   // file takes its name only when the walk has ended well (common/atomic_file.h).
   spec.keep_record = false;
+  ReplayOutput replay(o.replay);
   std::optional<AtomicFile> csv;
   std::optional<sim::RecordCsvWriter> rows;
   if (!o.csv.empty()) {
     csv.emplace(o.csv);
     rows.emplace(csv->stream(), morph, o.csv);
   }
-  ReplayOutput replay(o.replay);
   sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
   spec.observer = &observers;
 

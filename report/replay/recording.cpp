@@ -2,10 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "report/fault_colours.h"
-#include "sim/fault_effects.h"
 
 namespace multicpg::report {
 namespace {

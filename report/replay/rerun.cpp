@@ -58,7 +58,7 @@ void set_robot(experiments::RunSpec& spec, const json& result, const std::string
     const auto recorded = result.at("robot_file").get<experiments::RobotFileRecord>();
     spec.robot_file = experiments::load_run_robot_file(recorded.path);
     if (spec.robot_file->record != recorded) {
-      throw BadInput(quoted(name) + " was walked by the robot file " + quoted(recorded.path) +
+      throw BadInput(name + " was walked by the robot file " + quoted(recorded.path) +
                      ", which has changed since");
     }
     spec.robot = spec.robot_file->file.layout;
@@ -72,7 +72,7 @@ void check(const experiments::RunSpec& spec, const std::string& name) {
   try {
     experiments::validate(spec);
   } catch (const OptionError& e) {
-    throw BadInput(quoted(name) + ": " + e.key() + " " + e.what());
+    throw BadInput(name + ": " + e.key() + " " + e.what());
   }
 }
 
@@ -85,7 +85,7 @@ bool reruns_as_saved(const json& saved, const json& again) {
 }
 
 [[noreturn]] void differs(const std::string& name) {
-  throw BadInput(quoted(name) +
+  throw BadInput(name +
                  " does not rerun as saved: it was made with other simulation options than these "
                  "(terrain, body, servo gain: give them as flags) or by another version of "
                  "multicpg");
@@ -118,7 +118,7 @@ RerunReplay rerun_experiment_run(const fs::path& file) {
   RerunReplay out;
   ReplayRecorder recorder;
   const json result = experiments::run_sweep_task(spec, &recorder);
-  if (saved->at("result") != result) differs(file.string());
+  if (saved->at("result") != result) differs(quoted(file.string()));
   out.recording = recorder.recording();
   out.title = "run " + id + " of " + dir.filename().string() + ": " +
               experiments::morphology(spec).name + ", " +
@@ -158,7 +158,7 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   try {
     r = sim::walk(model, walk);
   } catch (const OptionError& e) {
-    throw BadInput(quoted(name) + ": " + e.key() + " " + e.what());
+    throw BadInput(name + ": " + e.key() + " " + e.what());
   }
   // What the walk measured decides whether it is the saved one: any other option moves the robot.
   const json again{{"distance_m", r.distance_m},
@@ -215,7 +215,7 @@ RerunReplay rerun_learning(const json& saved, const std::string& name, const sim
                                       ", " + std::string(learning::to_string(options.mode)) +
                                       " mode"};
   } catch (const json::exception& e) {
-    throw BadInput(quoted(name) + " is not a learning result of this version of multicpg (" +
+    throw BadInput(name + " is not a learning result of this version of multicpg (" +
                    first_line(e.what()) + ")");
   }
 }
@@ -232,7 +232,7 @@ RerunReplay rerun_saved(const fs::path& path, const sim::SimOptions& sim) {
   if (!fs::exists(path, error)) throw BadInput("cannot open the run file " + quoted(path.string()));
   if (is_experiment_run(path)) return rerun_experiment_run(path);
   const json saved = read_json(path);
-  const std::string name = path.string();
+  const std::string name = quoted(path.string());
   switch (kind_of(saved)) {
     case Saved::learning:
       return rerun_learning(saved, name, sim);
@@ -240,17 +240,17 @@ RerunReplay rerun_saved(const fs::path& path, const sim::SimOptions& sim) {
       try {
         return rerun_walk(saved, name, sim);
       } catch (const json::exception& e) {
-        throw BadInput(quoted(name) + " is not a walk result of this version of multicpg (" +
+        throw BadInput(name + " is not a walk result of this version of multicpg (" +
                        first_line(e.what()) + ")");
       }
     case Saved::tunnel:
-      throw BadInput(quoted(name) +
+      throw BadInput(name +
                      " is a tunnel result, which does not record the legs that failed: make its "
                      "replay with `multicpg tunnel ... --replay FILE.html`");
     case Saved::unknown:
       break;
   }
-  throw BadInput(quoted(name) +
+  throw BadInput(name +
                  " is not a run this version of multicpg replays (a run file DIR/runs/ID.json, "
                  "or the JSON of learn or walk)");
 }

@@ -38,7 +38,7 @@ RerunReplay rerun_saved(const std::filesystem::path& path, const sim::SimOptions
 bool is_experiment_run(const std::filesystem::path& path);
 
 // A learning result (the JSON of `learn --json`) made again and recorded; `name` names it in
-// messages. Throws BadInput as rerun_saved does.
+// messages ("'learn.json'", "the result"). Throws BadInput as rerun_saved does.
 RerunReplay rerun_learning(const nlohmann::json& result, const std::string& name,
                            const sim::SimOptions& sim);
 
