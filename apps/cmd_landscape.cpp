@@ -64,7 +64,8 @@ void run(const LandscapeOptions& o) {
     throw BadInput("--every-loss: walks every leg set itself; leave out --disable");
   }
   if (o.every_loss && !o.learned.empty()) {
-    throw BadInput("--learned: marks combinations of one scenario; it does not go with --every-loss");
+    throw BadInput(
+        "--learned: marks combinations of one scenario; it does not go with --every-loss");
   }
   if (!o.every_loss && o.disable.empty()) {
     throw BadInput("--disable: name at least one leg, e.g. R1 (or --every-loss)");
@@ -82,11 +83,10 @@ void run(const LandscapeOptions& o) {
   // The same document an experiment file of kind "landscape" holds, resolved the same way.
   nlohmann::json document = experiments::landscape_document(spec);
   if (o.every_loss) document["scenarios"] = "every";
-  const experiments::Sweep sweep =
-      experiments::resolve_sweep(document, {o.max_runs, "--max-runs"});
+  const experiments::Sweep sweep = experiments::resolve_sweep(document, {o.max_runs, "--max-runs"});
   if (experiments::is_primary_process()) ensure_writable_dir(o.out);
-  run_landscapes_and_report(sweep.landscapes, o.out,
-                            o.jobs.value_or(experiments::default_jobs()), learned);
+  run_landscapes_and_report(sweep.landscapes, o.out, o.jobs.value_or(experiments::default_jobs()),
+                            learned);
 }
 
 // One landscape: what holds and the best.
@@ -131,7 +131,8 @@ void run_landscapes_and_report(const std::vector<experiments::LandscapeSpec>& sp
     report::draw_landscape(l, {}, experiments::landscape_set_dir(out, l.spec));
   }
   const robot::Morphology& morph = robot::morphology(specs.front().kind);
-  std::cout << morph.name << ", " << specs.size() << " scenarios (share of combinations that hold):\n";
+  std::cout << morph.name << ", " << specs.size()
+            << " scenarios (share of combinations that hold):\n";
   std::cout << std::fixed << std::setprecision(1);
   for (const experiments::Landscape& l : landscapes) {
     const nlohmann::json summary = experiments::landscape_summary(l, {});

@@ -10,6 +10,7 @@
 #include "apps/hardware_flags.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -30,6 +31,7 @@ struct LearnOptions {
   bool json = false;
   std::string out;
   hw::HardwareFlags hardware;  // learn on a real robot
+  std::string replay;
 };
 
 std::string period_cells(const std::vector<int>& periods,
@@ -147,6 +149,7 @@ void print_learning(const experiments::RunSpec& spec, const experiments::Learnin
 // learn --hardware: the same learning on a real robot (docs/hardware.md). A run a fault or a
 // signal stops keeps its record so far in --out and --json.
 void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& spec) {
+  if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
   const std::filesystem::path dir(o.out);
   std::optional<AtomicFile> steps;
@@ -199,6 +202,7 @@ void run_learn(const LearnOptions& o) {
   const std::filesystem::path dir(o.out);
   // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
   // only when the run has ended well (common/atomic_file.h).
+  ReplayOutput replay(o.replay);
   std::optional<AtomicFile> steps;
   std::optional<sim::RecordCsvWriter> rows;
   if (!o.out.empty()) {
@@ -208,22 +212,24 @@ void run_learn(const LearnOptions& o) {
   }
   const sim::SimModel model = experiments::make_run_model(spec);
 
-  const experiments::LearningRun run =
-      experiments::run_learning(model, spec, 0, rows ? &*rows : nullptr);
+  sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
+  const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &observers);
   const learning::LearningResult& r = run.result;
   const nlohmann::json json = experiments::learn_json(spec, r);
 
   if (!o.out.empty()) {
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
-    write_file_atomic(dir / "trace.csv", trace_csv(morph, options.learner, r));
+    write_file_atomic(dir / "trace.csv", trace_csv(morph, spec.learning->learner, r));
     steps->commit();
   }
+  replay.write();
   if (o.json) {
     std::cout << json.dump(2) << "\n";
     return;
   }
   print_learning(spec, run);
   if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
+  if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
 }
 
 }  // namespace
@@ -240,6 +246,7 @@ void register_learn(CLI::App& app) {
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");
+  add_replay_flag(*cmd, opts->replay);
   cmd->callback([opts] { run_learn(*opts); });
 }
 

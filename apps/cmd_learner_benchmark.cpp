@@ -82,12 +82,12 @@ void run(const BenchmarkOptions& o) {
       return s.str();
     };
     std::cout << "  " << std::left << std::setw(10) << l.at("learner").at("name").get<std::string>()
-              << std::right << " held " << std::setw(5)
-              << 100.0 * l.at("share_held").get<double>() << "% [" << std::setw(5)
-              << 100.0 * l.at("share_low").get<double>() << ", " << std::setw(5)
-              << 100.0 * l.at("share_high").get<double>() << "], trials to held: median "
-              << text(l.at("median_trials")) << " (quartiles " << text(l.at("q1_trials")) << "-"
-              << text(l.at("q3_trials")) << "), false stops " << l.at("false_stops") << "\n";
+              << std::right << " held " << std::setw(5) << 100.0 * l.at("share_held").get<double>()
+              << "% [" << std::setw(5) << 100.0 * l.at("share_low").get<double>() << ", "
+              << std::setw(5) << 100.0 * l.at("share_high").get<double>()
+              << "], trials to held: median " << text(l.at("median_trials")) << " (quartiles "
+              << text(l.at("q1_trials")) << "-" << text(l.at("q3_trials")) << "), false stops "
+              << l.at("false_stops") << "\n";
   }
   std::cout << std::setprecision(1) << "replayed in " << b.seconds << " s; wrote " << o.out
             << "/{benchmark.csv,benchmark.md,runs.csv,summary.json}\n";
@@ -114,7 +114,9 @@ void register_learner_benchmark(CLI::App& app) {
   cmd->add_option("--seeds", o->seeds, "runs per scenario and learner")
       ->check(in(experiments::kBenchmarkSeedsLimits))
       ->capture_default_str();
-  cmd->add_option("--seed", o->seed, "base seed of the runs")->check(seed_value())->capture_default_str();
+  cmd->add_option("--seed", o->seed, "base seed of the runs")
+      ->check(seed_value())
+      ->capture_default_str();
   cmd->add_option("--budget", o->budget, "trials within which a run counts as held")
       ->check(in(experiments::kBenchmarkBudgetLimits))
       ->capture_default_str();

@@ -6,6 +6,7 @@
 #include "apps/flag_checks.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/errors.h"
@@ -21,6 +22,7 @@ struct RenderOptions {
   bool learn = false;
   bool tunnel = false;
   std::string out;
+  std::string replay;
   int width = report::kDefaultFrameWidth;
   int height = report::kDefaultFrameHeight;
   int speed = 1;
@@ -28,6 +30,7 @@ struct RenderOptions {
 
 void run_render(const RenderOptions& o) {
   report::film_format(o.out);  // an unknown file type fails before any work
+  ReplayOutput replay(o.replay);
   experiments::RunSpec run = run_spec(o.run, o.learn);
   run.sim.scene.tunnel = o.tunnel;
   const sim::SimModel model = experiments::make_run_model(run);
@@ -39,13 +42,16 @@ void run_render(const RenderOptions& o) {
   report::Film film(model, spec);
 
   if (run.learning) {
-    report::FilmObserver observer(film);
+    report::FilmObserver film_observer(film);
+    sim::Observers observer({&film_observer, replay.observer()});
     const experiments::LearningRun learned = experiments::run_learning(model, run, 0, &observer);
     const std::string summary = std::string(learning::to_string(learned.result.outcome)) +
                                 " after " + std::to_string(learned.result.trials) + " trials";
     if (film.format() == report::FilmFormat::picture) film.picture(learned.final_state, summary);
     film.finish();
+    replay.write();
     std::cout << summary << "; wrote " << o.out << " (" << film.frames() << " frames)\n";
+    if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
     return;
   }
   sim::WalkSpec walk;
@@ -54,7 +60,8 @@ void run_render(const RenderOptions& o) {
   walk.steps = o.steps;
   walk.keep_record = false;  // the film sees every step; nothing kept per step
   report::FilmObserver observer(film, "walking");
-  walk.observer = &observer;
+  sim::Observers observers({&observer, replay.observer()});
+  walk.observer = &observers;
   sim::WalkResult r;
   try {
     r = sim::walk(model, walk);
@@ -65,8 +72,10 @@ void run_render(const RenderOptions& o) {
     film.picture(r.final_state, observer.caption());
   }
   film.finish();
+  replay.write();
   std::cout << "walked " << r.distance_m << " m; wrote " << o.out << " (" << film.frames()
             << " frames)\n";
+  if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
 }
 
 }  // namespace
@@ -76,6 +85,7 @@ void register_render(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "render", "render a walk or a learning run to a video (.mp4) or picture (.png), headless");
   cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
+  add_replay_flag(*cmd, o->replay);
   add_walk_flags(*cmd, o->run);
   cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")
       ->check(in(sim::kRunStepsLimits))

@@ -11,6 +11,7 @@
 #include "apps/hardware_flags.h"
 #include "apps/learning_options.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/errors.h"
@@ -27,7 +28,8 @@ struct TunnelOptions {
   RunFlags run;  // robot, the legs that fail, learning and simulation flags
   bool learn = false;
   long max_steps = experiments::kTunnelMaxSteps;
-  std::string video;  // .mp4 to film the tunnel walk; empty = none
+  std::string video;   // .mp4 to film the tunnel walk; empty = none
+  std::string replay;  // .html of the tunnel walk; empty = none
   bool json = false;
   bool scale_tunnel = false;
   hw::HardwareFlags hardware;  // a real robot, in a real tunnel
@@ -39,6 +41,7 @@ struct TunnelOptions {
 // yaw change is, and whether it passed is the operator's to see.
 void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& spec) {
   if (!o.video.empty()) throw BadInput("--video films the simulation; not with --hardware");
+  if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
   if (o.scale_tunnel)
     throw BadInput("--scale-tunnel scales the simulated tunnel; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
@@ -92,6 +95,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (!o.video.empty() && report::film_format(o.video) != report::FilmFormat::video) {
     throw BadInput("--video must name an .mp4 file");
   }
+  ReplayOutput replay(o.replay);
   experiments::RunSpec spec = run_spec(o.run, o.learn);
   if (o.hardware.given() || o.hardware.lock_step) {
     run_tunnel_on_hardware(o, spec);
@@ -118,9 +122,11 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
           << " m x " << corridor.scene.tunnel_width << " m";
     observer.emplace(*film, label.str());
   }
+  sim::Observers observers({observer ? &*observer : nullptr, replay.observer()});
   const experiments::TunnelOutcome out =
-      experiments::run_tunnel(spec, corridor, o.max_steps, observer ? &*observer : nullptr);
+      experiments::run_tunnel(spec, corridor, o.max_steps, &observers);
   if (film) film->finish();
+  replay.write();
   const experiments::TunnelRun& run = out.run;
   if (o.json) {
     std::cout << experiments::tunnel_json(spec, out, scale).dump(2) << "\n";
@@ -151,6 +157,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
             << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
             << "° (+ = left)\n";
   if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
+  if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
 }
 
 }  // namespace
@@ -172,6 +179,7 @@ void register_tunnel(CLI::App& app) {
       ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
+  add_replay_flag(*cmd, o->replay);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->add_flag("--scale-tunnel", o->scale_tunnel,
                 "scale the tunnel's length and width by the robot's width (its feet's span at the "

@@ -11,6 +11,7 @@
 #include "apps/flag_checks.h"
 #include "apps/hardware_flags.h"
 #include "apps/options.h"
+#include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -35,6 +36,7 @@ struct WalkOptions {
   long steps = kDefaultSteps;
   long window = sim::kDefaultWindow;
   std::string csv;
+  std::string replay;
   bool json = false;
   hw::HardwareFlags hardware;  // walk a real robot
 };
@@ -117,6 +119,7 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
 // walk --hardware: the same walk on a real robot (docs/hardware.md): the yaw change of each
 // window, the path angle only where the robot senses its position.
 void run_walk_on_hardware(const WalkOptions& o, const experiments::RunSpec& spec) {
+  if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
   const robot::Morphology& morph = experiments::morphology(spec);
   std::optional<AtomicFile> csv;
@@ -190,13 +193,15 @@ void run_walk(const WalkOptions& o) {
   // Every step streams to the CSV as it is made (README: memory flat in the walk's length); the
   // file takes its name only when the walk has ended well (common/atomic_file.h).
   spec.keep_record = false;
+  ReplayOutput replay(o.replay);
   std::optional<AtomicFile> csv;
   std::optional<sim::RecordCsvWriter> rows;
   if (!o.csv.empty()) {
     csv.emplace(o.csv);
     rows.emplace(csv->stream(), morph, o.csv);
-    spec.observer = &*rows;
   }
+  sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
+  spec.observer = &observers;
 
   const sim::SimModel model = experiments::make_run_model(run_spec);
   run.control_dt = model.control_dt;
@@ -208,12 +213,14 @@ void run_walk(const WalkOptions& o) {
     throw BadInput(flag_of(e.key(), o.run) + ": " + e.what());
   }
   if (csv) csv->commit();
+  replay.write();
   if (o.json) {
     nlohmann::json json = to_json(run, result);
     experiments::record_robot_file(json, run_spec);
     std::cout << json.dump(2) << "\n";
   } else {
     print_summary(std::cout, run, result);
+    if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   }
 }
 
@@ -239,6 +246,7 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--csv", opts->csv,
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");
+  add_replay_flag(*cmd, opts->replay);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the summary");
   add_hardware_flags(*cmd, opts->hardware);
   cmd->callback([opts] { run_walk(*opts); });

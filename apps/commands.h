@@ -26,6 +26,7 @@ void register_learner_benchmark(CLI::App& app);
 void register_calibrate(CLI::App& app);
 void register_run(CLI::App& app);  // run, rerun, merge
 void register_emulate(CLI::App& app);
+void register_replay(CLI::App& app);
 
 // Walks the landscapes in OUT (resumable), draws their maps and prints what holds: `landscape`
 // and `run` of a kind = "landscape" file. One landscape fills OUT; several (a dataset) each fill

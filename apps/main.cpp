@@ -73,6 +73,7 @@ experiments::Ending run(int argc, char** argv) {
   apps::register_calibrate(app);
   apps::register_run(app);
   apps::register_emulate(app);
+  apps::register_replay(app);
   apps::refuse_empty_values(app);
   app.parse_complete_callback([&app] { check_processes(app); });  // before the command runs
   const auto failed = [](int code, const char* what) {

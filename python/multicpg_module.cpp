@@ -35,6 +35,7 @@
 #include "learning/learners.h"
 #include "learning/steering.h"
 #include "python/args.h"
+#include "python/replay.h"
 #include "report/film.h"
 #include "report/render.h"
 #include "robot/body_json.h"
@@ -1088,6 +1089,7 @@ PYBIND11_MODULE(_multicpg, m) {
   namespace report = multicpg::report;
   using py::arg;
   m.doc() = "multicpg: multiple chaotic CPGs driving MuJoCo robots, and their learning.";
+  mp::register_replay(m);
   // One bad call must not end the interpreter: MuJoCo's fatal errors become RuntimeError.
   sim::recover_mujoco_errors();
   // Bad input is the caller's mistake (CLI exit 2), a failed run is not (CLI exit 1).

@@ -1,5 +1,6 @@
 #include "report/html.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 
@@ -63,8 +64,9 @@ nlohmann::json to_json(const Section& s) {
     }
     tables.push_back({{"columns", columns}, {"rows", t.rows}});
   }
-  return {{"id", s.id},         {"title", s.title},   {"paper", s.paper}, {"measured", s.measured},
-          {"images", s.images}, {"videos", s.videos}, {"files", s.files}, {"tables", tables}};
+  return {{"id", s.id},          {"title", s.title},   {"paper", s.paper}, {"measured", s.measured},
+          {"images", s.images},  {"videos", s.videos}, {"files", s.files}, {"tables", tables},
+          {"replays", s.replays}};
 }
 
 Section section_from_json(const nlohmann::json& j) {
@@ -85,6 +87,7 @@ Section section_from_json(const nlohmann::json& j) {
     table.rows = t.at("rows").get<std::vector<std::vector<std::string>>>();
     s.tables.push_back(std::move(table));
   }
+  s.replays = j.value("replays", std::vector<std::string>{});
   return s;
 }
 
@@ -109,10 +112,23 @@ std::string index_html(const std::string& title, const std::string& intro,
           << "\"><figcaption>" << link(png) << " · " << link(sibling(png, ".svg"))
           << " · data: " << link(sibling(png, ".csv")) << "</figcaption></figure>\n";
     }
+    std::vector<std::string> replays = s.replays;
     for (const std::string& mp4 : s.videos) {
       out << "<figure><video src=\"" << html_escape(mp4)
-          << "\" controls preload=\"metadata\" muted></video><figcaption>" << link(mp4)
-          << "</figcaption></figure>\n";
+          << "\" controls preload=\"metadata\" muted></video><figcaption>" << link(mp4);
+      const auto replay = std::find_if(replays.begin(), replays.end(), [&](const std::string& r) {
+        return std::filesystem::path(r).stem() == std::filesystem::path(mp4).stem();
+      });
+      if (replay != replays.end()) {
+        out << " · 3D replay: " << link(*replay);
+        replays.erase(replay);
+      }
+      out << "</figcaption></figure>\n";
+    }
+    if (!replays.empty()) {
+      out << "<p class=\"files\">3D replays:";
+      for (const std::string& r : replays) out << " " << link(r);
+      out << "</p>\n";
     }
     if (!s.files.empty()) {
       out << "<p class=\"files\">Data:";

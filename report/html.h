@@ -20,6 +20,8 @@ struct Section {
   std::vector<std::string> videos;  // MP4
   std::vector<std::string> files;   // further data (CSV, JSON, Markdown)
   std::vector<Table> tables;
+  // 3D replays (HTML, docs/replay.md), linked beside the video of the same name.
+  std::vector<std::string> replays = {};
 };
 
 nlohmann::json to_json(const Section& section);

@@ -52,6 +52,16 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
   // The tripod video plays the quick run's 160 steps in real time: one frame per step.
   EXPECT_EQ(video_frames(root / "videos/walk-tripod.mp4"), 160);
   EXPECT_TRUE(fs::exists(root / "results.md"));
+  // Fig. 8's learning run and each Table 1 tunnel film have their 3D replay beside them
+  // (tests/test_replay.cpp opens replays in Chromium).
+  const std::string index = read_file((root / "index.html").string());
+  for (const char* stem : {"learning-r1", "tunnel-R1-before", "tunnel-R1-after"}) {
+    const fs::path page = root / "replays" / (std::string(stem) + ".html");
+    EXPECT_GT(fs::exists(page) ? fs::file_size(page) : 0, 500'000u) << page;
+    EXPECT_NE(index.find("3D replay: <a href=\"replays/" + std::string(stem) + ".html\">"),
+              std::string::npos)
+        << stem;
+  }
 
   std::string log;
   const std::string dom = open_in_chromium(root / "index.html", log);

@@ -18,6 +18,8 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 - ``State``: a complete, immutable, picklable copy of a simulation; restores bit for bit.
 - ``learn(...)``, ``tunnel(...)``: the CLI's JSON results as dicts, plus the trace as arrays.
 - ``render(sim, width, height)`` -> H x W x 3 uint8 array; ``film(sim, "out.mp4", steps)``.
+- ``replay(sim, "run.html", steps=400)`` or ``replay(learn(...), "learn.html")``: a 3D replay,
+  one HTML page that opens offline in any browser and shows itself inline in Jupyter.
 - ``experiment(file_or_dict, jobs=...)``: a sweep as ``multicpg run`` runs it; its tidy table.
 - ``Annealer``: the annealing search one step at a time; ``env.CompensationEnv``: the learning
   task as a Gymnasium environment (one step = one trial) with its action and observation spaces.
@@ -52,11 +54,13 @@ from ._multicpg import (
     tunnel,
 )
 from . import env, spaces
+from .replay import Replay, replay
 
 __all__ = [
     "Annealer",
     "Fault",
     "Recovery",
+    "Replay",
     "Robot",
     "Simulation",
     "State",
@@ -69,6 +73,7 @@ __all__ = [
     "learn",
     "measure_window",
     "render",
+    "replay",
     "spaces",
     "tunnel",
 ]

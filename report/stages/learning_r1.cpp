@@ -9,6 +9,7 @@
 #include "experiments/paper.h"
 #include "experiments/scenarios.h"
 #include "report/film.h"
+#include "report/replay/page.h"
 #include "report/stages/stage.h"
 #include "robot/leg_sets.h"
 
@@ -70,10 +71,16 @@ Section learning_r1_stage(const StageContext& ctx) {
   spec.record.steps = true;
   const std::filesystem::path video = ctx.dir("videos") / "learning-r1.mp4";
   Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, ctx.sizes.film_speed, {}});
-  FilmObserver observer(film);
+  FilmObserver film_observer(film);
+  ReplayRecorder replay;
+  sim::Observers observer({&film_observer, &replay});
   const experiments::LearningRun run =
       experiments::run_learning(hexapod, spec, kAfterLearningSteps, &observer);
   film.finish();
+  const std::filesystem::path replay_page = ctx.dir("replays") / "learning-r1.html";
+  write_replay(replay.recording(),
+               "Learning with R1 disabled (paper Fig. 8), seed " + std::to_string(ctx.options.seed),
+               replay_page);
   const learning::LearningResult& r = run.result;
   const std::filesystem::path figures = ctx.dir("figures");
 
@@ -149,7 +156,8 @@ Section learning_r1_stage(const StageContext& ctx) {
           {ctx.image(fig8), ctx.image(fig9), ctx.image(fig10), ctx.image(path_fig)},
           {ctx.rel(video)},
           {ctx.rel(figures / "learning-r1.json")},
-          {trace}};
+          {trace},
+          {ctx.rel(replay_page)}};
 }
 
 }  // namespace multicpg::report

@@ -14,6 +14,7 @@
 #include "experiments/paper.h"
 #include "experiments/scenarios.h"
 #include "report/film.h"
+#include "report/replay/page.h"
 #include "report/stages/stage.h"
 #include "robot/leg_sets.h"
 #include "sim/json.h"
@@ -175,6 +176,7 @@ struct Variant {
 struct ScenarioOutput {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> films;
+  std::vector<std::string> replays;  // beside each film, of the same name
   std::string image;
 };
 
@@ -200,19 +202,25 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
         ("tunnel-" + file_stem(name) + (v.path == &paths.before ? "-before" : "-after") + ".mp4");
     std::optional<Film> film;
     std::optional<FilmObserver> observer;
+    ReplayRecorder replay;
     if (v.filmed) {
       film.emplace(corridor, FilmSpec{video, kDefaultFrameWidth, kDefaultFrameHeight,
                                       ctx.sizes.tunnel_film_speed, kTunnelCamera});
       observer.emplace(*film, name + " disabled, " + v.source);
     }
+    sim::Observers observers({observer ? &*observer : nullptr, v.filmed ? &replay : nullptr});
     experiments::TunnelSpec spec;
     spec.start.periods = v.periods;
     spec.faults = sim::fail_at(disabled, 0);
-    const experiments::TunnelRun t =
-        experiments::run_tunnel(corridor, spec, observer ? &*observer : nullptr);
+    const experiments::TunnelRun t = experiments::run_tunnel(corridor, spec, &observers);
     if (film) {
       film->finish();
       out.films.push_back(ctx.rel(video));
+      const std::filesystem::path page =
+          ctx.dir("replays") / video.filename().replace_extension(".html");
+      write_replay(replay.recording(), "The tunnel (Table 1): " + name + " disabled, " + v.source,
+                   page);
+      out.replays.push_back(ctx.rel(page));
     }
     out.rows.push_back({name, robot::period_map_text(morph, v.periods, disabled), v.source,
                         fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
@@ -268,11 +276,13 @@ Section tunnel_stage(const StageContext& ctx) {
                 {"paper (deg)"}},
                {}};
   std::vector<std::string> films;
+  std::vector<std::string> replays;
   std::vector<std::string> images;
   for (std::future<ScenarioOutput>& f : filmed) {
     ScenarioOutput out = f.get();
     for (auto& row : out.rows) detail.add_row(std::move(row));
     films.insert(films.end(), out.films.begin(), out.films.end());
+    replays.insert(replays.end(), out.replays.begin(), out.replays.end());
     images.push_back(out.image);
   }
   std::vector<std::vector<BodyScenario>> results(bodies.size());
@@ -317,7 +327,8 @@ Section tunnel_stage(const StageContext& ctx) {
           images,
           films,
           {},
-          {side_by_side_table(bodies, results), detail}};
+          {side_by_side_table(bodies, results), detail},
+          replays};
 }
 
 }  // namespace multicpg::report

@@ -1,0 +1,165 @@
+#include "python/replay.h"
+
+#include <optional>
+#include <string>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "common/sealed_cbor.h"
+#include "experiments/run_robot.h"
+#include "experiments/run_spec.h"
+#include "learning/steering.h"
+#include "python/args.h"
+#include "report/replay/page.h"
+#include "report/replay/recording.h"
+#include "report/replay/rerun.h"
+#include "sim/checkpoint.h"
+#include "sim/json.h"
+#include "sim/stepper.h"
+#include "sim/walk.h"
+
+// GCC 12 warns that the type macro's default object's std::optional may be uninitialized where
+// it inlines from_json (a known false positive with std::optional), as report/replay/rerun.cpp.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "learning/json.h"
+#pragma GCC diagnostic pop
+
+namespace multicpg::python {
+namespace {
+
+using nlohmann::json;
+
+// What Simulation.state().to_bytes() holds (the module's State, python/multicpg_module.cpp).
+constexpr const char* kStateFormat = "multicpg state";
+constexpr int kStateVersion = 1;
+
+// The simulation a robot key describes ({"robot", "robot_file", "sim"}: a Robot's pickled form).
+experiments::RunSpec robot_spec(const json& key, std::string_view name) {
+  experiments::RunSpec spec;
+  spec.sim = key.at("sim").get<sim::SimOptions>();
+  if (key.contains("robot_file")) {
+    const auto recorded = key.at("robot_file").get<experiments::RobotFileRecord>();
+    spec.robot_file = named(name, [&] { return experiments::load_run_robot_file(recorded.path); });
+    if (spec.robot_file->record != recorded) {
+      value_error(name, "'" + recorded.path + "' has changed since the simulation started");
+    }
+    spec.robot = spec.robot_file->file.layout;
+  } else {
+    spec.robot =
+        named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
+  }
+  return spec;
+}
+
+// Shows a run to the recorder only once it is told to (after the stepper took a saved state).
+class Gate final : public sim::Observer {
+ public:
+  explicit Gate(sim::Observer& next) : next_(next) {}
+  void on_start(const sim::SimModel& m, const sim::SimState& s) override {
+    if (open) next_.on_start(m, s);
+  }
+  void on_step(const sim::SimModel& m, const sim::SimState& s) override {
+    if (open) next_.on_step(m, s);
+  }
+  void on_event(const sim::SimModel& m, const sim::SimState& s, const sim::Event& e) override {
+    if (open) next_.on_event(m, s, e);
+  }
+  bool open = false;
+
+ private:
+  sim::Observer& next_;
+};
+
+// Writes `html` to `out` (when given) atomically.
+void write_page(const std::string& html, py::handle out) {
+  if (out.is_none()) return;
+  const std::string file = path(out, "path");
+  named("path", [&] {
+    report::check_replay_path(file);
+    write_file_atomic(file, html);
+    return 0;
+  });
+}
+
+// The next `steps` steps of the simulation saved in `state` (State.to_bytes()), walked on a copy
+// as the Simulation walks them (its steering reflex with the default parameters), recorded;
+// returns the page and the trunk's pose (x, y, yaw) at the end, which multicpg.replay compares
+// with the Simulation's after it walked the same steps.
+py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::handle out,
+                            py::handle title_arg) {
+  const long steps = whole(steps_arg, "steps", sim::kRunStepsLimits);
+  const std::string title = text(title_arg, "title");
+  const std::string bytes = state_bytes.cast<py::bytes>();
+  const json document = named("sim", [&] { return unseal_cbor(bytes); });
+  if (!document.is_object() || document.value("format", "") != kStateFormat ||
+      document.value("version", 0) != kStateVersion) {
+    value_error("sim", "not a multicpg.Simulation of this version");
+  }
+  const experiments::RunSpec spec = robot_spec(document.at("robot"), "sim");
+  std::string html;
+  sim::Pose2 end;
+  {
+    const py::gil_scoped_release release;
+    const sim::SimModel model = experiments::make_run_model(spec);
+    const sim::StepperCheckpoint checkpoint =
+        sim::checkpoint_from_json(model, document.at("checkpoint"));
+    report::ReplayRecorder recorder(checkpoint.walked);
+    Gate gate(recorder);
+    sim::Stepper stepper(model, sim::StartSpec{{}, 0}, sim::FaultTimeline{}, &gate);
+    stepper.restore(checkpoint);
+    std::optional<learning::SteeringState> steering;
+    if (!document.at("steering").is_null()) {
+      steering = document.at("steering").get<learning::SteeringState>();
+      stepper.set_before_step([&steering](sim::Stepper& s) {
+        neural::ControllerState& c = s.state().controller;
+        c.drive = learning::steer(learning::SteeringParams{}, *steering, s.pose(), c.drive);
+      });
+    }
+    gate.open = true;
+    recorder.on_start(model, stepper.state());
+    stepper.steps(steps);
+    html = report::replay_html(recorder.recording(), title);
+    end = stepper.pose();
+  }
+  write_page(html, out);
+  return py::make_tuple(py::str(html), py::make_tuple(end.x, end.y, end.yaw_deg));
+}
+
+// The run of a learn() result (its JSON text), made again with the simulation of `robot` (a
+// Robot's pickled key, or None for the default one) and recorded.
+py::str replay_result(py::handle result, py::handle robot_key, py::handle out,
+                      py::handle title_arg) {
+  const std::string result_text = text(result, "result");
+  std::optional<std::string> title;
+  if (!title_arg.is_none()) title = text(title_arg, "title");
+  sim::SimOptions options;
+  if (!robot_key.is_none()) {
+    options = robot_spec(json::parse(text(robot_key, "robot")), "robot").sim;
+  }
+  std::string html;
+  {
+    const py::gil_scoped_release release;
+    const json saved = json::parse(result_text);
+    const report::RerunReplay replay =
+        named("result", [&] { return report::rerun_learning(saved, "the result", options); });
+    html = report::replay_html(replay.recording, title.value_or(replay.title));
+  }
+  write_page(html, out);
+  return py::str(html);
+}
+
+}  // namespace
+
+void register_replay(py::module_& m) {
+  using py::arg;
+  m.def("_replay_simulation", &replay_simulation, arg("state"), arg("steps"), arg("out"),
+        arg("title"),
+        "The page of the next `steps` steps of a Simulation's State bytes, and the pose they end "
+        "in (multicpg.replay).");
+  m.def("_replay_result", &replay_result, arg("result"), arg("robot"), arg("out"), arg("title"),
+        "The page of a learn() result (JSON text) made again with a Robot's pickled key's "
+        "simulation (multicpg.replay).");
+}
+
+}  // namespace multicpg::python

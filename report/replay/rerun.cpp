@@ -1,0 +1,258 @@
+#include "report/replay/rerun.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.h"
+#include "experiments/learning_run.h"
+#include "experiments/run_json.h"
+#include "experiments/run_robot.h"
+#include "experiments/run_spec.h"
+#include "experiments/sweep.h"
+// GCC 12 inlines the type macro's default object of CompensationOptions here and warns that its
+// std::optional settle_steps may be uninitialized, which it is not: a known false positive of
+// -Wmaybe-uninitialized with std::optional, silenced for this header's from_json alone.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include "learning/json.h"
+#pragma GCC diagnostic pop
+#include "robot/leg_sets.h"
+#include "sim/course_json.h"
+#include "sim/fault_spec.h"
+#include "sim/walk.h"
+
+namespace multicpg::report {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// The file a `learn --out DIR` run keeps its result in.
+constexpr const char* kLearnResultFile = "learning.json";
+
+std::string quoted(const std::string& name) {
+  return "'" + name + "'";
+}
+
+std::string first_line(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
+
+json read_json(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw BadInput("cannot open the run file " + quoted(path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return json::parse(text.str());
+  } catch (const json::parse_error& e) {
+    throw BadInput(quoted(path.string()) +
+                   " is not a whole JSON document (truncated or damaged): " + first_line(e.what()));
+  }
+}
+
+// The run's robot: the built-in layout it names, or its robot file, which must still hold the
+// robot the run walked.
+void set_robot(experiments::RunSpec& spec, const json& result, const std::string& name) {
+  if (result.contains("robot_file")) {
+    const auto recorded = result.at("robot_file").get<experiments::RobotFileRecord>();
+    spec.robot_file = experiments::load_run_robot_file(recorded.path);
+    if (spec.robot_file->record != recorded) {
+      throw BadInput(name + " was walked by the robot file " + quoted(recorded.path) +
+                     ", which has changed since");
+    }
+    spec.robot = spec.robot_file->file.layout;
+    return;
+  }
+  spec.robot = robot::parse_robot(result.at("robot").get<std::string>());
+}
+
+// Checks the run as validate does, its errors naming the file.
+void check(const experiments::RunSpec& spec, const std::string& name) {
+  try {
+    experiments::validate(spec);
+  } catch (const OptionError& e) {
+    throw BadInput(name + ": " + e.key() + " " + e.what());
+  }
+}
+
+// Whether every value `again` holds is the one `saved` holds (a Python result may hold more).
+bool reruns_as_saved(const json& saved, const json& again) {
+  for (const auto& [key, value] : again.items()) {
+    if (!saved.contains(key) || saved.at(key) != value) return false;
+  }
+  return true;
+}
+
+[[noreturn]] void differs(const std::string& name) {
+  throw BadInput(name +
+                 " does not rerun as saved: it was made with other simulation options than these "
+                 "(terrain, body, servo gain: give them as flags) or by another version of "
+                 "multicpg");
+}
+
+std::string faults_title(const robot::Morphology& morph, const sim::FaultTimeline& faults) {
+  std::string out;
+  for (const sim::Fault& f : faults) {
+    out += (out.empty() ? "" : ", ") + sim::malfunction_text(morph, f) +
+           (f.recover ? " recovers" : " fails") + " at step " + std::to_string(f.step);
+  }
+  return out.empty() ? "no fault" : out;
+}
+
+RerunReplay rerun_experiment_run(const fs::path& file) {
+  const std::optional<json> saved = experiments::read_sealed(file);
+  if (!saved) throw BadInput("cannot open the run file " + quoted(file.string()));
+  const fs::path dir = file.parent_path().parent_path();
+  const experiments::RecordedSweep recorded = experiments::read_sweep(dir);
+  const std::string id = file.stem().string();
+  const experiments::Task* task = nullptr;
+  for (const experiments::Task& t : recorded.sweep.tasks) {
+    if (t.key == id) task = &t;
+  }
+  if (task == nullptr || !saved->contains("result")) {
+    throw BadInput(quoted(file.string()) + " is not a run of the experiment in " +
+                   quoted(dir.string()));
+  }
+  const experiments::RunSpec& spec = experiments::spec_of(recorded.sweep, *task);
+  RerunReplay out;
+  ReplayRecorder recorder;
+  const json result = experiments::run_sweep_task(spec, &recorder);
+  if (saved->at("result") != result) differs(quoted(file.string()));
+  out.recording = recorder.recording();
+  out.title = "run " + id + " of " + dir.filename().string() + ": " +
+              experiments::morphology(spec).name + ", " +
+              faults_title(experiments::morphology(spec), spec.faults);
+  return out;
+}
+
+RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::SimOptions& sim) {
+  experiments::RunSpec spec;
+  set_robot(spec, saved, name);
+  spec.sim = sim;
+  spec.sim.control_dt = saved.at("control_dt_s").get<double>();
+  spec.sim.physics_dt = saved.at("physics_dt_s").get<double>();
+  const robot::Morphology& morph = experiments::morphology(spec);
+  spec.start.periods = robot::period_map_from_json(morph, saved.at("periods"));
+  spec.start.warmup = saved.at("warmup").get<long>();
+  for (const json& f : saved.at("faults")) {
+    std::string text =
+        f.contains("fault") ? f.at("fault").get<std::string>() : f.at("legs").get<std::string>();
+    text += '@';
+    text += std::to_string(f.at("step").get<long>());
+    spec.faults.push_back(sim::parse_fault(morph, text, f.at("recover").get<bool>()));
+  }
+  sim::sort_timeline(spec.faults);
+  check(spec, name);
+  const sim::SimModel model = experiments::make_run_model(spec);
+  ReplayRecorder recorder;
+  sim::WalkSpec walk;
+  walk.start = spec.start;
+  walk.faults = spec.faults;
+  walk.settle = saved.at("settle").get<long>();
+  walk.steps = saved.at("steps").get<long>();
+  walk.window = saved.at("window").get<long>();
+  walk.keep_record = false;
+  walk.observer = &recorder;
+  sim::WalkResult r;
+  try {
+    r = sim::walk(model, walk);
+  } catch (const OptionError& e) {
+    throw BadInput(name + ": " + e.key() + " " + e.what());
+  }
+  // What the walk measured decides whether it is the saved one: any other option moves the robot.
+  const json again{{"distance_m", r.distance_m},
+                   {"final_yaw_deg", r.final_yaw_deg},
+                   {"window_deviations_deg", r.window_deviations_deg}};
+  if (!reruns_as_saved(saved, again)) differs(name);
+  return {recorder.recording(), "walk: " + morph.name + ", " + faults_title(morph, spec.faults)};
+}
+
+// The learning options a result recorded (learning/json.h).
+learning::CompensationOptions learning_options(const json& recorded) {
+  learning::CompensationOptions options;
+  from_json(recorded, options);
+  return options;
+}
+
+// What kind of result `saved` is, by the keys its command writes.
+enum class Saved { learning, walk, tunnel, unknown };
+
+Saved kind_of(const json& saved) {
+  if (!saved.is_object()) return Saved::unknown;
+  if (saved.contains("options") && saved.contains("trace") && saved.contains("status")) {
+    return Saved::learning;
+  }
+  if (saved.contains("window_deviations_deg") && saved.contains("warmup")) return Saved::walk;
+  if (saved.contains("touched_wall")) return Saved::tunnel;
+  return Saved::unknown;
+}
+
+}  // namespace
+
+RerunReplay rerun_learning(const json& saved, const std::string& name, const sim::SimOptions& sim) {
+  try {
+    experiments::RunSpec spec;
+    set_robot(spec, saved, name);
+    spec.sim = sim;
+    const json& recorded = saved.at("options");
+    const learning::CompensationOptions& options =
+        spec.learning.emplace(learning_options(recorded));
+    if (!recorded.at("faults").empty()) {
+      spec.faults = recorded.at("faults").get<sim::FaultTimeline>();
+    } else {
+      spec.faults = sim::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
+                                 recorded.at("fail_step").get<long>());
+    }
+    spec.start = experiments::learning_start(options.mode);
+    check(spec, name);
+    const sim::SimModel model = experiments::make_run_model(spec);
+    ReplayRecorder recorder;
+    const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &recorder);
+    if (!reruns_as_saved(saved, experiments::learn_json(spec, run.result))) differs(name);
+    const robot::Morphology& morph = experiments::morphology(spec);
+    return {recorder.recording(), "learn: " + morph.name + ", " + faults_title(morph, spec.faults) +
+                                      ", " + std::string(learning::to_string(options.mode)) +
+                                      " mode"};
+  } catch (const json::exception& e) {
+    throw BadInput(name + " is not a learning result of this version of multicpg (" +
+                   first_line(e.what()) + ")");
+  }
+}
+
+bool is_experiment_run(const fs::path& path) {
+  std::error_code error;
+  return path.parent_path().filename() == "runs" &&
+         fs::exists(path.parent_path().parent_path() / "experiment.json", error);
+}
+
+RerunReplay rerun_saved(const fs::path& path, const sim::SimOptions& sim) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) return rerun_saved(path / kLearnResultFile, sim);
+  if (!fs::exists(path, error)) throw BadInput("cannot open the run file " + quoted(path.string()));
+  if (is_experiment_run(path)) return rerun_experiment_run(path);
+  const json saved = read_json(path);
+  const std::string name = quoted(path.string());
+  switch (kind_of(saved)) {
+    case Saved::learning:
+      return rerun_learning(saved, name, sim);
+    case Saved::walk:
+      try {
+        return rerun_walk(saved, name, sim);
+      } catch (const json::exception& e) {
+        throw BadInput(name + " is not a walk result of this version of multicpg (" +
+                       first_line(e.what()) + ")");
+      }
+    case Saved::tunnel:
+      throw BadInput(name +
+                     " is a tunnel result, which does not record the legs that failed: make its "
+                     "replay with `multicpg tunnel ... --replay FILE.html`");
+    case Saved::unknown:
+      break;
+  }
+  throw BadInput(name +
+                 " is not a run this version of multicpg replays (a run file DIR/runs/ID.json, "
+                 "or the JSON of learn or walk)");
+}
+
+}  // namespace multicpg::report
