@@ -1,25 +1,32 @@
 // multicpg learner-benchmark: every learner replayed against a landscape dataset's scenarios
 // over many seeds and scored against the truth (docs/learning.md "Learner benchmark").
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
+#include "apps/learning_options.h"
 #include "apps/options.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learner_benchmark.h"
 #include "experiments/runner.h"
+#include "learning/landscapes.h"
+#include "report/figures.h"
 #include "robot/leg_sets.h"
 
 namespace multicpg::apps {
 namespace {
 
 struct BenchmarkOptions {
-  std::string dataset = "data/landscapes/hexapod";
+  std::string dataset;  // empty: the repository's hexapod dataset
   std::vector<std::string> learners{"annealing", "random", "greedy", "bayes", "prior"};
+  std::vector<std::string> learner_options;  // LEARNER.KEY=VALUE
   std::vector<std::string> scenarios;
   int seeds = experiments::kDefaultBenchmarkSeeds;
   std::uint64_t seed = 1;
@@ -33,11 +40,13 @@ struct BenchmarkOptions {
 
 void run(const BenchmarkOptions& o) {
   experiments::LearnerBenchmarkSpec spec;
-  spec.dataset = o.dataset;
+  spec.dataset = o.dataset.empty()
+                     ? learning::repository_dataset(robot::RobotKind::hexapod).string()
+                     : o.dataset;
   spec.seeds = o.seeds;
   spec.seed = o.seed;
   spec.budget = o.budget;
-  const learning::LandscapeDataset probe = learning::read_landscape_dataset(o.dataset);
+  const learning::LandscapeDataset probe = learning::read_landscape_dataset(spec.dataset);
   const robot::Morphology& morph = robot::morphology(probe.robot);
   spec.search.period_set = probe.period_set;
   spec.search.threshold_deg = probe.threshold_deg;
@@ -49,13 +58,35 @@ void run(const BenchmarkOptions& o) {
     throw BadInput("--hold-windows: the dataset measured " + std::to_string(probe.windows) +
                    " windows per combination, got " + std::to_string(o.hold_windows));
   }
+  std::map<std::string, nlohmann::json> given;  // each learner's --learner-option values
+  for (const std::string& item : o.learner_options) {
+    const std::size_t dot = item.find('.');
+    if (dot == std::string::npos || dot == 0 ||
+        std::find(o.learners.begin(), o.learners.end(), item.substr(0, dot)) == o.learners.end()) {
+      throw BadInput(
+          "--learner-option: expected LEARNER.KEY=VALUE for a learner of --learners, "
+          "got '" +
+          item + "'");
+    }
+    auto [key, value] = learner_option(item.substr(dot + 1), "--learner-option");
+    nlohmann::json& options = given[item.substr(0, dot)];
+    if (options.contains(key)) throw BadInput("--learner-option: " + item + " is given twice");
+    options[key] = std::move(value);
+  }
   for (const std::string& name : o.learners) {
     learning::LearnerChoice choice;
     choice.name = name;
+    if (given.count(name)) choice.options = given.at(name);
     try {
-      spec.learners.push_back(learning::resolve_learner(choice));
+      learning::LearnerChoice resolved = learning::resolve_learner(choice);
+      // A learner that learns from landscapes learns from the other scenarios of this dataset.
+      if (resolved.options.contains("dataset") && !choice.options.contains("dataset")) {
+        choice.options["dataset"] = spec.dataset;
+        resolved = learning::resolve_learner(choice);
+      }
+      spec.learners.push_back(resolved);
     } catch (const OptionError& e) {
-      throw BadInput("--learners: " + std::string(e.what()));
+      throw BadInput("--learners: " + name + ": " + e.key() + " " + std::string(e.what()));
     }
   }
   for (const std::string& s : o.scenarios) {
@@ -67,6 +98,23 @@ void run(const BenchmarkOptions& o) {
   experiments::write_learner_benchmark(b, o.out);
 
   const nlohmann::json summary = experiments::benchmark_summary(b);
+  std::vector<report::LearnerScore> scores;
+  const auto optional_number = [](const nlohmann::json& v) {
+    return v.is_null() ? std::nullopt : std::optional<double>(v.get<double>());
+  };
+  for (const nlohmann::json& l : summary.at("learners")) {
+    scores.push_back({l.at("learner").at("name").get<std::string>(), l.at("share_held"),
+                      l.at("share_low"), l.at("share_high"), optional_number(l.at("q1_trials")),
+                      optional_number(l.at("median_trials")), optional_number(l.at("q3_trials"))});
+  }
+  std::set<std::string> holding;
+  for (const experiments::BenchmarkCell& c : b.cells) {
+    if (c.holding > 0) holding.insert(c.scenario);
+  }
+  report::plot_learner_benchmark(scores,
+                                 {std::string(robot::to_string(b.dataset.robot)), spec.budget,
+                                  static_cast<int>(holding.size()), spec.seeds},
+                                 o.out);
   std::cout << morph.name << ", " << b.cells.size() / spec.learners.size() << " scenarios x "
             << spec.seeds << " seeds, " << o.mode << " trials, held within " << spec.budget
             << " trials (scenarios where a combination holds):\n";
@@ -90,7 +138,7 @@ void run(const BenchmarkOptions& o) {
               << l.at("false_stops") << "\n";
   }
   std::cout << std::setprecision(1) << "replayed in " << b.seconds << " s; wrote " << o.out
-            << "/{benchmark.csv,benchmark.md,runs.csv,summary.json}\n";
+            << "/benchmark.{csv,md}, benchmark-figure.{png,svg}, runs.csv and summary.json\n";
 }
 
 }  // namespace
@@ -103,11 +151,12 @@ void register_learner_benchmark(CLI::App& app) {
       "truth (docs/learning.md \"Learner benchmark\")");
   cmd->add_option("--dataset", o->dataset,
                   "the landscape dataset (learning/landscapes.h): DIR/NAME of NAME.csv.gz and "
-                  "NAME.json")
-      ->capture_default_str();
+                  "NAME.json (default: the repository's data/landscapes/hexapod)");
   cmd->add_option("--learners", o->learners, "learners to replay, e.g. annealing,bayes")
       ->delimiter(',')
       ->capture_default_str();
+  cmd->add_option("--learner-option", o->learner_options,
+                  "LEARNER.KEY=VALUE, one of a learner's options (repeatable), e.g. bayes.kappa=2");
   cmd->add_option("--scenarios", o->scenarios,
                   "leg sets to replay, e.g. R1,R1+R3 (default: every one of the dataset)")
       ->delimiter(',');
@@ -132,7 +181,8 @@ void register_learner_benchmark(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--jobs", o->jobs, "threads (default: every core)")
       ->check(in(experiments::kJobsLimits));
-  cmd->add_option("--out", o->out, "directory for benchmark.{csv,md}, runs.csv, summary.json")
+  cmd->add_option("--out", o->out,
+                  "directory for benchmark.{csv,md}, benchmark-figure.{png,svg,csv}, runs.csv, summary.json")
       ->required();
   cmd->callback([o] { run(*o); });
 }

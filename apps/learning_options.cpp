@@ -73,20 +73,25 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
       ->capture_default_str();
 }
 
+std::pair<std::string, nlohmann::json> learner_option(const std::string& item,
+                                                      const std::string& flag) {
+  const std::size_t eq = item.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw BadInput(flag + ": expected KEY=VALUE, got '" + item + "'");
+  }
+  const std::string value = item.substr(eq + 1);
+  const nlohmann::json parsed = nlohmann::json::parse(value, nullptr, /*allow_exceptions=*/false);
+  return {item.substr(0, eq), parsed.is_discarded() ? nlohmann::json(value) : parsed};
+}
+
 learning::CompensationOptions learning_options(const LearningFlags& f) {
   learning::CompensationOptions o = f.options;
   for (const std::string& item : f.learner_options) {
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      throw BadInput("--learner-option: expected KEY=VALUE, got '" + item + "'");
-    }
-    const std::string key = item.substr(0, eq);
-    const std::string value = item.substr(eq + 1);
+    auto [key, value] = learner_option(item, "--learner-option");
     if (o.learner.options.contains(key)) {
       throw BadInput("--learner-option: " + key + " is given twice");
     }
-    const nlohmann::json parsed = nlohmann::json::parse(value, nullptr, /*allow_exceptions=*/false);
-    o.learner.options[key] = parsed.is_discarded() ? nlohmann::json(value) : parsed;
+    o.learner.options[key] = std::move(value);
   }
   if (o.mode == learning::Mode::paper) {
     if (f.robust_only) {

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "learning/compensation.h"
@@ -22,6 +24,12 @@ struct LearningFlags {
 // in --help and checked at parse time (without --beta when `with_beta` is false: the beta study
 // sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);
+
+// One "KEY=VALUE" of `flag` (--learner-option): the key and the value, read as JSON when it is
+// JSON (numbers, true, ...) and as text otherwise. Throws BadInput naming `flag` when there is no
+// key or no '='.
+std::pair<std::string, nlohmann::json> learner_option(const std::string& item,
+                                                      const std::string& flag);
 
 // The options the flags give (checked with the run, experiments::validate; the learner's options
 // as given, resolved by learning::resolve_learner). Throws BadInput (one line) for robust-mode

@@ -14,6 +14,7 @@
 #include "common/json_diff.h"
 #include "common/limits.h"
 #include "common/provenance.h"
+#include "experiments/learner_table.h"
 #include "experiments/learning_run.h"
 #include "experiments/processes.h"
 #include "experiments/scenarios.h"
@@ -238,6 +239,8 @@ std::string value_text(const json& v) {
     for (const json& e : v) parts.push_back(value_text(e));
     return join(parts, "-");
   }
+  // A learner (experiments/learner_table.h) by its name, unique within its axis.
+  if (v.is_object() && v.contains("name")) return value_text(v.at("name"));
   return v.dump();
 }
 
@@ -967,8 +970,11 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
 
   // Learning and sim: defaults, the document's values, the grid.
   json learning = learning_document(learning::CompensationOptions{}, 0);
-  merge_checked(doc.value("learning", json::object()), json(learning), "learning", learning,
-                sweep.grid, kPerRunLearningKeys);
+  json learning_given = doc.value("learning", json::object());
+  const std::optional<json> learner_given = take_learner(learning_given);
+  merge_checked(learning_given, json(learning), "learning", learning, sweep.grid,
+                kPerRunLearningKeys);
+  if (learner_given) add_learner(*learner_given, learning, sweep.grid);
   const json sim_default = sim_defaults(doc);
   json sim_doc = sim_default;
   merge_checked(doc.value("sim", json::object()), sim_default, "sim", sim_doc, sweep.grid);

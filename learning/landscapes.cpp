@@ -34,8 +34,12 @@ fs::path stem_of(const fs::path& path) {
   if (p.extension() == ".csv") p.replace_extension();
   return p;
 }
-fs::path csv_path(const fs::path& stem) { return fs::path(stem.string() + ".csv.gz"); }
-fs::path manifest_path(const fs::path& stem) { return fs::path(stem.string() + ".json"); }
+fs::path csv_path(const fs::path& stem) {
+  return fs::path(stem.string() + ".csv.gz");
+}
+fs::path manifest_path(const fs::path& stem) {
+  return fs::path(stem.string() + ".json");
+}
 
 std::string angle(double deg) {
   const double r = std::round(deg / kLandscapeAngleResolutionDeg) * kLandscapeAngleResolutionDeg;
@@ -134,6 +138,10 @@ double number(const std::string& text, const fs::path& path, std::size_t line) {
 
 }  // namespace
 
+std::filesystem::path repository_dataset(robot::RobotKind robot) {
+  return fs::path(MULTICPG_DATA_DIR) / "landscapes" / std::string(robot::to_string(robot));
+}
+
 double LandscapePoint::window_error(std::size_t window, bool yaw_only) const {
   const double yaw = std::abs(yaw_deg.at(window));
   return yaw_only ? yaw : std::max(yaw, std::abs(path_deg.at(window)));
@@ -196,13 +204,13 @@ void write_landscape_dataset(const LandscapeDataset& d, const fs::path& path) {
       csv << "," << angle(p.worst_deg) << "," << (p.holds ? 1 : 0) << "\n";
     }
     const std::size_t holding = s.holding();
-    scenarios.push_back({{"scenario", name},
-                         {"combinations", s.points.size()},
-                         {"holding", holding},
-                         {"share_holding", s.points.empty()
-                                               ? 0.0
-                                               : static_cast<double>(holding) /
-                                                     static_cast<double>(s.points.size())}});
+    scenarios.push_back(
+        {{"scenario", name},
+         {"combinations", s.points.size()},
+         {"holding", holding},
+         {"share_holding",
+          s.points.empty() ? 0.0
+                           : static_cast<double>(holding) / static_cast<double>(s.points.size())}});
   }
   const std::string text = csv.str();
   const nlohmann::json manifest{{"format", "multicpg landscape dataset"},
@@ -292,10 +300,12 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
     for (std::size_t leg = 0; leg < morph.size(); ++leg) {
       const std::string& c = cells[1 + leg];
       const bool is_failed = std::binary_search(s.failed.begin(), s.failed.end(), leg);
-      if (is_failed != (c == kFailedCell)) throw bad("leg " + morph.legs[leg].name + " is '" + c + "'");
-      const int period = is_failed ? kStartPeriod : static_cast<int>(number(c, cpath, number_of_line));
-      if (!is_failed && std::find(d.period_set.begin(), d.period_set.end(), period) ==
-                            d.period_set.end()) {
+      if (is_failed != (c == kFailedCell))
+        throw bad("leg " + morph.legs[leg].name + " is '" + c + "'");
+      const int period =
+          is_failed ? kStartPeriod : static_cast<int>(number(c, cpath, number_of_line));
+      if (!is_failed &&
+          std::find(d.period_set.begin(), d.period_set.end(), period) == d.period_set.end()) {
         throw bad("period " + c + " is not in the period set");
       }
       p.periods.push_back(period);
@@ -314,8 +324,8 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
     const auto it = index.find(name);
     const std::size_t have = it == index.end() ? 0 : d.scenarios[it->second].points.size();
     if (have != count) {
-      throw BadInput("'" + cpath.string() + "' has " + std::to_string(have) +
-                     " combinations of " + name + ", its manifest " + std::to_string(count));
+      throw BadInput("'" + cpath.string() + "' has " + std::to_string(have) + " combinations of " +
+                     name + ", its manifest " + std::to_string(count));
     }
   }
   if (index.size() != expected.size()) {

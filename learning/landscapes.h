@@ -30,7 +30,7 @@ namespace multicpg::learning {
 
 // One combination of a scenario.
 struct LandscapePoint {
-  Periods periods;  // every leg; a failed leg's is kStartPeriod
+  Periods periods;               // every leg; a failed leg's is kStartPeriod
   std::vector<double> yaw_deg;   // per window, + = left
   std::vector<double> path_deg;  // per window
   double worst_deg = 0.0;
@@ -66,6 +66,10 @@ struct LandscapeDataset {
 // Rounding of the stored angles: 0.001 deg, far below what a window can resolve (a robot
 // standing still reads ~0.01 deg of noise in its yaw from contact chatter).
 inline constexpr double kLandscapeAngleResolutionDeg = 1e-3;
+
+// The repository's dataset of `robot` (data/landscapes/<robot>, built by
+// examples/landscape-every-<robot>.toml).
+std::filesystem::path repository_dataset(robot::RobotKind robot);
 
 // Writes PATH.csv.gz and PATH.json (PATH without extension) atomically. Points of a scenario in
 // any order are written as given.

@@ -1,7 +1,7 @@
 // What a learner is: it proposes the next combination of the working legs' periods, observes
 // what the walker measured for it, and decides whether it is done (held) or gives up with the
 // best it found. The online loop (learning/compensation.h) and the replay benchmark
-// (learning/replay.h) drive every learner the same way (run_episode), so a learner never knows
+// (learning/benchmark.h) drive every learner the same way (run_episode), so a learner never knows
 // whether a trial walked a MuJoCo robot, a real one, or was looked up in a landscape.
 //
 // To add a learner (docs/learning.md "Learners"):

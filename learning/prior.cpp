@@ -50,11 +50,6 @@ void validate(const PriorOptions& o) {
   require_in("ridge", o.ridge, kRidgeLimits);
 }
 
-// The repository's dataset of a robot (data/landscapes/, built by examples/landscape-every-*).
-fs::path default_dataset(robot::RobotKind robot) {
-  return fs::path(MULTICPG_DATA_DIR) / "landscapes" / std::string(robot::to_string(robot));
-}
-
 // Datasets read once per process: the benchmark makes thousands of learners from one.
 std::shared_ptr<const LandscapeDataset> dataset_at(const fs::path& path) {
   static std::mutex mutex;
@@ -172,8 +167,7 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
   const Eigen::MatrixXd beta = xtx.ldlt().solve(xty);
   std::vector<std::vector<double>> out(2, std::vector<double>(space.size()));
   for (std::size_t c = 0; c < space.size(); ++c) {
-    const std::vector<std::size_t> a =
-        f.active(lost, digits(space.periods(c), d.period_set));
+    const std::vector<std::size_t> a = f.active(lost, digits(space.periods(c), d.period_set));
     for (std::size_t i : a) {
       out[0][c] += beta(static_cast<Eigen::Index>(i), 0);
       out[1][c] += beta(static_cast<Eigen::Index>(i), 1);
@@ -185,7 +179,8 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
 // Prior means are computed once per dataset, scenario and ridge (the benchmark's seeds share
 // them).
 std::vector<std::vector<double>> cached_prior_mean(const fs::path& path, const LearnerSetup& setup,
-                                                   const SearchSpace& space, const PriorOptions& o) {
+                                                   const SearchSpace& space,
+                                                   const PriorOptions& o) {
   const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
   if (d->robot != setup.robot) {
     throw BadInput("the prior's dataset '" + path.string() + "' is of the " +
@@ -221,7 +216,7 @@ nlohmann::json prior_options(const nlohmann::json& asked) {
 void check_prior(const nlohmann::json& options, robot::RobotKind robot,
                  const std::vector<std::size_t>& failed) {
   const PriorOptions o = options.get<PriorOptions>();
-  const fs::path path = o.dataset.empty() ? default_dataset(robot) : fs::path(o.dataset);
+  const fs::path path = o.dataset.empty() ? repository_dataset(robot) : fs::path(o.dataset);
   const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
   if (d->robot != robot) {
     throw OptionError("dataset", "'" + path.string() + "' is of the " +
@@ -233,7 +228,7 @@ void check_prior(const nlohmann::json& options, robot::RobotKind robot,
 
 std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options) {
   const PriorOptions o = options.get<PriorOptions>();
-  const fs::path path = o.dataset.empty() ? default_dataset(setup.robot) : fs::path(o.dataset);
+  const fs::path path = o.dataset.empty() ? repository_dataset(setup.robot) : fs::path(o.dataset);
   const SearchSpace space(setup);
   return std::make_unique<ModelLearner>(setup, model_learner_params(o),
                                         cached_prior_mean(path, setup, space, o));

@@ -21,7 +21,7 @@ constexpr const char* kGnuplot = "gnuplot";
 constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
 constexpr const char* kFont = "DejaVu Sans,11";
 
-constexpr std::array<FigureInfo, 11> kFigures{{
+constexpr std::array<FigureInfo, 12> kFigures{{
     {"gait", "fig02-gaits", "gait.gp", 1200, 900,
      "Fig. 2: gait diagrams for p = 1, 4, 5, 6, 8, 9 (blue = stance, white = swing)"},
     {"cpg-sync", "fig06-cpg-sync", "cpg_sync.gp", 1200, 700,
@@ -44,6 +44,8 @@ constexpr std::array<FigureInfo, 11> kFigures{{
      "Landscape: worst deviation of every combination of working-leg periods"},
     {"calibration", "calibration-sensitivity", "calibration.gp", 1100, 650,
      "Calibration: which body parameter moves which Table 1 number (rank correlation)"},
+    {"learner-benchmark", "benchmark-figure", "learner_benchmark.gp", 1000, 750,
+     "Learners replayed on landscapes: share held within the budget and trials to hold"},
 }};
 
 // --- CSV -------------------------------------------------------------------------------------
@@ -396,6 +398,30 @@ FigureFiles plot_beta_study(const std::vector<BetaSummary>& betas, std::string_v
   }
   Params params;
   params.text("disabled_legs", disabled_legs);
+  return draw(info, out_dir, stem, csv, params);
+}
+
+FigureFiles plot_learner_benchmark(const std::vector<LearnerScore>& learners,
+                                   const LearnerBenchmarkSetting& setting, const fs::path& out_dir,
+                                   std::string_view stem) {
+  const FigureInfo& info = figure_by_name("learner-benchmark");
+  require(!learners.empty(), info.name, "no learners");
+  ensure_writable_dir(out_dir);
+  // A quartile that does not exist (more than that share never held) is NaN: no bar drawn.
+  const auto cell = [](const std::optional<double>& v) { return v ? shortest(*v) : "NaN"; };
+  Csv csv({"learner", "share_held", "share_low", "share_high", "q1_trials", "median_trials",
+           "q3_trials"});
+  for (const LearnerScore& l : learners) {
+    require(l.share_low <= l.share_held && l.share_held <= l.share_high, info.name,
+            l.name + ": the share lies outside its interval");
+    csv.row({l.name, shortest(l.share_held), shortest(l.share_low), shortest(l.share_high),
+             cell(l.q1_trials), cell(l.median_trials), cell(l.q3_trials)});
+  }
+  Params params;
+  params.text("robot", setting.robot)
+      .num("budget", setting.budget)
+      .num("scenarios", setting.scenarios)
+      .num("seeds", setting.seeds);
   return draw(info, out_dir, stem, csv, params);
 }
 

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -111,6 +112,27 @@ struct BetaSummary {
 // disabled_legs names the scenario in the title, e.g. "R1+R2" (the paper's).
 FigureFiles plot_beta_study(const std::vector<BetaSummary>& betas, std::string_view disabled_legs,
                             const std::filesystem::path& out_dir, std::string_view stem = {});
+
+// The learner benchmark (docs/learning.md "Learner benchmark"): each learner's share of runs
+// held within the budget with its 95% interval, and the quartiles of its trials to a held
+// combination (none where more than that share of runs never held).
+struct LearnerScore {
+  std::string name;
+  double share_held = 0.0;
+  double share_low = 0.0;
+  double share_high = 0.0;
+  std::optional<double> q1_trials, median_trials, q3_trials;
+};
+struct LearnerBenchmarkSetting {
+  std::string robot;
+  int budget = 0;
+  int scenarios = 0;  // with a holding combination
+  int seeds = 0;
+};
+FigureFiles plot_learner_benchmark(const std::vector<LearnerScore>& learners,
+                                   const LearnerBenchmarkSetting& setting,
+                                   const std::filesystem::path& out_dir,
+                                   std::string_view stem = {});
 
 // The trunk's path seen from above, before and after learning (paper §5 tunnel, Table 1);
 // walls are optional polylines (e.g. the corridor's sides). Metres.

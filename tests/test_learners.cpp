@@ -186,6 +186,24 @@ TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
   EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
 }
 
+TEST(Learners, TheRepositoryDatasetsReadWhole) {
+  const LandscapeDataset q =
+      learning::read_landscape_dataset(learning::repository_dataset(robot::RobotKind::quadruped));
+  EXPECT_EQ(q.scenarios.size(), 14u);  // every loss of one, two or three legs
+  EXPECT_EQ(q.windows, 6);
+  EXPECT_EQ(q.find({3})->points.size(), 125u);  // L2
+  EXPECT_EQ(q.find({3})->holding(), 2u);        // docs/learning.md "The landscape"
+  const LandscapeDataset h =
+      learning::read_landscape_dataset(learning::repository_dataset(robot::RobotKind::hexapod));
+  EXPECT_GE(h.scenarios.size(), 35u);  // the two- and three-leg losses at least
+  for (const ScenarioLandscape& s : h.scenarios) {
+    const std::size_t working = 6 - s.failed.size();
+    std::size_t expected = 1;
+    for (std::size_t i = 0; i < working; ++i) expected *= kPeriodSet.size();
+    EXPECT_EQ(s.points.size(), expected);
+  }
+}
+
 TEST_F(Dataset, EveryLearnerKeepsTheFailedLegsAndTheSetAndRepeatsItself) {
   for (const learning::LearnerInfo& info : learning::learner_list()) {
     SCOPED_TRACE(std::string(info.name));
@@ -294,6 +312,8 @@ TEST_F(Dataset, TheBenchmarkCommandScoresLearnersTheSameOnAnyThreadCount) {
   const std::string table = read_file(dir_ + "/one/benchmark.csv");
   EXPECT_EQ(count_lines(table), 1 + 2 * 3);
   EXPECT_EQ(count_lines(read_file(dir_ + "/one/runs.csv")), 1 + 2 * 3 * 12);
+  EXPECT_GT(fs::file_size(dir_ + "/one/benchmark-figure.png"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ + "/one/benchmark-figure.svg"), 1000u);
   const auto summary = nlohmann::json::parse(read_file(dir_ + "/one/summary.json"));
   EXPECT_EQ(summary.at("seeds"), 12);
 
@@ -339,6 +359,47 @@ TEST(CliLearner, LearnTakesALearnerAndItsOptionsAndRecordsThem) {
     EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
     EXPECT_NE(bad.err.find(mention), std::string::npos) << bad.err;
   }
+}
+
+TEST(CliLearner, AnExperimentFileTakesALearnerOrAGridOfThem) {
+  const std::string dir = make_temp_dir("learner-experiment-");
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + "/" + name) << text;
+    return dir + "/" + name;
+  };
+  const std::string head = "robot = \"quadruped\"\nscenarios = [\"L2\"]\nruns = 1\n";
+  const std::string one = write("one.toml", head + "[learning.learner]\nname = \"greedy\"\n");
+  EXPECT_EQ(run_cli("run " + one + " --check").exit_code, 0);
+  const std::string grid =
+      write("grid.toml", head +
+                             "[learning]\nlearner = [{ name = \"random\" }, { name = \"bayes\", "
+                             "options = { kappa = 1.5 } }]\n");
+  const CliResult r = run_cli("run " + grid + " --jobs 2 --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string runs = read_file(dir + "/out/runs.csv");
+  EXPECT_EQ(count_lines(runs), 3) << runs;  // header + one run per learner
+  EXPECT_NE(runs.find("random"), std::string::npos);
+  EXPECT_NE(runs.find("bayes"), std::string::npos);
+  const auto experiment = nlohmann::json::parse(read_file(dir + "/out/experiment.json"));
+  const nlohmann::json learners = experiment.at("arguments").at("learning").at("learner");
+  ASSERT_EQ(learners.size(), 2u);
+  EXPECT_EQ(learners[1].at("options").at("kappa"), 1.5);
+  EXPECT_TRUE(learners[1].at("options").contains("noise_deg"));  // resolved, every default
+
+  for (const auto& [text, mention] : std::vector<std::pair<std::string, std::string>>{
+           {"[learning.learner]\nname = \"simplex\"\n", "learning.learner.name"},
+           {"[learning.learner]\nname = \"bayes\"\noptions = { kappa = -1 }\n",
+            "learning.learner.options.kappa"},
+           {"[learning]\nlearner = [{ name = \"bayes\" }, { name = \"bayes\" }]\n",
+            "names learner 'bayes' again"},
+           {"[learning]\nlearner = \"bayes\"\n", "must be a table"},
+       }) {
+    const CliResult bad = run_cli("run " + write("bad.toml", head + text) + " --check");
+    EXPECT_EQ(bad.exit_code, 2) << text;
+    EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+    EXPECT_NE(bad.err.find(mention), std::string::npos) << bad.err;
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace
