@@ -66,14 +66,14 @@ void run(const RunOptions& o) {
     return;
   }
   std::size_t in_shard = 0;
-  for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
+  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
     in_shard += static_cast<int>(i % static_cast<std::size_t>(shard.count)) == shard.index;
   }
   std::size_t points = 1;
   for (const experiments::GridAxis& a : sweep.grid) points *= a.values.size();
   const std::size_t scenarios = sweep.resolved.at("scenarios").size();
   std::ostringstream count;
-  count << o.file << ": " << sweep.tasks.size() << " runs (" << points << " grid points x "
+  count << o.file << ": " << sweep.runs.size() << " runs (" << points << " grid points x "
         << scenarios << " scenarios x " << sweep.resolved.at("runs") << " runs)";
   if (shard.count > 1) count << ", " << in_shard << " in shard " << o.shard;
   if (o.check) {
@@ -111,15 +111,12 @@ void rerun(const RerunOptions& o) {
     throw BadInput("--film: name a video, FILE.mp4");
   }
   const experiments::RecordedSweep recorded = experiments::read_sweep(o.dir);
-  const experiments::Task* task = nullptr;
-  for (const experiments::Task& t : recorded.sweep.tasks) {
-    if (t.key == o.id) task = &t;
-  }
-  if (task == nullptr) {
+  const experiments::PlannedRun* planned = experiments::find_run(recorded.sweep, o.id);
+  if (planned == nullptr) {
     throw BadInput("'" + o.dir + "' has no run " + o.id +
                    " (RUN_ID: a file name in runs/ without .json)");
   }
-  const experiments::RunSpec& spec = experiments::spec_of(recorded.sweep, *task);
+  const experiments::RunSpec& spec = planned->spec;
   nlohmann::json result;
   if (!o.film.empty()) {
     const sim::SimModel model = experiments::make_run_model(spec);
@@ -144,7 +141,7 @@ void rerun(const RerunOptions& o) {
       runner.arguments["shard"] = experiments::to_string(recorded.shard);
     ensure_writable_dir(o.out);
     experiments::run_tasks(
-        {*task}, [&](const experiments::Task&) { return result; }, runner);
+        {planned->task}, [&](const experiments::Task&) { return result; }, runner);
     std::cout << "wrote " << (fs::path(o.out) / "runs" / (o.id + ".json")).string() << "\n";
   }
   const fs::path saved_path = fs::path(o.dir) / "runs" / (o.id + ".json");

@@ -35,6 +35,9 @@ inline constexpr std::size_t kMaxListValues = 10'000;
 inline constexpr std::int64_t kDefaultMaxRuns = 100'000;
 inline constexpr Limits<std::int64_t> kMaxRunsLimits{1, 1'000'000};
 
+// Runs per scenario or beta (documented range).
+inline constexpr Limits<int> kRunsLimits{1, 100'000};
+
 // The run limit of one experiment and what the user calls it ("--max-runs" on the command line),
 // for the message that refuses more (resolve_sweep, sweep.h).
 struct SweepLimits {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "experiments/sweep.h"
+#include "experiments/document_schema.h"
 
 namespace multicpg::experiments {
 

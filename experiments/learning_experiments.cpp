@@ -66,25 +66,6 @@ ExperimentTable run_beta_study(const ExperimentSpec& spec, const std::vector<dou
   return run_preset(spec, beta_study_document(spec, betas));
 }
 
-std::string_view to_string(ExperimentKind kind) {
-  switch (kind) {
-    case ExperimentKind::table:
-      return "table";
-    case ExperimentKind::beta:
-      return "beta";
-    case ExperimentKind::grid:
-      return "grid";
-  }
-  return "table";
-}
-
-ExperimentKind parse_experiment_kind(std::string_view text) {
-  for (ExperimentKind kind : {ExperimentKind::table, ExperimentKind::beta, ExperimentKind::grid}) {
-    if (text == to_string(kind)) return kind;
-  }
-  throw BadInput("unknown experiment '" + std::string(text) + "' (table, beta or grid)");
-}
-
 nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind experiment) {
   if (experiment == ExperimentKind::grid) {
     throw std::invalid_argument("a grid is an experiment file's, not a preset's");

@@ -17,9 +17,6 @@
 
 namespace multicpg::experiments {
 
-// Runs per scenario or beta (documented range).
-inline constexpr Limits<int> kRunsLimits{1, 100'000};
-
 struct ExperimentSpec {
   robot::RobotKind kind = robot::RobotKind::hexapod;  // with a robot file, its layout
   std::shared_ptr<const RunRobotFile> robot_file;     // null: the built-in robot
@@ -36,23 +33,10 @@ struct ExperimentSpec {
   SweepLimits limits{kDefaultMaxRuns, "--max-runs"};  // more runs are refused (sweep.h)
 };
 
-// The tables of learning experiments: the paper's two, and a grid of options (sweep.h).
-enum class ExperimentKind { table, beta, grid };
-std::string_view to_string(ExperimentKind kind);              // "table", "beta", "grid"
-ExperimentKind parse_experiment_kind(std::string_view text);  // throws BadInput
-
 // What decides an experiment's results, as recorded in OUT/experiment.json and compared on
 // resume: its resolved document (experiments/sweep.h): robot, scenarios, runs, seed and every
 // learning and simulation option.
 nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind experiment);
-
-// An experiment's results: one summary row per scenario, beta or grid point, written to OUT as
-// table.csv, table.md and summary.json.
-struct ExperimentTable {
-  ExperimentKind experiment = ExperimentKind::table;
-  std::string robot;
-  std::vector<GroupSummary> rows;
-};
 
 // The experiments as documents of experiments/sweep.h (what examples/paper-*.toml hold with
 // the default options), run through run_sweep.

@@ -2,464 +2,42 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
-#include <map>
 #include <set>
-#include <sstream>
 #include <tuple>
 
-#include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/interrupt.h"
-#include "common/json_diff.h"
 #include "common/limits.h"
-#include "common/provenance.h"
+#include "experiments/document_scenarios.h"
 #include "experiments/learner_table.h"
-#include "experiments/learning_run.h"
-#include "experiments/processes.h"
+#include "experiments/run_json.h"
 #include "experiments/scenarios.h"
 #include "learning/json.h"
 #include "robot/body_models.h"
 #include "robot/leg_sets.h"
-#include "robot/terrain.h"
-#include "sim/fault_spec.h"
 #include "sim/json.h"
 #include "sim/robot_file.h"
 #include "sim/sim.h"
-#include "sim/walk.h"
 
 namespace multicpg::experiments {
 namespace {
 
 namespace fs = std::filesystem;
+using document::canonical_sim;
+using document::child;
+using document::join;
+using document::merge_checked;
+using document::options_from;
+using document::pointer_in_section;
+using document::value_text;
+using document::whole;
 using nlohmann::json;
-
-constexpr int kJsonIndent = 2;
-constexpr std::size_t kMaxScenarioLegs = 3;  // 1-3 disabled legs ("all"; paper Fig. 11)
 
 // Keys each run sets itself: its disabled legs or fault timeline and its seed.
 const std::set<std::string> kPerRunLearningKeys{"disabled", "faults", "seed"};
 // The document's step at which a scenario's leg set fails (learning.fail_step): a key of the
 // "learning" table, read by the sweep, not by the learner.
 constexpr const char* kFailStepKey = "fail_step";
-
-std::string join(const std::vector<std::string>& parts, const std::string& sep) {
-  std::string out;
-  for (const std::string& p : parts) out += (out.empty() ? "" : sep) + p;
-  return out;
-}
-
-std::string child(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
-
-std::string indexed(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
-std::string type_name(const json& j) {
-  if (j.is_boolean()) return "true or false";
-  if (j.is_number_integer()) return "a whole number";
-  if (j.is_number()) return "a number";
-  if (j.is_string()) return "a string";
-  if (j.is_array()) return "a list";
-  if (j.is_object()) return "a table";
-  return "a value";
-}
-
-// Checks a single value against its default's type (no grid).
-void check_type(const json& value, const json& def, const std::string& path) {
-  const auto wrong = [&] {
-    return OptionError(path, "must be " + type_name(def) + ", got " + value.dump());
-  };
-  if (def.is_null()) return;  // an optional: its from_json decides
-  if (def.is_boolean() || def.is_string()) {
-    if (value.type() != def.type()) throw wrong();
-  } else if (def.is_number_integer()) {
-    if (!value.is_number_integer()) throw wrong();
-    if (def.is_number_unsigned() && value.get<std::int64_t>() < 0) {
-      throw OptionError(path, "must be at least 0, got " + value.dump());
-    }
-  } else if (def.is_number()) {
-    if (!value.is_number()) throw wrong();
-  } else if (def.is_array()) {
-    if (!value.is_array()) throw wrong();
-    for (std::size_t i = 0; i < value.size() && !def.empty(); ++i) {
-      check_type(value[i], def.front(), indexed(path, i));
-    }
-  } else if (def.is_object()) {
-    if (!value.is_object()) throw wrong();  // an element of a list of tables
-  }
-}
-
-// `value` as the default's number type: a whole number given for a fractional option is
-// recorded as the fraction it means (1 -> 1.0), so equal documents record equal values.
-json as_default_type(const json& value, const json& def) {
-  if (def.is_number_float() && value.is_number_integer()) return value.get<double>();
-  if (def.is_array() && value.is_array() && !def.empty()) {
-    json out = json::array();
-    for (const json& v : value) out.push_back(as_default_type(v, def.front()));
-    return out;
-  }
-  return value;
-}
-
-// A list where the default is no list, or a list of lists where it is one: a grid axis.
-bool is_grid(const json& value, const json& def) {
-  if (!value.is_array()) return false;
-  if (!def.is_array()) return true;
-  return !value.empty() &&
-         std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_array(); });
-}
-
-std::string known_keys(const json& def, const std::set<std::string>& except = {}) {
-  std::vector<std::string> keys;
-  for (const auto& item : def.items()) {
-    if (!except.count(item.key())) keys.push_back(item.key());
-  }
-  return join(keys, ", ");
-}
-
-// `out` = the defaults `def` with the document's `value` put in, every key and type checked;
-// grid lists go to `grid` (and stay lists in `out`).
-void merge_checked(const json& value, const json& def, const std::string& path, json& out,
-                   std::vector<GridAxis>& grid, const std::set<std::string>& forbidden = {}) {
-  if (def.is_object()) {
-    if (!value.is_object()) {
-      throw OptionError(path, "must be a table, got " + value.dump());
-    }
-    for (const auto& item : value.items()) {
-      const std::string key = child(path, item.key());
-      if (forbidden.count(item.key())) {
-        throw OptionError(key, "is set by each run (scenarios, seed), not here");
-      }
-      if (!def.contains(item.key())) {
-        throw OptionError(key, "is not an option here (known: " + known_keys(def, forbidden) + ")");
-      }
-      merge_checked(item.value(), def.at(item.key()), key, out[item.key()], grid);
-    }
-    return;
-  }
-  if (is_grid(value, def)) {
-    if (value.empty()) throw OptionError(path, "is an empty list");
-    json values = json::array();
-    for (std::size_t i = 0; i < value.size(); ++i) {
-      check_type(value[i], def, indexed(path, i));
-      values.push_back(as_default_type(value[i], def));
-    }
-    grid.push_back({path, values});
-    out = values;
-  } else {
-    check_type(value, def, path);
-    out = as_default_type(value, def);
-  }
-}
-
-// "learning.annealing.beta" -> "/annealing/beta" within its section.
-json::json_pointer pointer_in_section(const std::string& key) {
-  std::string p = key.substr(key.find('.'));
-  std::replace(p.begin(), p.end(), '.', '/');
-  return json::json_pointer(p);
-}
-
-// `j` read into a T by its from_json (found by argument-dependent lookup).
-template <typename T>
-T decode(const json& j) {
-  T t;
-  from_json(j, t);
-  return t;
-}
-
-// Which top-level key of `point` its from_json refuses (an unknown enum name throws without
-// naming its key): each tried alone on the defaults; `section` when none alone fails.
-template <typename T>
-std::string failing_key(const json& point, const std::string& section) {
-  for (const auto& item : point.items()) {
-    json alone = T{};
-    alone[item.key()] = item.value();
-    try {
-      decode<T>(alone);
-    } catch (const std::exception&) {
-      return child(section, item.key());
-    }
-  }
-  return section;
-}
-
-// The options of one grid point, checked to read back as given (an unknown enum name, a
-// whole number given for a fractional one, ...).
-template <typename T>
-T options_from(const json& point, const std::string& section) {
-  T options;
-  try {
-    options = decode<T>(point);
-  } catch (const OptionError& e) {
-    throw OptionError(child(section, e.key()), e.what());
-  } catch (const std::exception& e) {
-    throw OptionError(failing_key<T>(point, section), e.what());
-  }
-  const json full = options;
-  json readback = full;
-  for (const auto& item : full.items()) {
-    if (!point.contains(item.key())) readback.erase(item.key());  // set by each run
-  }
-  if (const std::vector<std::string> at = json_differences(point, readback, section); !at.empty()) {
-    const json::json_pointer ptr = pointer_in_section(at.front());
-    throw OptionError(at.front(),
-                      "is not a valid value" +
-                          (point.contains(ptr) ? ": " + point.at(ptr).dump() : std::string()));
-  }
-  return options;
-}
-
-// The simulation options of a point with its terrain written as robot::terrain_text writes it
-// ("slope:5" -> "slope:5:0"), so that options_from's read-back compares like with like.
-json canonical_sim(json point) {
-  const json::json_pointer at("/scene/terrain");
-  if (!point.contains(at) || !point.at(at).is_string()) return point;
-  try {
-    point[at] = robot::terrain_text(robot::parse_terrain(point.at(at).get<std::string>()));
-  } catch (const BadInput& e) {
-    throw OptionError("sim.scene.terrain", e.what());
-  }
-  return point;
-}
-
-// A grid point's value of one axis as a short text ("0.1", "paper", "4-5-6").
-std::string value_text(const json& v) {
-  if (v.is_number_float()) return format_number(v.get<double>());
-  if (v.is_string()) {
-    // ':' (a terrain's "slope:5") as '_', so the value can name a run file
-    std::string text = v.get<std::string>();
-    std::replace(text.begin(), text.end(), ':', '_');
-    return text;
-  }
-  if (v.is_array()) {
-    std::vector<std::string> parts;
-    for (const json& e : v) parts.push_back(value_text(e));
-    return join(parts, "-");
-  }
-  // A learner (experiments/learner_table.h) by its name, unique within its axis.
-  if (v.is_object() && v.contains("name")) return value_text(v.at("name"));
-  return v.dump();
-}
-
-struct ScenarioSpec {
-  std::string name;
-  json resolved;  // the name of a leg set or fault, or {name, faults} of a timeline
-  std::vector<std::size_t> disabled;      // a leg set that fails at the document's fail_step
-  std::optional<sim::Fault> malfunction;  // another fault that comes at the fail_step
-  sim::FaultTimeline faults;              // a timeline
-  std::string path = "scenarios";         // where the document gives it ("scenarios[2]")
-};
-
-// A leg set given as "R1+R3" or ["R1", "R3"] (robot/leg_sets.h), at least one leg.
-robot::LegSet parse_legs(const robot::Morphology& morph, const json& legs,
-                         const std::string& path) {
-  robot::LegSet out;
-  try {
-    if (legs.is_string()) {
-      out = robot::parse_leg_set(morph, legs.get<std::string>());
-    } else if (legs.is_array()) {
-      out = robot::leg_set_from_json(morph, legs);
-    }
-  } catch (const BadInput& e) {
-    throw OptionError(path, e.what());
-  }
-  if (out.empty()) {
-    throw OptionError(path, "must name legs (\"R1+R3\" or [\"R1\", \"R3\"]), got " + legs.dump());
-  }
-  return out;
-}
-
-// One fault of a timeline table: {step, legs, recover} and, for kinds other than a whole leg,
-// {kind, joint, value} (sim/faults.h; the yaw sensor's kinds name no legs).
-sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const std::string& path) {
-  if (!f.is_object()) throw OptionError(path, "must be a table {step, legs, recover, kind, ...}");
-  const json defaults{{"step", 0},  {"legs", json::array()}, {"recover", false},
-                      {"kind", ""}, {"joint", ""},           {"value", 0.0}};
-  for (const auto& item : f.items()) {
-    if (!defaults.contains(item.key())) {
-      throw OptionError(child(path, item.key()),
-                        "is not a fault key (known: step, legs, recover, kind, joint, value)");
-    }
-    // legs may be a leg set's text or a list; parse_legs names either kind of mistake
-    if (item.key() != "legs") {
-      check_type(item.value(), defaults.at(item.key()), child(path, item.key()));
-    }
-  }
-  sim::Fault fault;
-  fault.step = f.value("step", 0L);
-  require_in(child(path, "step"), fault.step, Limits<long>{0, sim::kMaxSteps});
-  fault.recover = f.value("recover", false);
-  try {
-    std::optional<double> value;
-    if (f.contains("value")) value = f.at("value").get<double>();
-    fault.kind =
-        sim::make_kind(f.value("kind", std::string(sim::LegFault::kName)), value, fault.recover);
-  } catch (const BadInput& e) {
-    throw OptionError(child(path, f.contains("value") ? "value" : "kind"), e.what());
-  }
-  if (f.contains("joint")) {
-    try {
-      fault.joint = robot::parse_joint(f.at("joint").get<std::string>());
-    } catch (const BadInput& e) {
-      throw OptionError(child(path, "joint"), e.what());
-    }
-  }
-  if (sim::strikes(fault.kind) != sim::Strikes::sensor || f.contains("legs")) {
-    fault.legs = parse_legs(morph, f.value("legs", json()), child(path, "legs"));
-  }
-  return fault;
-}
-
-// A timeline fault as the resolved document records it: leg names, and kind, joint and value
-// only for kinds other than a whole leg.
-json timeline_fault_json(const robot::Morphology& morph, const sim::Fault& fault) {
-  json j{{"step", fault.step},
-         {"legs", robot::leg_set_json(morph, fault.legs)},
-         {"recover", fault.recover}};
-  if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) return j;
-  j["kind"] = sim::kind_name(fault.kind);
-  if (fault.joint) j["joint"] = robot::to_string(*fault.joint);
-  if (const std::optional<double> v = sim::value_of(fault.kind)) j["value"] = *v;
-  return j;
-}
-
-ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
-                               const std::string& path) {
-  const json defaults{{"name", ""}, {"faults", json::array()}};
-  for (const auto& item : s.items()) {
-    if (!defaults.contains(item.key())) {
-      throw OptionError(child(path, item.key()), "is not a scenario key (known: name, faults)");
-    }
-  }
-  if (!s.contains("name") || !s.at("name").is_string()) {
-    throw OptionError(child(path, "name"), "must name the scenario (a string)");
-  }
-  ScenarioSpec out;
-  out.name = s.at("name").get<std::string>();
-  if (!key_names_a_file(out.name)) {
-    throw OptionError(child(path, "name"),
-                      "must be letters, digits and + - _ . =, got \"" + out.name + "\"");
-  }
-  const std::string faults_path = child(path, "faults");
-  if (!s.contains("faults") || !s.at("faults").is_array() || s.at("faults").empty()) {
-    throw OptionError(faults_path, "must list at least one fault ({step, legs, recover})");
-  }
-  json faults = json::array();
-  for (std::size_t i = 0; i < s.at("faults").size(); ++i) {
-    const sim::Fault fault = timeline_fault(morph, s.at("faults")[i], indexed(faults_path, i));
-    out.faults.push_back(fault);
-    faults.push_back(timeline_fault_json(morph, fault));
-  }
-  try {
-    sim::validate(morph, out.faults);
-  } catch (const BadInput& e) {
-    throw OptionError(faults_path, e.what());
-  }
-  out.resolved = {{"name", out.name}, {"faults", faults}};
-  return out;
-}
-
-// A scenario written as one fault without its step ("R1+R3", "R2.CTr:locked", "L1:weak=0.3";
-// sim/fault_spec.h): it comes at the document's fail_step. A leg set is named as before; any
-// other fault by its text with ':' as '_', so it names a run file.
-ScenarioSpec fault_scenario(const robot::Morphology& morph, const json& text,
-                            const std::string& path) {
-  sim::Fault fault;
-  try {
-    fault = sim::parse_malfunction(morph, text.get<std::string>(), false);
-  } catch (const BadInput& e) {
-    throw OptionError(path, e.what());
-  }
-  if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) {
-    const std::vector<std::size_t> legs = parse_legs(morph, text, path);
-    const std::string name = robot::leg_set_name(morph, legs);
-    return {name, name, legs, std::nullopt, {}};
-  }
-  try {
-    sim::validate(morph, {fault});
-  } catch (const BadInput& e) {
-    throw OptionError(path, e.what());
-  }
-  const std::string spec = sim::malfunction_text(morph, fault);
-  std::string name = spec;
-  std::replace(name.begin(), name.end(), ':', '_');
-  return {name, spec, {}, fault, {}};
-}
-
-std::vector<ScenarioSpec> resolve_scenarios(robot::RobotKind kind, const json& doc) {
-  const robot::Morphology& morph = robot::morphology(kind);
-  if (!doc.contains("scenarios")) {
-    throw OptionError("scenarios",
-                      "is missing: \"paper\", \"all\", \"every\" or a list of leg sets");
-  }
-  const json& s = doc.at("scenarios");
-  std::vector<ScenarioSpec> out;
-  if (s.is_string()) {
-    std::vector<Scenario> named;
-    try {
-      if (s == "paper") {
-        named = paper_scenarios(kind);
-      } else if (s == "all") {
-        named = mirror_scenarios(morph, kMaxScenarioLegs);
-      } else if (s == "every") {
-        named = every_leg_loss(morph, kMaxScenarioLegs);
-      } else {
-        throw OptionError("scenarios",
-                          "must be \"paper\", \"all\", \"every\" or a list, got " + s.dump());
-      }
-    } catch (const OptionError&) {
-      throw;
-    } catch (const BadInput& e) {
-      throw OptionError("scenarios", e.what());
-    }
-    for (const Scenario& n : named) out.push_back({n.name, n.name, n.disabled, std::nullopt, {}});
-  } else if (s.is_array()) {
-    if (s.empty()) throw OptionError("scenarios", "is an empty list");
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const std::string path = indexed("scenarios", i);
-      if (s[i].is_object()) {
-        out.push_back(timeline_scenario(morph, s[i], path));
-        out.back().path = path;
-      } else if (s[i].is_string()) {
-        out.push_back(fault_scenario(morph, s[i], path));
-        out.back().path = path;
-      } else {
-        throw OptionError(path,
-                          "must be a leg set (\"R1+R3\"), a fault (\"R2.CTr:locked\") or a "
-                          "fault timeline table, got " +
-                              s[i].dump());
-      }
-      for (std::size_t j = 0; j + 1 < out.size(); ++j) {
-        if (out[j].name == out.back().name) {
-          throw OptionError(path, "repeats the scenario " + out.back().name);
-        }
-      }
-    }
-  } else {
-    throw OptionError("scenarios",
-                      "must be \"paper\", \"all\", \"every\" or a list, got " + s.dump());
-  }
-  return out;
-}
-
-// A whole number at `key` of `doc` in [lo, hi], or `fallback` when absent.
-template <class T>
-T whole(const json& doc, const std::string& key, T fallback, const Limits<T>& limits,
-        const std::string& path) {
-  if (!doc.contains(key)) return fallback;
-  const json& v = doc.at(key);
-  if (!v.is_number_integer()) {
-    throw OptionError(path, "must be a whole number, got " + v.dump());
-  }
-  const std::int64_t n = v.get<std::int64_t>();
-  if (n < static_cast<std::int64_t>(limits.lo) || n > static_cast<std::int64_t>(limits.hi)) {
-    throw OptionError(path, "must be in " + limits.text() + ", got " + std::to_string(n));
-  }
-  return static_cast<T>(n);
-}
 
 // The grid points: one value per axis, the first axis slowest.
 std::vector<std::vector<json>> grid_points(const std::vector<GridAxis>& grid) {
@@ -485,40 +63,6 @@ std::vector<std::string> axis_names(const std::vector<GridAxis>& grid) {
     if (std::count(names.begin(), names.end(), names[i]) > 1) names[i] = grid[i].key;
   }
   return names;
-}
-
-// Refuses a document nested deeper than kMaxExperimentDepth or with a list longer than
-// kMaxListValues, naming the key, before anything else looks at it (a document from Python is
-// not bounded by a file's size). Iterative: the depth is what is being checked.
-void check_bounds(const json& doc) {
-  struct Item {
-    const json* value;
-    std::string path;
-    int depth;
-  };
-  std::vector<Item> todo{{&doc, "", 0}};
-  while (!todo.empty()) {
-    const Item item = std::move(todo.back());
-    todo.pop_back();
-    if (item.depth > kMaxExperimentDepth) {
-      throw OptionError(
-          item.path, "is nested more than " + std::to_string(kMaxExperimentDepth) + " levels deep");
-    }
-    if (item.value->is_array()) {
-      if (item.value->size() > kMaxListValues) {
-        throw OptionError(item.path, "has " + std::to_string(item.value->size()) +
-                                         " values, more than the " +
-                                         std::to_string(kMaxListValues) + " a list may have");
-      }
-      for (std::size_t i = 0; i < item.value->size(); ++i) {
-        todo.push_back({&(*item.value)[i], indexed(item.path, i), item.depth + 1});
-      }
-    } else if (item.value->is_object()) {
-      for (const auto& entry : item.value->items()) {
-        todo.push_back({&entry.value(), child(item.path, entry.key()), item.depth + 1});
-      }
-    }
-  }
 }
 
 // `factors` multiplied, and whether the product fits 64 bits.
@@ -595,124 +139,22 @@ json sim_defaults(const json& doc) {
   return defaults;
 }
 
-// OUT/experiment.json's arguments, if OUT holds an experiment. A landscape's directory is
-// refused: its runs are combinations, not runs of a sweep, and it resumes by running again.
-std::optional<json> stored_arguments(const fs::path& out) {
-  const fs::path path = out / "experiment.json";
-  const std::optional<json> sealed = read_sealed(path);
-  if (!sealed) return std::nullopt;
-  const json& record = *sealed;
-  if (!record.contains("arguments")) {
-    throw BadInput("'" + path.string() + "' records no experiment arguments");
-  }
-  if (record.at("arguments").value("experiment", json()) == "landscape") {
-    throw BadInput("'" + out.string() +
-                   "' holds a landscape, which is not rerun or merged: run the same landscape "
-                   "again into it to resume it");
-  }
-  std::optional<json> arguments;
-  arguments.emplace(record.at("arguments"));
-  return arguments;
-}
-
-json arguments_of(const Sweep& sweep, const Shard& shard) {
-  json args = sweep.resolved;
-  if (shard.count > 1) args["shard"] = to_string(shard);
-  return args;
-}
-
-// Each distinct simulation of the runs, made once and shared read-only by the threads.
-class Models {
- public:
-  explicit Models(const std::vector<const RunSpec*>& specs) {
-    for (const RunSpec* spec : specs) {
-      const std::string key = key_of(*spec);
-      if (!models_.count(key)) models_.emplace(key, make_run_model(*spec));
-    }
-  }
-  const sim::SimModel& of(const RunSpec& spec) const { return models_.at(key_of(spec)); }
-
- private:
-  // The robot and every simulation option, as recorded: equal records, equal models.
-  static std::string key_of(const RunSpec& spec) {
-    return std::string(robot::to_string(spec.robot)) + json(spec.sim).dump();
-  }
-  std::map<std::string, sim::SimModel> models_;
-};
-
-json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer* observer) {
-  const robot::Morphology& morph = model.controller.morphology;
-  const learning::CompensationOptions& options = *spec.learning;
-  const long check_windows = spec.record.check_windows;
-  const LearningRun run = run_learning(model, spec, check_windows * options.window_steps, observer);
-  json out = learning::to_json(run.result, morph, sim::failing_legs(spec.faults));
-  if (check_windows > 0) {
-    json windows = json::array();
-    bool holds = true;
-    for (const sim::WindowMeasure& m : run.after_windows) {
-      windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
-      holds = holds && sim::holds(m.worst_deg(), options.annealing.threshold_deg);
-    }
-    out["after_windows"] = windows;
-    out["holds_after"] = holds;
-  }
-  if (!spec.record.trace) out.erase("trace");
-  return out;
-}
-
-std::string cell(const json& v) {
-  if (v.is_null()) return "";
-  if (v.is_number_float()) return shortest(v.get<double>());
-  if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_array()) return value_text(v);
-  return v.dump();
-}
-
-// The columns every CSV row of a run starts with: key, scenario, run, seed, grid values.
-std::vector<std::string> run_columns(const Sweep& sweep) {
-  std::vector<std::string> cols{"key", "scenario", "run", "seed"};
-  for (const GridAxis& a : sweep.grid) cols.push_back(a.key);
-  return cols;
-}
-
-std::vector<std::string> run_cells(const Sweep& sweep, const Task& t) {
-  std::vector<std::string> cells{t.key, t.params.at("scenario").get<std::string>(),
-                                 std::to_string(t.run), std::to_string(t.seed)};
-  for (const GridAxis& a : sweep.grid) cells.push_back(cell(t.params.at("grid").at(a.key)));
-  return cells;
-}
-
-ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
-                              const std::vector<json>& results) {
-  const robot::Morphology& morph = robot::morphology(sweep.robot);
-  ExperimentTable table{sweep.table, std::string(robot::to_string(sweep.robot)),
-                        summarize(morph, sweep.tasks, results)};
-  Table data;
-  Table shown;
-  if (sweep.table == ExperimentKind::beta) {
-    data = beta_data(table.rows);
-    shown = beta_table(table.rows);
-  } else if (sweep.table == ExperimentKind::grid) {
-    data = scenario_data(table.rows, "group");
-    shown = scenario_table(table.rows, "Grid point");
-  } else {
-    data = scenario_data(table.rows);
-    shown = scenario_table(table.rows);
-  }
-  write_file_atomic(out / "table.csv", to_csv(data));
-  write_file_atomic(out / "table.md", to_markdown(shown));
-  write_file_atomic(out / "runs.csv", to_csv(runs_table(sweep, results)));
-  write_file_atomic(out / "trials.csv", to_csv(trials_table(sweep, results)));
-  json rows = json::array();
-  for (const GroupSummary& row : table.rows) rows.push_back(to_json(row));
-  json summary{{"experiment", to_string(table.experiment)},
-               {"robot", table.robot},
-               {"arguments", sweep.resolved},
-               {"rows", rows}};
-  if (sweep.robot_file) summary["robot_file"] = sweep.robot_file->record;
-  write_file_atomic(out / "summary.json", summary.dump(kJsonIndent) + "\n");
-  return table;
+// What a run file records of its run (Task::params; merge_sweeps checks it again): the robot,
+// its label, the failing legs' names, the learning options with the run's faults in the form
+// every learning record has (learning_record, run_json.h), the simulation options and what is
+// recorded.
+json run_params(const RunSpec& spec, const RunLabel& label) {
+  json params{
+      {"robot", robot::to_string(spec.robot)},
+      {"scenario", label.scenario},
+      {"disabled",
+       robot::leg_set_json(robot::morphology(spec.robot), sim::failing_legs(spec.faults))},
+      {"grid", label.grid},
+      {"learning", learning_record(*spec.learning, spec.faults)},
+      {"sim", spec.sim},
+      {"record", {{"check_windows", spec.record.check_windows}, {"trace", spec.record.trace}}}};
+  record_robot_file(params, spec);
+  return params;
 }
 
 const std::set<std::string> kDocumentKeys{"kind",   "robot",    "robot_file", "scenarios",
@@ -930,7 +372,7 @@ nlohmann::json learning_document(const learning::CompensationOptions& options, l
 
 Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
   if (!doc.is_object()) throw OptionError("", "an experiment must be a table of keys");
-  check_bounds(doc);
+  document::check_bounds(doc);
   for (const auto& item : doc.items()) {
     if (!kDocumentKeys.count(item.key())) {
       throw OptionError(item.key(), "is not an experiment key (known: " +
@@ -951,7 +393,6 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
   if (doc.contains("landscape")) {
     throw OptionError("landscape", "belongs to kind = \"landscape\" files");
   }
-  const robot::Morphology& morph = robot::morphology(sweep.robot);
   const std::vector<ScenarioSpec> scenarios = resolve_scenarios(sweep.robot, doc);
   const int runs = whole(doc, "runs", kScenarioRuns, kRunsLimits, "runs");
   std::uint64_t seed = 1;
@@ -1066,232 +507,33 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
       }
       const std::string group_key = join(kp, "_");
       for (int run = 0; run < runs; ++run) {
-        Task task;
+        PlannedRun planned{Task{}, spec, RunLabel{s.name, grid_values}};
+        Task& task = planned.task;
         task.key = run_key(group_key, run);
         task.group = join(gp, " ");
         task.run = run;
         task.seed = derive_seed(seed, task.key);
-        spec.learning->seed = task.seed;
-        // The run file's record of its options (the form earlier versions wrote).
-        json options = *spec.learning;
-        options["disabled"] = s.disabled;
-        options[kFailStepKey] = fail_step;
-        options["faults"] = s.malfunction ? spec.faults : s.faults;
-        task.params = {{"robot", robot::to_string(sweep.robot)},
-                       {"scenario", s.name},
-                       {"disabled", robot::leg_set_json(morph, sim::failing_legs(spec.faults))},
-                       {"grid", grid_values},
-                       {"learning", options},
-                       {"sim", sim_options},
-                       {"record", record}};
-        if (sweep.robot_file) task.params["robot_file"] = sweep.robot_file->record;
-        sweep.tasks.push_back(std::move(task));
-        sweep.specs.push_back(spec);
+        planned.spec.learning->seed = task.seed;
+        task.params = run_params(planned.spec, planned.label);
+        sweep.runs.push_back(std::move(planned));
       }
     }
   }
   return sweep;
 }
 
-const RunSpec& spec_of(const Sweep& sweep, const Task& task) {
-  for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
-    if (sweep.tasks[i].key == task.key) return sweep.specs.at(i);
-  }
-  throw std::invalid_argument("spec_of: no run " + task.key + " in the sweep");
-}
-
-SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
-  const json arguments = arguments_of(sweep, options.shard);
-  if (is_primary_process()) ensure_writable_dir(options.out);
+std::vector<Task> tasks_of(const Sweep& sweep) {
   std::vector<Task> tasks;
-  std::map<std::string, const RunSpec*> specs;
-  std::vector<const RunSpec*> shard_specs;
-  for (std::size_t i = 0; i < sweep.tasks.size(); ++i) {
-    if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
-        options.shard.index) {
-      tasks.push_back(sweep.tasks[i]);
-      shard_specs.push_back(&sweep.specs[i]);
-      specs.emplace(sweep.tasks[i].key, &sweep.specs[i]);
-    }
-  }
-  RunnerOptions runner;
-  runner.out_dir = options.out;
-  runner.jobs = options.jobs;
-  runner.arguments = arguments;
-  runner.progress = options.progress;
-  runner.provenance = provenance(mj_versionString());
-  validate(runner);
-  const Models models(shard_specs);
-  const RunnerOutcome outcome = run_tasks(
-      tasks,
-      [&](const Task& task) {
-        const RunSpec& spec = *specs.at(task.key);
-        return task_result(models.of(spec), spec, nullptr);
-      },
-      runner);
-  SweepOutcome result;
-  result.tasks = tasks.size();
-  result.loaded = outcome.loaded;
-  result.ran = outcome.ran;
-  if (options.shard.count > 1) return result;
-  // Every process of an MPI job gets here; the primary writes OUT (processes.h).
-  result.table = is_primary_process()
-                     ? write_results(sweep, options.out, outcome.results)
-                     : ExperimentTable{sweep.table, std::string(robot::to_string(sweep.robot)), {}};
-  return result;
+  tasks.reserve(sweep.runs.size());
+  for (const PlannedRun& run : sweep.runs) tasks.push_back(run.task);
+  return tasks;
 }
 
-json run_sweep_task(const RunSpec& spec, sim::Observer* observer) {
-  return task_result(make_run_model(spec), spec, observer);
-}
-
-RecordedSweep read_sweep(const fs::path& dir) {
-  std::optional<json> arguments = stored_arguments(dir);
-  if (!arguments) {
-    throw BadInput("no experiment in '" + dir.string() + "' (missing experiment.json)");
+const PlannedRun* find_run(const Sweep& sweep, std::string_view key) {
+  for (const PlannedRun& run : sweep.runs) {
+    if (run.task.key == key) return &run;
   }
-  RecordedSweep out;
-  if (arguments->contains("shard")) {
-    out.shard = parse_shard(arguments->at("shard").get<std::string>());
-    arguments->erase("shard");
-  }
-  // It ran, so it was within some --max-runs: the most that flag allows.
-  const SweepLimits recorded{kMaxRunsLimits.hi, "--max-runs"};
-  try {
-    out.sweep = resolve_sweep(*arguments, recorded);
-  } catch (const OptionError& e) {
-    throw BadInput("'" + (dir / "experiment.json").string() + "': " + e.key() + " " + e.what());
-  }
-  return out;
-}
-
-ExperimentTable merge_sweeps(const fs::path& out, const std::vector<fs::path>& dirs,
-                             bool progress) {
-  if (dirs.empty()) throw BadInput("name at least one shard directory to merge");
-  std::optional<json> base;
-  std::map<std::string, fs::path> where;  // run key -> the shard directory holding it
-  std::set<int> shards;
-  int count = 0;
-  for (const fs::path& dir : dirs) {
-    std::optional<json> args = stored_arguments(dir);
-    if (!args) throw BadInput("no experiment in '" + dir.string() + "' (missing experiment.json)");
-    const Shard shard =
-        args->contains("shard") ? parse_shard(args->at("shard").get<std::string>()) : Shard{};
-    args->erase("shard");
-    if (!base) {
-      base = *args;
-      count = shard.count;
-    } else if (const std::vector<std::string> keys = json_differences(*base, *args);
-               !keys.empty()) {
-      throw BadInput("'" + dir.string() + "' is not a shard of the experiment in '" +
-                     dirs.front().string() + "' (" + keys.front() + " differs)");
-    }
-    if (shard.count != count || !shards.insert(shard.index).second) {
-      throw BadInput("'" + dir.string() + "' holds shard " + to_string(shard) +
-                     ", which repeats or does not fit shards of " + std::to_string(count));
-    }
-    for (const auto& run : fs::directory_iterator(dir / "runs")) {
-      if (run.path().extension() == ".json") where.emplace(run.path().stem().string(), dir);
-    }
-  }
-  const Sweep sweep = read_sweep(dirs.front()).sweep;
-  for (const Task& t : sweep.tasks) {
-    if (!where.count(t.key)) {
-      throw BadInput("run " + t.key + " is in none of the directories (a shard missing or " +
-                     "not finished)");
-    }
-  }
-  RunnerOptions runner;
-  runner.out_dir = out;
-  runner.arguments = sweep.resolved;
-  runner.progress = progress;
-  runner.provenance = provenance(mj_versionString());
-  ensure_writable_dir(out);
-  // The run files are taken as saved, after their checksum and their task are checked.
-  const RunnerOutcome outcome = run_tasks(
-      sweep.tasks,
-      [&](const Task& t) {
-        const fs::path path = where.at(t.key) / "runs" / (t.key + ".json");
-        const std::optional<json> sealed = read_sealed(path);
-        if (!sealed) throw BadInput("cannot read '" + path.string() + "'");
-        const json& saved = *sealed;
-        const json expected{{"key", t.key},
-                            {"group", t.group},
-                            {"run", t.run},
-                            {"seed", t.seed},
-                            {"params", t.params}};
-        for (const auto& item : expected.items()) {
-          if (saved.value(item.key(), json()) != item.value()) {
-            throw BadInput("'" + path.string() + "' is not the run " + t.key + " (" + item.key() +
-                           " differs)");
-          }
-        }
-        return saved.at("result");
-      },
-      runner);
-  return write_results(sweep, out, outcome.results);
-}
-
-Table runs_table(const Sweep& sweep, const std::vector<json>& results) {
-  const robot::Morphology& morph = robot::morphology(sweep.robot);
-  Table t;
-  for (const std::string& c : run_columns(sweep)) t.columns.push_back({c});
-  const std::vector<std::string> outcome{"converged",
-                                         "status",
-                                         "reason",
-                                         "trials",
-                                         "initial_deviation_deg",
-                                         "final_deviation_deg",
-                                         "steps_walked",
-                                         "detection_step",
-                                         "settle_steps",
-                                         "steering_effort"};
-  for (const std::string& c : outcome) t.columns.push_back({c});
-  for (const robot::Leg& leg : morph.legs) t.columns.push_back({"period_" + leg.name});
-  const bool holds = sweep.resolved.at("record").at("check_windows").get<long>() > 0;
-  if (holds) t.columns.push_back({"holds_after"});
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const json& r = results[i];
-    std::vector<std::string> cells = run_cells(sweep, sweep.tasks[i]);
-    for (const std::string& c : outcome) cells.push_back(cell(r.value(c, json())));
-    for (const robot::Leg& leg : morph.legs) cells.push_back(cell(r.at("periods").at(leg.name)));
-    if (holds) cells.push_back(cell(r.value("holds_after", json())));
-    t.add_row(std::move(cells));
-  }
-  return t;
-}
-
-Table trials_table(const Sweep& sweep, const std::vector<json>& results) {
-  const robot::Morphology& morph = robot::morphology(sweep.robot);
-  Table t;
-  for (const std::string& c : run_columns(sweep)) t.columns.push_back({c});
-  t.columns.push_back({"trial"});
-  for (const robot::Leg& leg : morph.legs) t.columns.push_back({"period_" + leg.name});
-  // The neutral fields of a trial, then every learner's own details (learning/learner.h).
-  std::set<std::string> details;
-  for (const json& r : results) {
-    for (const json& trial : r.value("trace", json::array())) {
-      for (const auto& item : trial.items()) details.insert(item.key());
-    }
-  }
-  std::vector<std::string> fields{"deviation_deg", "accepted"};
-  for (const char* neutral : {"trial", "periods", "deviation_deg", "accepted"}) {
-    details.erase(neutral);
-  }
-  fields.insert(fields.end(), details.begin(), details.end());
-  for (const std::string& c : fields) t.columns.push_back({c});
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    for (const json& trial : results[i].value("trace", json::array())) {
-      std::vector<std::string> cells = run_cells(sweep, sweep.tasks[i]);
-      cells.push_back(cell(trial.at("trial")));
-      for (const robot::Leg& leg : morph.legs) {
-        cells.push_back(cell(trial.at("periods").at(leg.name)));
-      }
-      for (const std::string& c : fields) cells.push_back(cell(trial.value(c, json())));
-      t.add_row(std::move(cells));
-    }
-  }
-  return t;
+  return nullptr;
 }
 
 }  // namespace multicpg::experiments

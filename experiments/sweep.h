@@ -3,6 +3,9 @@
 // resolved once (every default filled in, every value checked) into tasks for the runner
 // (runner.h), and the resolved document is what OUT/experiment.json records, so any run can be
 // rerun, any shard merged, and a resumed experiment refused when its document changed.
+// Resolution is sweep.cpp, with the document's schema checks (document_schema.h) and its
+// scenarios (document_scenarios.h); running, resuming and merging sweep_run.cpp; the tables and
+// CSVs written at the end sweep_tables.h.
 //
 // Document keys:
 //   kind       "learning" (default): learning runs, tables per scenario or grid point;
@@ -24,7 +27,7 @@
 //   sim        sim::SimOptions keys
 //   record     check_windows (windows walked after learning) and trace (the trial list)
 // Any learning or sim value may be a list (for a list-valued option: a list of lists); the
-// lists form a grid, and each grid point x scenario x run is one task.
+// lists form a grid, and each grid point x scenario x run is one planned run.
 #pragma once
 
 #include <cstdint>
@@ -35,9 +38,9 @@
 #include <string_view>
 #include <vector>
 
+#include "experiments/document_schema.h"
 #include "experiments/experiment_limits.h"
 #include "experiments/landscape.h"
-#include "experiments/learning_experiments.h"
 #include "experiments/run_spec.h"
 #include "experiments/runner.h"
 #include "experiments/tables.h"
@@ -59,10 +62,19 @@ struct Shard {
 Shard parse_shard(std::string_view text);
 std::string to_string(const Shard& shard);
 
-// One swept option: its dotted key ("learning.annealing.beta") and its values.
-struct GridAxis {
-  std::string key;
-  nlohmann::json values;  // a JSON array
+// Where a run sits in its sweep: its scenario and its grid values (dotted key -> value), what
+// runs.csv and trials.csv start its rows with.
+struct RunLabel {
+  std::string scenario;
+  nlohmann::json grid = nlohmann::json::object();
+};
+
+// One run a sweep plans: the runner's task (its key, group, seed and the record saved with its
+// result), the run itself and its label.
+struct PlannedRun {
+  Task task;
+  RunSpec spec;
+  RunLabel label;
 };
 
 struct Sweep {
@@ -70,12 +82,11 @@ struct Sweep {
   robot::RobotKind robot = robot::RobotKind::hexapod;
   std::shared_ptr<const RunRobotFile> robot_file;  // null: the built-in robot
   std::vector<GridAxis> grid;                      // in key order; the first varies slowest
-  std::vector<Task> tasks;     // every task, grid point by grid point, scenario, run
-  std::vector<RunSpec> specs;  // the run of each task, in the same order
+  std::vector<PlannedRun> runs;                    // grid point by grid point, scenario, run
   // table: no grid, one row per scenario (Figs. 11, 13); beta: beta alone swept on one
   // scenario (Fig. 14); grid: one row per grid point and scenario. Unused for a landscape.
   ExperimentKind table = ExperimentKind::table;
-  // kind "landscape" (then no tasks): one landscape per scenario, the same settings.
+  // kind "landscape" (then no runs): one landscape per scenario, the same settings.
   std::vector<LandscapeSpec> landscapes;
 };
 
@@ -94,9 +105,11 @@ nlohmann::json landscape_document(const LandscapeSpec& spec);
 // and fail_step, the step at which a scenario's leg set fails.
 nlohmann::json learning_document(const learning::CompensationOptions& options, long fail_step);
 
-// The run of `task` (one of sweep.tasks). Throws std::invalid_argument for a task of another
-// sweep.
-const RunSpec& spec_of(const Sweep& sweep, const Task& task);
+// The runner's tasks of the sweep's runs, in their order.
+std::vector<Task> tasks_of(const Sweep& sweep);
+
+// The planned run whose key is `key` ("R1_run003", a run file's name), or null.
+const PlannedRun* find_run(const Sweep& sweep, std::string_view key);
 
 struct SweepRunOptions {
   std::filesystem::path out;
@@ -134,9 +147,5 @@ RecordedSweep read_sweep(const std::filesystem::path& dir);
 // when the directories are not shards of one resolved document or a run is missing.
 ExperimentTable merge_sweeps(const std::filesystem::path& out,
                              const std::vector<std::filesystem::path>& dirs, bool progress);
-
-// runs.csv and trials.csv of an experiment's results (in task order).
-Table runs_table(const Sweep& sweep, const std::vector<nlohmann::json>& results);
-Table trials_table(const Sweep& sweep, const std::vector<nlohmann::json>& results);
 
 }  // namespace multicpg::experiments

@@ -212,4 +212,23 @@ Table beta_table(const std::vector<GroupSummary>& rows) {
   return t;
 }
 
+std::string_view to_string(ExperimentKind kind) {
+  switch (kind) {
+    case ExperimentKind::table:
+      return "table";
+    case ExperimentKind::beta:
+      return "beta";
+    case ExperimentKind::grid:
+      return "grid";
+  }
+  return "table";
+}
+
+ExperimentKind parse_experiment_kind(std::string_view text) {
+  for (ExperimentKind kind : {ExperimentKind::table, ExperimentKind::beta, ExperimentKind::grid}) {
+    if (text == to_string(kind)) return kind;
+  }
+  throw BadInput("unknown experiment '" + std::string(text) + "' (table, beta or grid)");
+}
+
 }  // namespace multicpg::experiments

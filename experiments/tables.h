@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/table.h"
@@ -59,5 +60,18 @@ Table scenario_data(const std::vector<GroupSummary>& rows,
 // Beta tables (Fig. 14): groups are betas.
 Table beta_table(const std::vector<GroupSummary>& rows);
 Table beta_data(const std::vector<GroupSummary>& rows);
+
+// The tables of learning experiments: the paper's two, and a grid of options (sweep.h).
+enum class ExperimentKind { table, beta, grid };
+std::string_view to_string(ExperimentKind kind);              // "table", "beta", "grid"
+ExperimentKind parse_experiment_kind(std::string_view text);  // throws BadInput
+
+// An experiment's results: one summary row per scenario, beta or grid point, written to OUT as
+// table.csv, table.md and summary.json.
+struct ExperimentTable {
+  ExperimentKind experiment = ExperimentKind::table;
+  std::string robot;
+  std::vector<GroupSummary> rows;
+};
 
 }  // namespace multicpg::experiments

@@ -75,7 +75,7 @@ std::vector<Task> small_experiment() {
   const std::vector<Scenario> all = paper_scenarios(RobotKind::hexapod);
   nlohmann::json names = nlohmann::json::array();
   for (std::size_t i = 0; i < 5; ++i) names.push_back(all[i].name);
-  return resolve_sweep({{"scenarios", names}, {"runs", 3}, {"seed", 1}}).tasks;
+  return tasks_of(resolve_sweep({{"scenarios", names}, {"runs", 3}, {"seed", 1}}));
 }
 
 std::string table_of(const std::vector<Task>& tasks, const RunnerOutcome& outcome) {
@@ -116,7 +116,8 @@ TEST(Scenarios, QuadrupedAndBetaStudy) {
   // The beta study's runs: keys "beta<b>_run<NNN>" (seeds come from them), one group per beta.
   ExperimentSpec spec;
   spec.runs = kBetaRuns;
-  const std::vector<Task> tasks = resolve_sweep(beta_study_document(spec, kBetaStudyValues)).tasks;
+  const std::vector<Task> tasks =
+      tasks_of(resolve_sweep(beta_study_document(spec, kBetaStudyValues)));
   EXPECT_EQ(tasks.size(), kBetaStudyValues.size() * kBetaRuns);
   EXPECT_EQ(tasks.front().key, "beta0_run000");
   EXPECT_EQ(tasks[kBetaRuns].group, "0.1");
@@ -226,9 +227,8 @@ TEST(Runner, RejectsBadInput) {
 // The pieces together: compensation on the fake walker as the task, through runner and tables.
 TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
   const robot::Morphology& quad = robot::morphology(RobotKind::quadruped);
-  const std::vector<Task> tasks =
-      resolve_sweep({{"robot", "quadruped"}, {"scenarios", "paper"}, {"runs", 2}, {"seed", 5}})
-          .tasks;
+  const std::vector<Task> tasks = tasks_of(
+      resolve_sweep({{"robot", "quadruped"}, {"scenarios", "paper"}, {"runs", 2}, {"seed", 5}}));
   auto learn = [&](const Task& t) {
     learning::CompensationOptions o;
     o.mode = learning::Mode::paper;

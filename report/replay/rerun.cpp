@@ -106,15 +106,12 @@ RerunReplay rerun_experiment_run(const fs::path& file) {
   const fs::path dir = file.parent_path().parent_path();
   const experiments::RecordedSweep recorded = experiments::read_sweep(dir);
   const std::string id = file.stem().string();
-  const experiments::Task* task = nullptr;
-  for (const experiments::Task& t : recorded.sweep.tasks) {
-    if (t.key == id) task = &t;
-  }
-  if (task == nullptr || !saved->contains("result")) {
+  const experiments::PlannedRun* planned = experiments::find_run(recorded.sweep, id);
+  if (planned == nullptr || !saved->contains("result")) {
     throw BadInput(quoted(file.string()) + " is not a run of the experiment in " +
                    quoted(dir.string()));
   }
-  const experiments::RunSpec& spec = experiments::spec_of(recorded.sweep, *task);
+  const experiments::RunSpec& spec = planned->spec;
   RerunReplay out;
   ReplayRecorder recorder;
   const json result = experiments::run_sweep_task(spec, &recorder);

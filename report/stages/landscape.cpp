@@ -17,7 +17,8 @@
 namespace multicpg::report {
 namespace {
 
-// The scenario of the brute-force check (docs/learning.md): the quadruped's hardest (few combinations hold).
+// The scenario of the brute-force check (docs/learning.md): the quadruped's hardest (few
+// combinations hold).
 constexpr const char* kScenario = "L2";
 
 // The periods every converged run of `scenario` in the experiment `dir` ended with.
@@ -25,7 +26,7 @@ std::vector<learning::Periods> learned_periods(const std::filesystem::path& dir,
                                                const std::string& scenario,
                                                const robot::Morphology& morph) {
   std::vector<learning::Periods> learned;
-  for (const experiments::Task& task : experiments::read_sweep(dir).sweep.tasks) {
+  for (const experiments::Task& task : experiments::tasks_of(experiments::read_sweep(dir).sweep)) {
     if (task.group != scenario) continue;
     const std::filesystem::path file = dir / "runs" / (task.key + ".json");
     const std::optional<nlohmann::json> run = experiments::read_sealed(file);
