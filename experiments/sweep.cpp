@@ -336,6 +336,12 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
   }
   ScenarioSpec out;
   out.name = s.at("name").get<std::string>();
+  if (out.name.size() > max_key_length()) {
+    throw OptionError(child(path, "name"), "names run files, but its " +
+                                               std::to_string(out.name.size()) +
+                                               " characters are more than a file name holds (" +
+                                               std::to_string(max_key_length()) + ")");
+  }
   if (!key_names_a_file(out.name)) {
     throw OptionError(child(path, "name"),
                       "must be letters, digits and + - _ . =, got \"" + out.name + "\"");
@@ -1062,6 +1068,14 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
       for (int run = 0; run < runs; ++run) {
         Task task;
         task.key = run_key(group_key, run);
+        if (task.key.size() > max_key_length()) {
+          throw OptionError(name_scenario ? child(s.path, "name") : "grid",
+                            "makes run files named '" + task.key + ".json', " +
+                                std::to_string(task.key.size()) +
+                                " characters before '.json' where a file name holds at most " +
+                                std::to_string(max_key_length()) +
+                                ": shorten the scenario name or the grid values");
+        }
         task.group = join(gp, " ");
         task.run = run;
         task.seed = derive_seed(seed, task.key);
