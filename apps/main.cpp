@@ -65,19 +65,24 @@ std::string did_you_mean(std::string_view typed, const std::vector<std::string>&
   return near ? " (did you mean " + prefix + *near + "?)" : "";
 }
 
+// The commands of `app` (an option group is an unnamed CLI::App: not a command).
 std::vector<std::string> command_names(const CLI::App& app) {
   std::vector<std::string> names;
-  for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (!sub->get_name().empty()) names.push_back(sub->get_name());
+  }
   return names;
 }
 
-std::vector<std::string> flag_names(const CLI::App& app) {
-  std::vector<std::string> names;
+// The flags of `app`, those of its option groups included.
+void add_flag_names(const CLI::App& app, std::vector<std::string>& names) {
   for (const CLI::Option* option : app.get_options()) {
     for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
     for (const std::string& name : option->get_snames()) names.push_back("-" + name);
   }
-  return names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->get_name().empty()) add_flag_names(*sub, names);
+  }
 }
 
 // Throws BadInput for a word of the command line that should name a command ("multicpg wlak",
@@ -85,9 +90,10 @@ std::vector<std::string> flag_names(const CLI::App& app) {
 void check_command_words(const CLI::App& app, int argc, char** argv) {
   const CLI::App* command = &app;
   std::string path;  // "experiment " for the commands of `experiment`
-  for (int i = 1; i < argc && argv[i][0] != '-' && !command->get_subcommands({}).empty(); ++i) {
+  for (int i = 1; i < argc && argv[i][0] != '-'; ++i) {
     const std::string word = argv[i];
     const std::vector<std::string> known = command_names(*command);
+    if (known.empty()) return;
     if (std::find(known.begin(), known.end(), word) == known.end()) {
       const std::string meant = did_you_mean(word, known, path);
       throw BadInput("unknown command '" + path + word + "'" +
@@ -124,7 +130,9 @@ std::string unexpected_arguments(const CLI::App& app, int argc, char** argv) {
     if (unexpected.count(arg) == 0) continue;
     if (arg.size() > 1 && arg[0] == '-') {
       const std::string flag = arg.substr(0, arg.find('='));
-      const std::string meant = did_you_mean(flag, flag_names(*command));
+      std::vector<std::string> flags;
+      add_flag_names(*command, flags);
+      const std::string meant = did_you_mean(flag, flags);
       return "unknown flag '" + flag + "'" + of + (meant.empty() ? help : meant);
     }
     if (!first) first = arg;
