@@ -87,12 +87,16 @@ void register_render(CLI::App& app) {
   cmd->add_option("--out", o->out, "FILE.mp4 (every step) or FILE.png (the last step)")->required();
   add_replay_flag(*cmd, o->replay);
   add_walk_flags(*cmd, o->run);
-  cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")
-      ->check(in(sim::kRunStepsLimits))
-      ->capture_default_str();
-  cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk");
+  CLI::Option* steps = cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")
+                           ->check(in(sim::kRunStepsLimits))
+                           ->capture_default_str();
+  CLI::Option* learn =
+      cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk")
+          ->excludes(steps);
   cmd->add_flag("--tunnel", o->tunnel, "walk in the 3.0 m x 1.2 m tunnel of paper §5");
+  const std::size_t learning_flags = cmd->get_options().size();
   add_learning_flags(*cmd, o->run.learning);
+  require_for_options_from(*cmd, learning_flags, learn);
   add_sim_flags(*cmd, o->run.sim, o->run.body);
   cmd->add_option("--width", o->width, "frame width in pixels")
       ->check(in(report::kFrameSideLimits))

@@ -171,10 +171,13 @@ void register_tunnel(CLI::App& app) {
   CLI::Option* periods =
       cmd->add_option("--periods", o->run.periods, "4 (every leg) or R1=5,R2=4,...")
           ->capture_default_str();
-  cmd->add_flag("--learn", o->learn,
-                "learn in the open field first (from a walking robot), then walk the learned "
-                "controller through the tunnel");
+  CLI::Option* learn =
+      cmd->add_flag("--learn", o->learn,
+                    "learn in the open field first (from a walking robot), then walk the learned "
+                    "controller through the tunnel");
+  const std::size_t learning_flags = cmd->get_options().size();
   add_learning_flags(*cmd, o->run.learning);
+  require_for_options_from(*cmd, learning_flags, learn);
   cmd->add_option("--max-steps", o->max_steps, "steps before giving up")
       ->check(in(sim::kRunStepsLimits))
       ->capture_default_str();

@@ -12,6 +12,11 @@ void add_max_runs_flag(CLI::App& cmd, std::int64_t& max_runs) {
       ->capture_default_str();
 }
 
+void require_for_options_from(CLI::App& cmd, std::size_t first, CLI::Option* needed) {
+  const std::vector<CLI::Option*> options = cmd.get_options();
+  for (std::size_t i = first; i < options.size(); ++i) options[i]->needs(needed);
+}
+
 void refuse_empty_values(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     if (option->get_type_size() > 0) option->check(kNotEmpty);

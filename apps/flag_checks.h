@@ -47,14 +47,18 @@ inline CLI::Validator seed_value() {
       "in " + kSeedLimits.text());
 }
 
-// A path or name that is not the empty string.
+// A path or name that is not the empty string. No description: it holds for every flag, so
+// --help would only repeat it after each one.
 inline const CLI::Validator kNotEmpty(
-    [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; },
-    "not empty");
+    [](std::string& text) -> std::string { return text.empty() ? "must not be empty" : ""; }, "");
 
 // --max-runs: the most runs (grid points x scenarios x runs, or a landscape's combinations) an
 // experiment may have (experiments/experiment_limits.h).
 void add_max_runs_flag(CLI::App& cmd, std::int64_t& max_runs);
+
+// Makes every option of `cmd` from its `first`-th (in the order they were added) need `needed`:
+// flags that do nothing without it are refused ("--beta requires --learn"), never ignored.
+void require_for_options_from(CLI::App& cmd, std::size_t first, CLI::Option* needed);
 
 // Adds kNotEmpty to every option of `app` and its subcommands that takes a value: no flag of
 // multicpg has a meaning for the empty string (a number, path, name or list).

@@ -1,18 +1,24 @@
 // multicpg: multiple chaotic CPGs with learning for legged locomotion (Ren et al. 2015).
 // Exit codes: 0 success, 2 bad input, 1 runtime failure, 130 / 143 stopped by SIGINT / SIGTERM
 // (under mpirun: the job's, printed once).
+#include <mujoco/mujoco.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <iterator>
+#include <optional>
+#include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "common/errors.h"
 #include "common/interrupt.h"
 #include "common/provenance.h"
+#include "common/user_text.h"
 #include "experiments/processes.h"
 #include "sim/mujoco_guard.h"
 
@@ -52,6 +58,89 @@ void check_processes(const CLI::App& app) {
   }
 }
 
+// " (did you mean PREFIX NAME?)" when a name of `known` is close to `typed`, else "".
+std::string did_you_mean(std::string_view typed, const std::vector<std::string>& known,
+                         const std::string& prefix = "") {
+  const std::optional<std::string> near = closest_name(typed, known);
+  return near ? " (did you mean " + prefix + *near + "?)" : "";
+}
+
+// The commands of `app` (an option group is an unnamed CLI::App: not a command).
+std::vector<std::string> command_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (!sub->get_name().empty()) names.push_back(sub->get_name());
+  }
+  return names;
+}
+
+// The flags of `app`, those of its option groups included.
+void add_flag_names(const CLI::App& app, std::vector<std::string>& names) {
+  for (const CLI::Option* option : app.get_options()) {
+    for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+    for (const std::string& name : option->get_snames()) names.push_back("-" + name);
+  }
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->get_name().empty()) add_flag_names(*sub, names);
+  }
+}
+
+// Throws BadInput for a word of the command line that should name a command ("multicpg wlak",
+// "multicpg experiment tabel") and names none, with the command meant if it is near.
+void check_command_words(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* command = &app;
+  std::string path;  // "experiment " for the commands of `experiment`
+  for (int i = 1; i < argc && argv[i][0] != '-'; ++i) {
+    const std::string word = argv[i];
+    const std::vector<std::string> known = command_names(*command);
+    if (known.empty()) return;
+    if (std::find(known.begin(), known.end(), word) == known.end()) {
+      const std::string meant = did_you_mean(word, known, path);
+      throw BadInput("unknown command '" + path + word + "'" +
+                     (meant.empty() ? " (see multicpg " + path + "--help)" : meant));
+    }
+    command = command->get_subcommand(word);
+    path += word + " ";
+  }
+}
+
+// The command the command line chose ("walk", "experiment table") and its CLI::App.
+std::pair<std::string, const CLI::App*> parsed_command(const CLI::App& app) {
+  std::string name;
+  const CLI::App* command = &app;
+  while (!command->get_subcommands().empty()) {
+    command = command->get_subcommands().front();
+    name += (name.empty() ? "" : " ") + command->get_name();
+  }
+  return {name, command};
+}
+
+// One line for arguments the command does not take: the first unknown flag with the flag meant
+// if one is near ("unknown flag '--period' of walk (did you mean --periods?)"), else the first
+// unexpected argument.
+std::string unexpected_arguments(const CLI::App& app, int argc, char** argv) {
+  const auto [name, command] = parsed_command(app);
+  const std::vector<std::string> extras = app.remaining(true);
+  const std::set<std::string> unexpected(extras.begin(), extras.end());
+  const std::string help = " (see multicpg " + (name.empty() ? "" : name + " ") + "--help)";
+  const std::string of = name.empty() ? "" : " of " + name;
+  std::optional<std::string> first;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (unexpected.count(arg) == 0) continue;
+    if (arg.size() > 1 && arg[0] == '-') {
+      const std::string flag = arg.substr(0, arg.find('='));
+      std::vector<std::string> flags;
+      add_flag_names(*command, flags);
+      const std::string meant = did_you_mean(flag, flags);
+      return "unknown flag '" + flag + "'" + of + (meant.empty() ? help : meant);
+    }
+    if (!first) first = arg;
+  }
+  return "unexpected argument '" + first.value_or(extras.empty() ? "" : extras.front()) + "'" +
+         (name.empty() ? "" : " to " + name) + help;
+}
+
 // Runs the command; a failure comes back as its exit code and error line (printed by
 // ProcessGroup::finish, once for the whole job).
 experiments::Ending run(int argc, char** argv) {
@@ -75,27 +164,26 @@ experiments::Ending run(int argc, char** argv) {
   apps::register_emulate(app);
   apps::register_replay(app);
   apps::refuse_empty_values(app);
+  app.set_version_flag(
+      "--version", [] { return build_info_text(mj_versionString()); },
+      "print the version, git commit, MuJoCo version and compiler, and exit");
   app.parse_complete_callback([&app] { check_processes(app); });  // before the command runs
-  const auto failed = [](int code, const char* what) {
-    return experiments::Ending{code, std::string("multicpg: ") + what};
+  const auto failed = [](int code, const std::string& what) {
+    return experiments::Ending{code, "multicpg: " + printable(what)};
   };
   const auto stopped = [&failed](const Interrupted& e) { return failed(e.exit_code(), e.what()); };
   try {
-    if (argc > 1 && argv[1][0] != '-') {
-      try {
-        app.get_subcommand(argv[1]);
-      } catch (const CLI::OptionNotFound&) {
-        throw BadInput(std::string("unknown command '") + argv[1] + "' (see multicpg --help)");
-      }
-    }
+    check_command_words(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     if (!experiments::is_primary_process()) return {};
-    return {app.exit(e), ""};  // --help
+    return {app.exit(e), ""};  // --help, --version
+  } catch (const CLI::ExtrasError&) {
+    return failed(2, unexpected_arguments(app, argc, argv));
   } catch (const CLI::ParseError& e) {
     return failed(2, e.what());
   } catch (const OptionError& e) {
-    return failed(2, (e.key() + " " + e.what()).c_str());
+    return failed(2, e.key() + " " + e.what());
   } catch (const BadInput& e) {
     return failed(2, e.what());
   } catch (const experiments::FailedElsewhere& e) {

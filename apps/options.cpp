@@ -5,10 +5,7 @@
 
 namespace multicpg::apps {
 void require_gait_period(int period, const std::string& flag) {
-  if (!robot::is_gait_period(period)) {
-    throw BadInput(flag + ": period " + std::to_string(period) +
-                   " gives no gait (allowed: " + robot::gait_periods_text() + ")");
-  }
+  if (!robot::is_gait_period(period)) throw BadInput(flag + ": " + robot::no_gait_message(period));
 }
 
 std::vector<std::size_t> parse_leg_flag(const robot::Morphology& morph, const std::string& text,

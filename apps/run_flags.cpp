@@ -62,19 +62,24 @@ void add_start_flags(CLI::App& cmd, RunFlags& f) {
                  "CPG period of every leg (1, 4, 5, 6, 8, 9), or per leg: R1=5,R2=4,... "
                  "(unnamed legs 4)")
       ->capture_default_str();
-  cmd.add_option("--warmup", f.warmup,
-                 "controller steps run before the robot moves, so it starts walking with locked "
-                 "CPGs and full delay lines")
-      ->check(in(sim::kStepLimits))
-      ->capture_default_str();
-  cmd.add_flag("--cold", f.cold, "start from a cold controller (no warm-up, as --warmup 0)");
+  CLI::Option* warmup =
+      cmd.add_option("--warmup", f.warmup,
+                     "controller steps run before the robot moves, so it starts walking with "
+                     "locked CPGs and full delay lines")
+          ->check(in(sim::kStepLimits))
+          ->capture_default_str();
+  // Flags that contradict one another or do nothing alone are refused, never silently ignored.
+  cmd.add_flag("--cold", f.cold, "start from a cold controller (no warm-up, as --warmup 0)")
+      ->excludes(warmup);
 }
 
 void add_fault_flags(CLI::App& cmd, RunFlags& f) {
-  cmd.add_option("--disable", f.disable, "legs that fail, e.g. R1,R3");
-  cmd.add_option("--disable-at", f.disable_at, "controller step (from 0) at which they fail")
+  CLI::Option* disable = cmd.add_option("--disable", f.disable, "legs that fail, e.g. R1,R3");
+  cmd.add_option("--disable-at", f.disable_at,
+                 "controller step (from 0) at which the legs of --disable fail")
       ->check(in(sim::kStepLimits))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->needs(disable);
   cmd.add_option("--fault", f.faults,
                  "SPEC@STEP: a fault before that step (repeatable). SPEC: LEGS (the legs fail, "
                  "R1,R3), LEGS.JOINT:locked[=DEG], LEGS.JOINT:passive, LEGS[.JOINT]:weak=FACTOR, "

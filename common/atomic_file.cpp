@@ -9,6 +9,7 @@
 #include <cstring>
 #include <optional>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "common/errors.h"
@@ -19,9 +20,6 @@ namespace {
 
 // Linux's own limit on symlinks followed in one lookup (path_resolution(7)).
 constexpr int kMaxSymlinks = 40;
-constexpr std::string_view kTempMarker = ".tmp";
-// Digits of the largest pid (pid_max is at most 2^22 on Linux, proc(5)), with room to spare.
-constexpr std::size_t kMaxPidDigits = 9;
 
 bool written_in_place(const fs::file_status& s) {
   return fs::is_fifo(s) || fs::is_character_file(s);
@@ -59,7 +57,62 @@ bool process_running(pid_t pid) {
   return ::kill(pid, 0) == 0 || errno == EPERM;
 }
 
+// Mode of a new output file before the umask, as std::ofstream and shells create files.
+constexpr mode_t kNewFileMode = 0666;
+
 }  // namespace
+
+FdStreamBuf::FdStreamBuf() {
+  setp(buffer_.data(), buffer_.data() + buffer_.size());
+}
+
+FdStreamBuf::~FdStreamBuf() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void FdStreamBuf::attach(int fd) {
+  fd_ = fd;
+  error_ = 0;
+  setp(buffer_.data(), buffer_.data() + buffer_.size());
+}
+
+bool FdStreamBuf::write_buffer() {
+  const char* data = pbase();
+  std::size_t left = static_cast<std::size_t>(pptr() - pbase());
+  while (left > 0 && error_ == 0) {
+    const ssize_t n = ::write(fd_, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error_ = n < 0 ? errno : EIO;  // a write of 0 bytes cannot progress
+      break;
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+  setp(buffer_.data(), buffer_.data() + buffer_.size());
+  return error_ == 0;
+}
+
+FdStreamBuf::int_type FdStreamBuf::overflow(int_type c) {
+  if (fd_ < 0 || !write_buffer()) return traits_type::eof();
+  if (!traits_type::eq_int_type(c, traits_type::eof())) {
+    *pptr() = traits_type::to_char_type(c);
+    pbump(1);
+  }
+  return traits_type::not_eof(c);
+}
+
+int FdStreamBuf::sync() {
+  return fd_ >= 0 && write_buffer() ? 0 : -1;
+}
+
+bool FdStreamBuf::close() {
+  if (fd_ < 0) return error_ == 0;
+  write_buffer();
+  if (::close(fd_) != 0 && error_ == 0) error_ = errno;
+  fd_ = -1;
+  return error_ == 0;
+}
 
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
   if (path_.empty()) throw BadInput("empty output path");
@@ -75,51 +128,61 @@ AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
           path_, errno == ENXIO ? "FIFO has no reader" : std::string(std::strerror(errno))));
     }
     // It has a reader now, so this open does not wait; writes block like any other.
-    file_.open(target_, std::ios::out | std::ios::binary);
-    if (!file_) throw BadInput(cannot_write(path_, std::strerror(errno)));
-    out_ = &file_;
+    const int fd = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) throw BadInput(cannot_write(path_, std::strerror(errno)));
+    buf_.attach(fd);
     return;
   }
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     throw BadInput(cannot_write(path_, "not a regular file, FIFO or character device"));
   }
   tmp_ = temp_sibling(target_);
-  file_.open(tmp_, std::ios::out | std::ios::trunc | std::ios::binary);
-  if (!file_) throw BadInput(cannot_write(path_, std::strerror(errno)));
-  out_ = &file_;
+  const int fd = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, kNewFileMode);
+  if (fd < 0) throw BadInput(cannot_write(path_, std::strerror(errno)));
+  buf_.attach(fd);
 }
 
 AtomicFile::~AtomicFile() {
   if (special_fd_ >= 0) ::close(special_fd_);
   if (!committed_ && !tmp_.empty()) {
-    file_.close();
+    buf_.close();
     std::error_code ec;
     fs::remove(tmp_, ec);
   }
 }
 
+void AtomicFile::close_written() {
+  out_.flush();
+  if (!buf_.close() || !out_) {
+    // A stream error with no failed write (a formatting failure) has no errno to name.
+    const int error = buf_.error() != 0 ? buf_.error() : EIO;
+    throw RuntimeFailure("writing '" + path_.string() + "' failed: " + std::strerror(error));
+  }
+}
+
 void AtomicFile::commit(const Verify& verify) {
   if (special_fd_ >= 0) {
-    file_.flush();
-    const bool ok = static_cast<bool>(file_);
-    const int error = errno;
-    file_.close();
-    ::close(special_fd_);
-    special_fd_ = -1;
-    if (!ok || file_.fail()) {
-      throw RuntimeFailure("writing '" + path_.string() + "' failed: " + std::strerror(error));
+    const int fd = std::exchange(special_fd_, -1);
+    try {
+      close_written();
+    } catch (...) {
+      ::close(fd);
+      throw;
     }
+    ::close(fd);
     committed_ = true;
     return;
   }
-  file_.flush();
-  bool ok = static_cast<bool>(file_);
-  file_.close();
-  ok = ok && !file_.fail();
-  if (!ok) throw RuntimeFailure("writing '" + path_.string() + "' failed: " + std::strerror(errno));
+  close_written();
   if (verify) verify(tmp_);
   sync_and_rename(tmp_, target_);
   committed_ = true;
+}
+
+std::string write_failure(const std::ostream& out) {
+  const int error = errno;
+  const auto* buf = dynamic_cast<const FdStreamBuf*>(out.rdbuf());
+  return std::strerror(buf != nullptr && buf->error() != 0 ? buf->error() : error);
 }
 
 void write_file_atomic(const fs::path& path, const std::string& text) {

@@ -5,12 +5,45 @@
 // streamed record keeps no copy in memory), never replaced.
 #pragma once
 
+#include <array>
 #include <filesystem>
-#include <fstream>
 #include <functional>
+#include <ostream>
+#include <streambuf>
 #include <string>
+#include <string_view>
 
 namespace multicpg {
+
+// A stream buffer writing to a file descriptor that remembers why a write first failed (errno),
+// which std::filebuf does not: a failure found long after it happened (at commit) still names
+// its cause, e.g. "No space left on device".
+class FdStreamBuf : public std::streambuf {
+ public:
+  FdStreamBuf();
+  FdStreamBuf(const FdStreamBuf&) = delete;
+  FdStreamBuf& operator=(const FdStreamBuf&) = delete;
+  ~FdStreamBuf() override;
+
+  // Takes ownership of `fd`.
+  void attach(int fd);
+  // Writes what is buffered and closes the descriptor; false when any write or the close failed.
+  bool close();
+  // errno of the first failed write or close; 0 while none failed.
+  int error() const { return error_; }
+
+ protected:
+  int_type overflow(int_type c) override;
+  int sync() override;
+
+ private:
+  bool write_buffer();
+
+  static constexpr std::size_t kBufferBytes = 64 * 1024;
+  int fd_ = -1;
+  int error_ = 0;
+  std::array<char, kBufferBytes> buffer_{};
+};
 
 class AtomicFile {
  public:
@@ -21,22 +54,30 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
   ~AtomicFile();
 
-  std::ostream& stream() { return *out_; }
+  std::ostream& stream() { return out_; }
   // Checks the finished temporary file before it takes the place of the target (e.g. that a PNG
   // decodes); throws to refuse it. Not called for a FIFO or device.
   using Verify = std::function<void(const std::filesystem::path& tmp)>;
-  // Flushes, syncs and renames into place; throws RuntimeFailure if writing failed.
+  // Flushes, syncs and renames into place; throws RuntimeFailure naming the path and the cause
+  // (strerror) if writing failed.
   void commit(const Verify& verify = {});
 
  private:
   std::filesystem::path path_;    // as given, for messages
   std::filesystem::path target_;  // path_ with symlinks followed: the file replaced
   std::filesystem::path tmp_;
-  int special_fd_ = -1;  // a FIFO or character device, held open while file_ writes it in place
-  std::ofstream file_;   // the temporary file, or the FIFO or device
-  std::ostream* out_ = nullptr;
+  int special_fd_ = -1;  // a FIFO or character device, held open while buf_ writes it in place
+  FdStreamBuf buf_;      // the temporary file, or the FIFO or device
+  std::ostream out_{&buf_};
   bool committed_ = false;
+
+  // Closes buf_; throws RuntimeFailure naming the cause when a write failed.
+  void close_written();
 };
+
+// Why writing `out` failed, as strerror says it: the first failed write's when `out` writes
+// through an FdStreamBuf (an AtomicFile's stream), else errno's.
+std::string write_failure(const std::ostream& out);
 
 // Writes `text` to `path` atomically.
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
@@ -46,6 +87,9 @@ void write_file_atomic(const std::filesystem::path& path, const std::string& tex
 std::filesystem::path follow_symlinks(const std::filesystem::path& path);
 
 // The temporary sibling this process writes before renaming: "<path>.tmp<pid>".
+inline constexpr std::string_view kTempMarker = ".tmp";
+// Digits of the largest pid (pid_max is at most 2^22 on Linux, proc(5)), with room to spare.
+inline constexpr std::size_t kMaxPidDigits = 9;
 std::filesystem::path temp_sibling(const std::filesystem::path& path);
 
 // fsync(2)s the finished `tmp`, renames it to `path` and syncs the folder, so after a crash

@@ -1,22 +1,27 @@
 // Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1, Interrupted ->
-// 128 + the signal (130 for SIGINT, 143 for SIGTERM; README "Exit codes").
+// 128 + the signal (130 for SIGINT, 143 for SIGTERM; README "Exit codes"). Every message is
+// made printable (common/user_text.h): text the user typed that holds a NUL, newline or escape
+// sequence is shown escaped, on one line, whole.
 #pragma once
 
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "common/user_text.h"
+
 namespace multicpg {
 
 // The user gave something the program cannot accept (flag, file, leg name, period, path).
 class BadInput : public std::runtime_error {
  public:
-  explicit BadInput(const std::string& what) : std::runtime_error(what) {}
+  explicit BadInput(const std::string& what) : std::runtime_error(printable(what)) {}
 };
 
 // A bad value of one option, named by its key: the dotted path of the option in its JSON record
 // ("annealing.beta"). The CLI names the flag bound to the key, an experiment file the file, line
-// and key; what() is the message without either ("must be at least 0, got -1").
+// and key; what() is the message without either ("must be at least 0, got -1"). key() is as
+// given (it finds the key's line in a file): print it through printable().
 class OptionError : public BadInput {
  public:
   OptionError(std::string key, const std::string& what) : BadInput(what), key_(std::move(key)) {}
@@ -29,7 +34,7 @@ class OptionError : public BadInput {
 // Valid input, but the run itself failed (physics blow-up, I/O failure mid-run, ...).
 class RuntimeFailure : public std::runtime_error {
  public:
-  explicit RuntimeFailure(const std::string& what) : std::runtime_error(what) {}
+  explicit RuntimeFailure(const std::string& what) : std::runtime_error(printable(what)) {}
 };
 
 // The user stopped the run (SIGINT or SIGTERM, common/interrupt.h). Thrown where the work checks

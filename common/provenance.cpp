@@ -51,4 +51,19 @@ nlohmann::json provenance(const std::string& mujoco_version) {
           {"cpu", cpu_model()}};
 }
 
+nlohmann::json build_info(const std::string& mujoco_version) {
+  return {{"version", MULTICPG_VERSION},
+          {"git_commit", MULTICPG_GIT_COMMIT},
+          {"mujoco_version", mujoco_version},
+          {"compiler", __VERSION__}};
+}
+
+std::string build_info_text(const std::string& mujoco_version) {
+  const nlohmann::json info = build_info(mujoco_version);
+  return "multicpg " + info.at("version").get<std::string>() + " (git " +
+         info.at("git_commit").get<std::string>() + ", MuJoCo " +
+         info.at("mujoco_version").get<std::string>() + ", compiler " +
+         info.at("compiler").get<std::string>() + ")";
+}
+
 }  // namespace multicpg

@@ -106,6 +106,12 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
   }
   ScenarioSpec out;
   out.name = s.at("name").get<std::string>();
+  if (out.name.size() > max_key_length()) {
+    throw OptionError(child(path, "name"), "names run files, but its " +
+                                               std::to_string(out.name.size()) +
+                                               " characters are more than a file name holds (" +
+                                               std::to_string(max_key_length()) + ")");
+  }
   if (!key_names_a_file(out.name)) {
     throw OptionError(child(path, "name"),
                       "must be letters, digits and + - _ . =, got \"" + out.name + "\"");

@@ -12,7 +12,6 @@
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "learning/compensation.h"
-#include "neural/postprocessing.h"
 #include "robot/leg_sets.h"
 #include "sim/json.h"
 #include "sim/robot_file.h"
@@ -89,8 +88,7 @@ void validate(const LandscapeSpec& spec) {
   learning::AnnealingParams params;
   params.period_set = spec.period_set;
   params.threshold_deg = spec.threshold_deg;
-  learning::validate(params);
-  for (int p : spec.period_set) neural::lock_steps(p);  // BadInput for periods that never lock
+  learning::validate(params);  // also refuses periods that give no gait
   if (spec.windows < 1) {
     throw BadInput("windows must be at least 1, got " + std::to_string(spec.windows));
   }
@@ -251,7 +249,8 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
   return landscape;
 }
 
-std::filesystem::path landscape_set_dir(const std::filesystem::path& out, const LandscapeSpec& spec) {
+std::filesystem::path landscape_set_dir(const std::filesystem::path& out,
+                                        const LandscapeSpec& spec) {
   return out / robot::leg_set_name(robot::morphology(spec.kind), spec.disabled);
 }
 

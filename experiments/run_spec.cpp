@@ -62,11 +62,7 @@ void validate(const RunSpec& spec) {
                                            std::to_string(periods.size()));
   }
   for (int p : periods) {
-    if (!robot::is_gait_period(p)) {
-      throw OptionError("start.periods",
-                        "period " + std::to_string(p) +
-                            " gives no gait (allowed: " + robot::gait_periods_text() + ")");
-    }
+    if (!robot::is_gait_period(p)) throw OptionError("start.periods", robot::no_gait_message(p));
   }
   require_in("start.warmup", spec.start.warmup, sim::kStepLimits);
   try {

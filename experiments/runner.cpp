@@ -1,5 +1,6 @@
 #include "experiments/runner.h"
 
+#include <limits.h>
 #include <sched.h>
 #include <unistd.h>
 
@@ -56,7 +57,9 @@ void check_keys(const std::vector<Task>& tasks) {
   std::set<std::string> seen;
   for (const Task& t : tasks) {
     if (!key_names_a_file(t.key)) {
-      throw BadInput("run key '" + t.key + "' cannot name a file (letters, digits, + - _ . =)");
+      throw BadInput("run key '" + t.key +
+                     "' cannot name a file (letters, digits, + - _ . =, at most " +
+                     std::to_string(max_key_length()) + " characters)");
     }
     if (!seen.insert(t.key).second) throw BadInput("run key '" + t.key + "' is repeated");
   }
@@ -509,8 +512,13 @@ std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key) {
   return splitmix64(splitmix64(base_seed) ^ fnv1a64(key));
 }
 
+std::size_t max_key_length() {
+  constexpr std::string_view kRunFileExtension = ".json";
+  return NAME_MAX - kRunFileExtension.size() - kTempMarker.size() - kMaxPidDigits;
+}
+
 bool key_names_a_file(std::string_view key) {
-  if (key.empty() || key.front() == '.') return false;
+  if (key.empty() || key.front() == '.' || key.size() > max_key_length()) return false;
   return std::all_of(key.begin(), key.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '+' ||
            c == '-' || c == '_' || c == '.' || c == '=';

@@ -35,7 +35,11 @@ using TaskFunction = std::function<nlohmann::json(const Task&)>;
 // the base by SplitMix64, so it is the same on every machine and for every thread count.
 std::uint64_t derive_seed(std::uint64_t base_seed, std::string_view key);
 
-// Whether `key` can name a run file: letters, digits, + - _ . =, not starting with a dot.
+// The longest run key: its run file "<key>.json" and that file's temporary sibling
+// ("<key>.json.tmp<pid>", common/atomic_file.h) must fit in a file name (NAME_MAX bytes).
+std::size_t max_key_length();
+// Whether `key` can name a run file: letters, digits, + - _ . =, not starting with a dot, at most
+// max_key_length() characters.
 bool key_names_a_file(std::string_view key);
 
 // "<group>_run<NNN>": the key of run `run` of `group`.

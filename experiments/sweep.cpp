@@ -510,6 +510,14 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
         PlannedRun planned{Task{}, spec, RunLabel{s.name, grid_values}};
         Task& task = planned.task;
         task.key = run_key(group_key, run);
+        if (task.key.size() > max_key_length()) {
+          throw OptionError(name_scenario ? child(s.path, "name") : "grid",
+                            "makes run files named '" + task.key + ".json', " +
+                                std::to_string(task.key.size()) +
+                                " characters before '.json' where a file name holds at most " +
+                                std::to_string(max_key_length()) +
+                                ": shorten the scenario name or the grid values");
+        }
         task.group = join(gp, " ");
         task.run = run;
         task.seed = derive_seed(seed, task.key);

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <map>
@@ -161,7 +162,10 @@ class Emulator::Impl {
     posture_ = safe_posture_counts(file);
     if (!spec_.log.empty()) {
       log_.open(spec_.log, std::ios::trunc);
-      if (!log_) throw BadInput("cannot write the log '" + spec_.log.string() + "'");
+      if (!log_) {
+        throw BadInput("cannot write the log '" + spec_.log.string() +
+                       "': " + std::strerror(errno));
+      }
     }
     log({{"event", "start"},
          {"bus", bus_.path},

@@ -9,7 +9,7 @@
 #include "common/errors.h"
 #include "learning/learner.h"
 #include "learning/learners.h"
-#include "neural/cpg.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::learning {
 namespace {
@@ -58,8 +58,10 @@ void validate(const AnnealingParams& params) {
   if (params.period_set.empty()) throw OptionError("period_set", "is empty");
   std::set<int> seen;
   for (int p : params.period_set) {
-    if (p < neural::kMinPeriod || p > neural::kMaxPeriod) {
-      throw OptionError("period_set", "holds period " + std::to_string(p) + ", outside 1-9");
+    if (!robot::is_gait_period(p)) {
+      throw OptionError("period_set",
+                        "holds period " + std::to_string(p) +
+                            ", which gives no gait (allowed: " + robot::gait_periods_text() + ")");
     }
     if (!seen.insert(p).second) {
       throw OptionError("period_set", "holds period " + std::to_string(p) + " twice");
@@ -171,7 +173,7 @@ Decision decide_with_draw(const AnnealingParams& params, AnnealingState& state,
     state.e_ref = deviation_deg;
   }
   state.trace.push_back(AnnealingTrial{state.trials, candidate.periods, deviation_deg, d.accepted,
-                                    d.probability, candidate.legs_changed, candidate.redraws});
+                                       d.probability, candidate.legs_changed, candidate.redraws});
   if (deviation_deg < params.threshold_deg) {
     state.stop = StopReason::below_threshold;
   } else if (state.trials >= params.max_trials) {

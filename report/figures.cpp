@@ -112,8 +112,9 @@ void run_gnuplot(const fs::path& script, const std::string& terminal, const Para
   std::error_code ec;
   if (result.exit_code != 0 || !fs::exists(tmp) || fs::file_size(tmp, ec) == 0) {
     fs::remove(tmp, ec);
-    throw RuntimeFailure("gnuplot " + script.filename().string() +
-                         " failed: " + tool_error(result));
+    throw RuntimeFailure("gnuplot " + script.filename().string() + " failed: " +
+                         (result.exit_code == 0 ? "wrote no picture (" + tool_error(result) + ")"
+                                                : tool_error(result)));
   }
   fs::rename(tmp, out, ec);
   if (ec) {

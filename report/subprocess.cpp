@@ -72,8 +72,10 @@ pid_t spawn(const std::vector<std::string>& argv, int stdin_fd, int out_fd) {
   return pid;
 }
 
-int exit_code(int status) {
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+// Fills in how the child ended from its wait status.
+void set_ending(ProcessResult& result, int status) {
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
 }
 
 // Kills the child and reaps it: a tool whose work is abandoned must not outlive us.
@@ -88,14 +90,16 @@ void kill_and_reap(pid_t pid) {
 // within which SIGINT and SIGTERM must end a command (README "Exit codes").
 constexpr auto kWaitPoll = std::chrono::milliseconds(10);
 
-// The child's exit code; when SIGINT or SIGTERM asks this process to stop while it waits, the
+// The child's wait status; when SIGINT or SIGTERM asks this process to stop while it waits, the
 // child is killed and reaped and Interrupted thrown (common/interrupt.h).
-int wait_exit_code(pid_t pid) {
+int wait_status(pid_t pid) {
   for (;;) {
     int status = 0;
     const pid_t done = ::waitpid(pid, &status, WNOHANG);
-    if (done == pid) return exit_code(status);
-    if (done < 0 && errno != EINTR) return -1;
+    if (done == pid) return status;
+    if (done < 0 && errno != EINTR) {
+      throw RuntimeFailure("cannot wait for a child process: " + std::string(std::strerror(errno)));
+    }
     if (const int signal = interrupt_signal(); signal != 0) {
       kill_and_reap(pid);
       throw Interrupted(signal);
@@ -110,7 +114,7 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
   const int output_fd = make_output_file();
   ProcessResult result;
   try {
-    result.exit_code = wait_exit_code(spawn(argv, -1, output_fd));
+    set_ending(result, wait_status(spawn(argv, -1, output_fd)));
   } catch (...) {
     ::close(output_fd);
     throw;
@@ -167,7 +171,7 @@ ProcessResult ChildWithInput::finish() {
   const pid_t pid = std::exchange(pid_, -1);
   const int output_fd = std::exchange(output_fd_, -1);
   try {
-    result.exit_code = wait_exit_code(pid);
+    set_ending(result, wait_status(pid));
   } catch (...) {
     ::close(output_fd);
     throw;
@@ -178,15 +182,16 @@ ProcessResult ChildWithInput::finish() {
 }
 
 std::string tool_error(const ProcessResult& result) {
+  const std::string ending = result.signal != 0
+                                 ? "killed by signal " + std::to_string(result.signal) + " (" +
+                                       ::strsignal(result.signal) + ")"
+                                 : "exit status " + std::to_string(result.exit_code);
   const std::string& text = result.output;
   const auto end = text.find_last_not_of(" \t\r\n");
-  if (end == std::string::npos) {
-    return result.exit_code < 0 ? "killed by a signal"
-                                : "exit code " + std::to_string(result.exit_code);
-  }
+  if (end == std::string::npos) return ending + ", printed nothing";
   const auto newline = text.find_last_of("\r\n", end);
   const auto start = newline == std::string::npos ? 0 : newline + 1;
-  return text.substr(start, end + 1 - start);
+  return ending + ": " + text.substr(start, end + 1 - start);
 }
 
 }  // namespace multicpg::report

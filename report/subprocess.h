@@ -12,6 +12,7 @@ namespace multicpg::report {
 
 struct ProcessResult {
   int exit_code = -1;  // -1 when the process did not exit normally (signal)
+  int signal = 0;      // the signal that ended it, 0 when it exited
   std::string output;  // everything it wrote to standard output and standard error
 };
 
@@ -42,8 +43,9 @@ class ChildWithInput {
   int output_fd_ = -1;
 };
 
-// The last line a tool printed (gnuplot and ffmpeg end with the error that stopped them), or
-// its exit code when it printed nothing: for one-line error messages.
+// How a tool ended and the last line it printed (gnuplot and ffmpeg end with the error that
+// stopped them), for one-line error messages: "exit status 1: line 3: undefined variable: x",
+// "killed by signal 9 (Killed)", "exit status 0, printed nothing".
 std::string tool_error(const ProcessResult& result);
 
 }  // namespace multicpg::report

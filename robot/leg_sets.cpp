@@ -21,17 +21,16 @@ std::vector<std::string_view> split(std::string_view text, std::string_view sepa
   }
 }
 
-int parse_gait_period(std::string_view text, std::string_view what) {
+// The period `text` of `leg` (every leg when empty).
+int parse_gait_period(std::string_view text, std::string_view leg) {
   int value = 0;
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (text.empty() || ec != std::errc() || ptr != end) {
-    throw BadInput(std::string(what) + ": '" + std::string(text) + "' is not a whole number");
+    throw BadInput("period '" + std::string(text) + "'" +
+                   (leg.empty() ? "" : " of " + std::string(leg)) + " is not a whole number");
   }
-  if (!is_gait_period(value)) {
-    throw BadInput(std::string(what) + ": period " + std::to_string(value) +
-                   " gives no gait (allowed: " + gait_periods_text() + ")");
-  }
+  require_gait_period(value, leg);
   return value;
 }
 
@@ -45,6 +44,15 @@ std::string gait_periods_text() {
 
 bool is_gait_period(int period) {
   return std::find(kGaitPeriods.begin(), kGaitPeriods.end(), period) != kGaitPeriods.end();
+}
+
+std::string no_gait_message(int period, std::string_view leg) {
+  return "period " + std::to_string(period) + (leg.empty() ? "" : " of " + std::string(leg)) +
+         " gives no gait (allowed: " + gait_periods_text() + ")";
+}
+
+void require_gait_period(int period, std::string_view leg) {
+  if (!is_gait_period(period)) throw BadInput(no_gait_message(period, leg));
 }
 
 LegSet parse_leg_set(const Morphology& morph, std::string_view text) {
@@ -70,7 +78,7 @@ std::string leg_set_name(const Morphology& morph, const LegSet& legs) {
 
 std::vector<int> parse_period_map(const Morphology& morph, std::string_view text, int fallback) {
   if (text.find('=') == std::string_view::npos) {
-    return std::vector<int>(morph.size(), parse_gait_period(text, "period"));
+    return std::vector<int>(morph.size(), parse_gait_period(text, {}));
   }
   std::vector<int> periods(morph.size(), fallback);
   std::vector<bool> named(morph.size(), false);

@@ -16,6 +16,11 @@ namespace multicpg::robot {
 // Periods that give a gait (paper §2.1: 1 = stop, 4 tripod, 5 tetrapod, 6 transition, 8, 9 waves).
 inline constexpr std::array<int, 6> kGaitPeriods{1, 4, 5, 6, 8, 9};
 bool is_gait_period(int period);
+// "period 7 gives no gait (allowed: 1, 4, 5, 6, 8, 9)", or "period 7 of R1 ..." with a leg: the
+// one message for a period outside kGaitPeriods, wherever a period is given.
+std::string no_gait_message(int period, std::string_view leg = {});
+// Throws BadInput(no_gait_message(period, leg)) unless `period` gives a gait.
+void require_gait_period(int period, std::string_view leg = {});
 // The tripod (period 4): every leg's period unless told otherwise (paper Table 2 C0).
 inline constexpr int kDefaultPeriod = 4;
 std::string gait_periods_text();  // "1, 4, 5, 6, 8, 9"

@@ -30,11 +30,10 @@ double number(std::string_view text, std::string_view what, const Limits<double>
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, v);
   if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v)) {
-    throw BadInput(fmt::format("terrain: {} '{}' is not a number", what, text));
+    throw BadInput(fmt::format("{} '{}' is not a number", what, text));
   }
   if (!limits.contains(v)) {
-    throw BadInput(
-        fmt::format("terrain: {} must be in {} {}, got {}", what, limits.text(), unit, text));
+    throw BadInput(fmt::format("{} must be in {} {}, got {}", what, limits.text(), unit, text));
   }
   return v;
 }
@@ -85,8 +84,7 @@ void read_value(std::string_view text, const TerrainParam& p, double& value) {
 void read_value(std::string_view text, const TerrainParam& p, std::uint64_t& value) {
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || ec != std::errc() || ptr != text.data() + text.size()) {
-    throw BadInput("terrain: " + std::string(p.what) + " '" + std::string(text) +
-                   "' is not a whole number");
+    throw BadInput(std::string(p.what) + " '" + std::string(text) + "' is not a whole number");
   }
 }
 std::string value_text(double v) {

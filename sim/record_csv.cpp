@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "common/atomic_file.h"
 #include "common/errors.h"
 
 namespace multicpg::sim {
@@ -64,7 +65,7 @@ void RecordCsvWriter::write(const SimModel& model, const SimState& state) {
   row_.contact.clear();
   append_record(model, state, /*joints=*/true, row_);
   write_row(out_, morph_.size(), row_, 0, step_++);
-  if (!out_) throw RuntimeFailure("writing '" + name_ + "' failed");
+  if (!out_) throw RuntimeFailure("writing '" + name_ + "' failed: " + write_failure(out_));
 }
 
 }  // namespace multicpg::sim

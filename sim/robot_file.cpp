@@ -20,7 +20,7 @@ class Reader {
   explicit Reader(std::filesystem::path path) : path_(std::move(path)) {}
 
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    std::string line = path_.string() + ": " + key + ": " + what;
+    std::string line = path_.string() + ": " + (key.empty() ? "" : key + ": ") + what;
     std::replace(line.begin(), line.end(), '\n', ' ');
     line.erase(line.find_last_not_of(' ') + 1);
     throw BadInput(line);
@@ -76,20 +76,22 @@ class Reader {
   std::filesystem::path path_;
 };
 
-// A whole file, at most `limit` bytes.
+// A whole file, at most `limit` bytes: the robot file itself (`key` empty: the message names it
+// already) or the file its `key` names.
 std::string read_text(const std::filesystem::path& path, std::uintmax_t limit, const Reader& r,
                       const std::string& key) {
+  const std::string file = key.empty() ? "" : " '" + path.string() + "'";
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) r.fail(key, "cannot read '" + path.string() + "': " + ec.message());
+  if (ec) r.fail(key, "cannot read" + file + ": " + ec.message());
   if (size > limit) {
-    r.fail(key, "'" + path.string() + "' has " + std::to_string(size) + " bytes, at most " +
-                    std::to_string(limit));
+    r.fail(key, (key.empty() ? "it" : file.substr(1)) + " has " + std::to_string(size) +
+                    " bytes, at most " + std::to_string(limit));
   }
   std::ifstream in(path, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
-  if (!in) r.fail(key, "cannot read '" + path.string() + "'");
+  if (!in) r.fail(key, "cannot read" + file);
   return bytes.str();
 }
 
@@ -215,7 +217,7 @@ bool is_robot_file(const std::string& robot) {
 
 robot::RobotFile load_robot_file(const std::filesystem::path& path) {
   const Reader r(path);
-  const std::string source = read_text(path, kMaxRobotFileBytes, r, "file");
+  const std::string source = read_text(path, kMaxRobotFileBytes, r, "");
   toml::table doc;
   try {
     doc = toml::parse(source, path.string());

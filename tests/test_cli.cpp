@@ -1,10 +1,12 @@
-// The real multicpg binary: gait and cpg commands, their files and their bad-input handling.
+// The real multicpg binary: gait and cpg commands, their files and their bad-input handling;
+// the CLI's own manners (--help, --version, suggestions, messages, failed writes and tools).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "common/user_text.h"
 #include "tests/cli_runner.h"
 
 namespace {
@@ -92,6 +94,142 @@ TEST(Cli, HelpExitsZero) {
   const auto r = run_cli("--help");
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("gait"), std::string::npos);
+}
+
+TEST(Cli, VersionSaysWhatTheProgramIs) {
+  const auto r = run_cli("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count_lines(r.out), 1) << r.out;
+  EXPECT_EQ(r.out.rfind("multicpg 0.", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("(git "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", MuJoCo 2.2.2, compiler "), std::string::npos) << r.out;
+}
+
+TEST(Cli, HelpShowsNoValidatorNoise) {
+  for (const std::string command : {"", "walk", "learn", "run", "experiment table", "tunnel"}) {
+    const auto r = run_cli(command + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command << ": " << r.err;
+    EXPECT_EQ(r.out.find(":not empty"), std::string::npos) << command << ":\n" << r.out;
+  }
+  EXPECT_NE(run_cli("walk --help").out.find("--periods TEXT=4"), std::string::npos);
+}
+
+TEST(Cli, MistypedNamesGetASuggestion) {
+  expect_bad_input("walk --period 5", "unknown flag '--period' of walk (did you mean --periods?)");
+  expect_bad_input("walk --period=5", "unknown flag '--period' of walk (did you mean --periods?)");
+  expect_bad_input("learn --disable R1 --betta 3",
+                   "unknown flag '--betta' of learn (did you "
+                   "mean --beta?)");
+  expect_bad_input("walk --total-mas 9",
+                   "unknown flag '--total-mas' of walk (did you mean "
+                   "--total-mass?)");
+  expect_bad_input("walk --zzzzzzzz 3",
+                   "unknown flag '--zzzzzzzz' of walk (see multicpg walk --help)");
+  expect_bad_input("walk 5", "unexpected argument '5' to walk (see multicpg walk --help)");
+  expect_bad_input("wlak", "unknown command 'wlak' (did you mean walk?)");
+  expect_bad_input("tunel --disable R1", "unknown command 'tunel' (did you mean tunnel?)");
+  expect_bad_input("experiment tabel",
+                   "unknown command 'experiment tabel' (did you mean experiment table?)");
+  expect_bad_input("fly", "unknown command 'fly' (see multicpg --help)");
+}
+
+TEST(Cli, OnePrefixPerMessage) {
+  const std::string allowed = " gives no gait (allowed: 1, 4, 5, 6, 8, 9)\n";
+  EXPECT_EQ(run_cli("walk --periods 7").err, "multicpg: --periods: period 7" + allowed);
+  EXPECT_EQ(run_cli("walk --periods R1=7").err, "multicpg: --periods: period 7 of R1" + allowed);
+  EXPECT_EQ(run_cli("walk --periods R1=x").err,
+            "multicpg: --periods: period 'x' of R1 is not a whole number\n");
+  EXPECT_EQ(run_cli("gait --period 7").err, "multicpg: --period: period 7" + allowed);
+  EXPECT_EQ(run_cli("walk --terrain slope:31").err,
+            "multicpg: --terrain: the slope must be in 0..30 deg, got 31\n");
+  EXPECT_EQ(run_cli("walk --robot /nonexistent/robot.toml").err,
+            "multicpg: /nonexistent/robot.toml: cannot read: No such file or directory\n");
+}
+
+// A flag that does nothing without another, or contradicts it, is refused (exit 2), never
+// silently ignored.
+TEST(Cli, FlagsThatNeedAnotherAreRefused) {
+  expect_bad_input("walk --disable-at 600", "--disable-at requires --disable");
+  expect_bad_input("learn --fault R1@0 --disable-at 600", "--disable-at requires --disable");
+  expect_bad_input("walk --cold --warmup 5", "--warmup excludes --cold");
+  expect_bad_input("tunnel --disable R1 --beta 3", "--beta requires --learn");
+  expect_bad_input("tunnel --disable R1 --mode paper", "--mode requires --learn");
+  expect_bad_input("render --out /tmp/multicpg-needs.png --seed 3", "--seed requires --learn");
+  expect_bad_input("render --out /tmp/multicpg-needs.png --disable R1 --learn --steps 5",
+                   "--steps excludes --learn");
+}
+
+TEST(Cli, ControlCharactersAreEscapedInMessages) {
+  for (const auto& [typed, shown] : std::vector<std::pair<std::string, std::string>>{
+           {"spi\\033[31mder", "spi\\x1b[31mder"},
+           {"spi\\nder", "spi\\nder"},
+           {"spi\\tder\\a", "spi\\tder\\x07"},
+       }) {
+    const auto r = run_cli("walk --robot \"$(printf '" + typed + "')\"");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(shown), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find_first_of(std::string("\x1b\t\a", 3)), std::string::npos) << r.err;
+  }
+}
+
+TEST(Cli, FullDiskWritesNameTheCause) {
+  for (const std::string command :
+       {"gait --steps 10 --csv /dev/full", "gait --steps 20000 --csv /dev/full",
+        "walk --steps 20 --csv /dev/full"}) {
+    const auto r = run_cli(command);
+    EXPECT_EQ(r.exit_code, 1) << command << ": " << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("writing '/dev/full' failed: No space left on device"), std::string::npos)
+        << command << ": " << r.err;
+  }
+}
+
+// A helper program that fails is named with how it ended and the last line it printed.
+TEST(Cli, FailingHelperProgramIsNamedWithWhatItSaid) {
+  namespace fs = std::filesystem;
+  const std::string dir = make_temp_dir("helper-");
+  const auto fake_gnuplot = [&](const std::string& body) {
+    fs::create_directories(dir + "/bin");
+    std::ofstream(dir + "/bin/gnuplot") << "#!/bin/sh\n" << body << "\n";
+    fs::permissions(dir + "/bin/gnuplot", fs::perms::owner_all);
+    return run_shell("PATH=" + dir + "/bin:$PATH " + MULTICPG_EXE + " figure gait --out " + dir +
+                     "/out");
+  };
+  const auto said = fake_gnuplot("echo 'warming up'; echo 'no font here' >&2; exit 3");
+  EXPECT_EQ(said.exit_code, 1) << said.err;
+  // Progress lines come first; the error is the last line, whole.
+  EXPECT_NE(said.err.find("\nmulticpg: gnuplot gait.gp failed: exit status 3: no font here\n"),
+            std::string::npos)
+      << said.err;
+  const auto silent = fake_gnuplot("exit 0");
+  EXPECT_EQ(silent.exit_code, 1) << silent.err;
+  EXPECT_NE(silent.err.find("failed: wrote no picture (exit status 0, printed nothing)"),
+            std::string::npos)
+      << silent.err;
+  const auto killed = fake_gnuplot("kill -9 $$");
+  EXPECT_EQ(killed.exit_code, 1) << killed.err;
+  EXPECT_NE(killed.err.find("failed: killed by signal 9 (Killed), printed nothing"),
+            std::string::npos)
+      << killed.err;
+  fs::remove_all(dir);
+}
+
+TEST(UserText, PrintableEscapesControlCharactersOnce) {
+  EXPECT_EQ(multicpg::printable(std::string("a\0b\nc\x1b[0m\x7f", 10)), "a\\0b\\nc\\x1b[0m\\x7f");
+  EXPECT_EQ(multicpg::printable("R1=5, 'ok' \\ done"), "R1=5, 'ok' \\ done");
+  const std::string once = multicpg::printable("x\ty");
+  EXPECT_EQ(multicpg::printable(once), once);
+  EXPECT_EQ(multicpg::printable("\xc3\xa9"), "\xc3\xa9");  // UTF-8 passes
+}
+
+TEST(UserText, ClosestNameOnlyWhenNear) {
+  const std::vector<std::string> known{"walk", "learn", "tunnel", "experiment"};
+  EXPECT_EQ(multicpg::closest_name("wlak", known), "walk");
+  EXPECT_EQ(multicpg::closest_name("lern", known), "learn");
+  EXPECT_EQ(multicpg::closest_name("experimnet", known), "experiment");
+  EXPECT_EQ(multicpg::closest_name("fly", known), std::nullopt);
+  EXPECT_EQ(multicpg::closest_name("", known), std::nullopt);
 }
 
 }  // namespace

@@ -211,7 +211,7 @@ std::vector<Case> value_cases() {
       {"learning.annealing.beta", {"\"high\"", "-1", "100.5", "true", "{}", "[1, \"x\"]"}},
       {"learning.annealing.threshold_deg", {"0", "181", "\"x\""}},
       {"learning.annealing.max_trials", {"0", "100001", "2.5"}},
-      {"learning.annealing.period_set", {"[4, 10]", "4", "[\"4\"]"}},
+      {"learning.annealing.period_set", {"[4, 10]", "[4, 7]", "[1, 2]", "4", "[\"4\"]"}},
       {"learning.steering_params", {"3"}},
       {"learning.steering_params.max_effort", {"2", "0"}},
       {"learning.disabled", {"[0]"}},
@@ -244,7 +244,8 @@ std::vector<Case> value_cases() {
       {"[\"R7\"]", "scenarios[0]"},
       {"[\"R1+R1\"]", "scenarios[0] leg R1 is named twice"},
       {"[\"R1\", \"R1\"]", "scenarios[1] repeats"},
-      {"[\"R1+R2+R3+L1+L2+L3\"]", "scenarios[0] cannot happen: every leg of the hexapod has failed"},
+      {"[\"R1+R2+R3+L1+L2+L3\"]",
+       "scenarios[0] cannot happen: every leg of the hexapod has failed"},
       {"[{}]", "scenarios[0].name"},
       {"[{name = \"a b\", faults = [{legs = \"R1\"}]}]", "scenarios[0].name"},
       {"[{name = \"x\", faults = []}]", "scenarios[0].faults"},
@@ -257,10 +258,29 @@ std::vector<Case> value_cases() {
       {"[{name = \"x\", faults = [{legs = \"R1\", recover = true}]}]",
        "scenarios[0].faults leg R1 recovers at step 0 but has not failed before"},
       {"[{name = \"x\", when = 3, faults = [{legs = \"R1\"}]}]", "scenarios[0].when"},
+      // Names of run files: NAME_MAX bytes less ".json.tmp<pid>" (experiments/runner.h).
+      {"[{name = \"" + std::string(300, 'x') + "\", faults = [{legs = \"R1\"}]}]",
+       "scenarios[0].name names run files, but its 300 characters are more than a file name "
+       "holds (237)"},
+      {"[{name = \"" + std::string(235, 'x') + "\", faults = [{legs = \"R1\"}]}]",
+       "scenarios[0].name makes run files named '" + std::string(235, 'x') + "_run000.json'"},
   };
   for (const auto& [value, mention] : scenarios) {
     cases.push_back(
         {"scenarios = " + value, text("scenarios = " + value + "\n"), ":1: " + mention});
+  }
+  // A period that gives no gait, in a landscape's period set as in learning's.
+  cases.push_back({"landscape period 7",
+                   text("kind = \"landscape\"\nscenarios = [\"R1\"]\n[landscape]\n"
+                        "period_set = [4, 7]\n"),
+                   "period 7, which gives no gait (allowed: 1, 4, 5, 6, 8, 9)"});
+  // Control characters in keys, shown escaped on the one line (a NUL does not cut it short).
+  for (const auto& [key, shown] : std::vector<std::pair<std::string, std::string>>{
+           {"\"a\\u0000b\"", "a\\0b is not an option"},
+           {"\"a\\u001b[31mb\"", "a\\x1b[31mb is not an option"},
+           {"\"a\\nb\"", "a\\nb is not an option"},
+       }) {
+    cases.push_back({"key " + shown, text(kOk + "[sim]\n" + key + " = 1\n"), ":3: sim." + shown});
   }
   return cases;
 }

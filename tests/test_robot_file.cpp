@@ -242,7 +242,9 @@ TEST_F(RobotFile, BrokenFilesExit2WithOneLineNamingTheFileAndTheKey) {
   const CliResult missing = run_cli("model --check " + dir_ + "/nosuch.toml");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(count_lines(missing.err), 1) << missing.err;
-  EXPECT_NE(missing.err.find("nosuch.toml: file"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("nosuch.toml: cannot read: No such file or directory"),
+            std::string::npos)
+      << missing.err;
   // The built-in robots' contact pairs hold their feet to their own ground; a tunnel's model
   // makes no robot file.
   expect_bad_input("walk --terrain slope:5:0 --robot " + dir_ + "/hexapod.toml",

@@ -83,7 +83,8 @@ TEST_F(RobotFileRuns, AnExperimentFileNamesItRelativeToItselfAndRecordsIt) {
 TEST_F(RobotFileRuns, ABadRobotFileInAnExperimentNamesBothFilesAndTheKey) {
   write(dir_ + "/missing.toml", "robot = \"robots/nosuch.toml\"\n" + kExperiment);
   expect_bad_input("run --check " + dir_ + "/missing.toml", "missing.toml:1: robot");
-  expect_bad_input("run --check " + dir_ + "/missing.toml", "nosuch.toml: file");
+  expect_bad_input("run --check " + dir_ + "/missing.toml",
+                   "nosuch.toml: cannot read: No such file");
   std::string toml = read_file(robot_);
   toml.replace(toml.find("trunk = \"trunk\""), 15, "trunk = \"torso\"");
   write(dir_ + "/robots/torso.toml", toml);
