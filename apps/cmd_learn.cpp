@@ -9,6 +9,7 @@
 #include "apps/commands.h"
 #include "apps/hardware_flags.h"
 #include "apps/learning_options.h"
+#include "apps/learning_output.h"
 #include "apps/options.h"
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
@@ -34,63 +35,6 @@ struct LearnOptions {
   std::string replay;
 };
 
-std::string period_cells(const std::vector<int>& periods,
-                         const std::vector<std::size_t>& disabled) {
-  std::ostringstream row;
-  for (std::size_t i = 0; i < periods.size(); ++i) {
-    const bool off = std::find(disabled.begin(), disabled.end(), i) != disabled.end();
-    row << std::setw(4) << (std::to_string(periods[i]) + (off ? "x" : ""));
-  }
-  return row.str();
-}
-
-// The trace as the paper's Fig. 8: trial, periods (x = disabled), deviation, kept or rejected.
-void print_trace(std::ostream& out, const robot::Morphology& morph,
-                 const experiments::LearningRun& run, const std::vector<std::size_t>& disabled) {
-  const learning::LearningResult& r = run.result;
-  out << "trial";
-  for (const robot::Leg& leg : morph.legs) out << std::setw(4) << leg.name;
-  out << "  deviation  decision\n";
-  std::vector<int> start(morph.size(), learning::kStartPeriod);
-  out << std::setw(5) << 0 << period_cells(start, disabled) << std::fixed << std::setprecision(2)
-      << std::setw(10) << r.initial_deviation_deg << "°  ";
-  if (r.detection_step) {
-    out << "deviation detected at step " << *r.detection_step << ": CPGs desynchronised\n";
-  } else {
-    out << "no window deviated more than the threshold\n";
-  }
-  for (const learning::TrialRecord& t : r.trace) {
-    out << std::setw(5) << t.trial << period_cells(t.periods, disabled) << std::setw(10)
-        << t.deviation_deg << "°  " << (t.accepted ? "kept" : "rejected");
-    // The annealing's acceptance probability of a worse combination (paper §3).
-    const double p = t.details.value("acceptance_probability", 1.0);
-    if (p < 1.0) {
-      out << " (P = " << std::setprecision(3) << std::scientific << p << std::fixed
-          << std::setprecision(2) << ")";
-    }
-    out << "\n";
-  }
-}
-
-// Robust runs: one line per learning episode, then the windows walked after the last one.
-void print_episodes(std::ostream& out, const robot::Morphology& morph,
-                    const learning::LearningResult& r, const std::vector<std::size_t>& failing) {
-  if (r.mode != learning::Mode::robust) return;
-  out << std::fixed << std::setprecision(2);
-  for (std::size_t i = 0; i < r.episodes.size(); ++i) {
-    const learning::Episode& e = r.episodes[i];
-    out << "episode " << i + 1 << ": detected " << e.detection_deg << "° at step "
-        << e.detection_step << ", " << e.trials << " trials, "
-        << robot::period_map_text(morph, e.periods, failing) << ", "
-        << (e.held ? "held" : (e.interrupted ? "interrupted by a fault" : "not held")) << "\n";
-  }
-  out << "windows after the last fault or episode (yaw / path angle, deg):";
-  for (const sim::WindowMeasure& m : r.final_windows) {
-    out << "  " << m.yaw_deg << " / " << m.path_deg;
-  }
-  out << "\n";
-}
-
 // trace.csv: the neutral columns, then the learner's own details (learning/learner.h).
 std::string trace_csv(const robot::Morphology& morph, const learning::LearnerChoice& learner,
                       const learning::LearningResult& r) {
@@ -112,38 +56,12 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearnerCho
   return f.str();
 }
 
-// The header, Fig. 8's trace, the episodes and the outcome.
-void print_learning(const experiments::RunSpec& spec, const experiments::LearningRun& run) {
-  const robot::Morphology& morph = experiments::morphology(spec);
-  const learning::CompensationOptions& options = *spec.learning;
-  const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
-  const learning::LearningResult& r = run.result;
-  std::cout << morph.name << ", " << learning::to_string(options.mode) << " mode";
-  if (options.mode == learning::Mode::robust) {
-    std::cout << " (steering " << learning::to_string(options.steering) << ", "
-              << options.hold_windows << " windows to hold)";
-  }
-  std::cout << ", faults";
-  for (const sim::Fault& f : spec.faults) {
-    std::cout << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
-              << f.step;
-  }
-  if (options.learner.name != learning::kDefaultLearner) {
-    std::cout << ", learner " << options.learner.name;
-  }
-  std::cout << ", beta " << options.annealing.beta << ", threshold "
-            << options.annealing.threshold_deg << "°, window " << options.window_steps
-            << ", settle " << r.settle_steps << ", seed " << options.seed << "\n\n";
-  print_trace(std::cout, morph, run, failing);
-  print_episodes(std::cout, morph, r, failing);
-  std::cout << "\n" << learning::to_string(r.outcome);
-  if (r.detection_step) {
-    std::cout << " after " << r.trials
-              << " trials: " << robot::period_map_text(morph, r.periods, failing) << " (deviation "
-              << std::fixed << std::setprecision(2) << r.initial_deviation_deg << "° -> "
-              << r.final_deviation_deg << "°)";
-  }
-  std::cout << "\n";
+// A run whose events were not streamed (hardware): the whole table from its result.
+void print_learning(const experiments::RunSpec& spec, const learning::LearningResult& r) {
+  print_learning_header(std::cout, spec, r.settle_steps);
+  LearningTable table(std::cout, spec);
+  for (const sim::Event& e : result_events(r)) table.event(e);
+  print_learning_end(std::cout, spec, r);
 }
 
 // learn --hardware: the same learning on a real robot (docs/hardware.md). A run a fault or a
@@ -185,7 +103,7 @@ void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& sp
   }
   std::cout << "on " << setup.file.name << " (" << hw::to_string(setup.file.protocol) << ", "
             << setup.file.path.string() << ")\n";
-  print_learning(spec, run);
+  print_learning(spec, run.result);
   std::cout << hardware_summary(learned.hardware) << "\n";
   if (!o.out.empty()) {
     std::cout << "wrote " << o.out << "/{learning.json,trace.csv,hardware.csv}\n";
@@ -212,7 +130,16 @@ void run_learn(const LearnOptions& o) {
   }
   const sim::SimModel model = experiments::make_run_model(spec);
 
-  sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
+  // The table streams as the robot learns: the header now, each trial as it is decided
+  // (--json prints one object at the end instead).
+  std::optional<LearningStream> stream;
+  if (!o.json) {
+    print_learning_header(std::cout, spec,
+                          learning::start_settle_steps(*spec.learning, model.controller));
+    stream.emplace(std::cout, std::cerr, spec);
+  }
+  sim::Observers observers(
+      {rows ? &*rows : nullptr, replay.observer(), stream ? &*stream : nullptr});
   const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &observers);
   const learning::LearningResult& r = run.result;
   const nlohmann::json json = experiments::learn_json(spec, r);
@@ -227,7 +154,7 @@ void run_learn(const LearnOptions& o) {
     std::cout << json.dump(2) << "\n";
     return;
   }
-  print_learning(spec, run);
+  print_learning_end(std::cout, spec, r);
   if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
 }

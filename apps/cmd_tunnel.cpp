@@ -10,6 +10,7 @@
 #include "apps/flag_checks.h"
 #include "apps/hardware_flags.h"
 #include "apps/learning_options.h"
+#include "apps/learning_output.h"
 #include "apps/options.h"
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
@@ -73,7 +74,7 @@ void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& 
   if (t.learned) {
     std::cout << "learned (" << learning::to_string(spec.learning->mode)
               << " mode): " << learning::to_string(t.learned->outcome) << " after "
-              << t.learned->trials << " trials, "
+              << counted(t.learned->trials, "trial") << ", "
               << robot::period_map_text(morph, t.learned->periods, disabled)
               << (t.learned->steering ? ", steering reflex on" : "") << "\n";
   }
@@ -123,8 +124,17 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
     observer.emplace(*film, label.str());
   }
   sim::Observers observers({observer ? &*observer : nullptr, replay.observer()});
+  // Learning streams its table as it goes (learn's, apps/learning_output.h); --json prints one
+  // object at the end instead.
+  std::optional<LearningStream> stream;
+  if (o.learn && !o.json) {
+    std::cout << "learning in the open field first, then the tunnel\n";
+    print_learning_header(std::cout, spec,
+                          learning::start_settle_steps(*spec.learning, corridor.controller));
+    stream.emplace(std::cout, std::cerr, spec);
+  }
   const experiments::TunnelOutcome out =
-      experiments::run_tunnel(spec, corridor, o.max_steps, &observers);
+      experiments::run_tunnel(spec, corridor, o.max_steps, &observers, stream ? &*stream : nullptr);
   if (film) film->finish();
   replay.write();
   const experiments::TunnelRun& run = out.run;
@@ -134,22 +144,24 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   }
   const std::string result =
       run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
-  std::cout << std::fixed << std::setprecision(2) << "tunnel " << corridor.scene.tunnel_length
-            << " m x " << corridor.scene.tunnel_width << " m, disabled "
+  if (stream) std::cout << "\n";
+  std::cout << std::fixed << std::setprecision(2) << robot_text(spec) << ", tunnel "
+            << corridor.scene.tunnel_length << " m x " << corridor.scene.tunnel_width
+            << " m, disabled "
             << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled));
   if (scale) {
     std::cout << " (scaled " << std::setprecision(3) << scale->factor << ": robot "
               << scale->robot_width_m << " m wide, the " << morph.name << " "
               << scale->layout_width_m << " m)" << std::setprecision(2);
   }
-  std::cout << "\n";
+  std::cout << "\n" << world_text(spec) << "\n";
   if (const std::string other = experiments::other_faults_text(spec); !other.empty()) {
     std::cout << "faults " << other << "\n";
   }
   if (out.learned) {
     std::cout << "learned in the open field (" << learning::to_string(spec.learning->mode)
               << " mode): " << learning::to_string(out.learned->outcome) << " after "
-              << out.learned->trials << " trials, "
+              << counted(out.learned->trials, "trial") << ", "
               << robot::period_map_text(morph, out.learned->periods, out.disabled)
               << (out.learned->steering ? ", steering reflex on" : "") << "\n";
   }

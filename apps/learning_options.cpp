@@ -68,6 +68,11 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
   cmd.add_option("--max-trials", o.annealing.max_trials, "trials before a run ends 'not converged'")
       ->check(in(learning::kMaxTrialsLimits))
       ->capture_default_str();
+  cmd.add_option("--step-budget", o.step_budget,
+                 "controller steps the run may spend in trials, over all its episodes, before it "
+                 "ends 'budget reached' (docs/learning.md \"Step budget\")")
+      ->check(in(learning::kStepBudgetLimits))
+      ->capture_default_str();
   cmd.add_option("--seed", o.seed, "seed of the run's random generator")
       ->check(seed_value())
       ->capture_default_str();

@@ -20,9 +20,9 @@ struct LearningFlags {
 };
 
 // Adds --mode --learner --learner-option --steering --hold-windows --monitor-windows
-// --no-period-learning --beta --threshold --window --settle --max-trials --seed, each range shown
-// in --help and checked at parse time (without --beta when `with_beta` is false: the beta study
-// sets it per run).
+// --no-period-learning --beta --threshold --window --settle --max-trials --step-budget --seed, each
+// range shown in --help and checked at parse time (without --beta when `with_beta` is false: the
+// beta study sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);
 
 // One "KEY=VALUE" of `flag` (--learner-option): the key and the value, read as JSON when it is

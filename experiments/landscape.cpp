@@ -205,7 +205,8 @@ std::optional<std::size_t> best_combination(const Landscape& landscape) {
 }
 
 Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
-                        bool progress, const std::vector<learning::Periods>& learned) {
+                        bool progress, const std::vector<learning::Periods>& learned,
+                        const std::string& progress_label) {
   validate(spec);
   const robot::Morphology& morph = robot::morphology(spec.kind);
   RunnerOptions runner;
@@ -213,6 +214,7 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
   runner.jobs = jobs;
   runner.arguments = arguments(spec);
   runner.progress = progress;
+  runner.progress_label = progress_label;
   validate(runner);
 
   const std::vector<learning::Periods> combinations = landscape_combinations(spec);

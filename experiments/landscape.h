@@ -90,8 +90,10 @@ std::vector<std::size_t> ranked_combinations(const Landscape& landscape);
 // Runs every combination not yet saved in out/runs on `jobs` threads (experiments/runner.h;
 // resumable, refused for another spec), then writes out/landscape.csv and out/summary.json.
 // `learned`: combinations a learner found (every leg's period), placed in the summary.
+// `progress_label` as RunnerOptions::progress_label.
 Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
-                        bool progress, const std::vector<learning::Periods>& learned = {});
+                        bool progress, const std::vector<learning::Periods>& learned = {},
+                        const std::string& progress_label = "");
 
 // Every scenario of `specs` (one landscape each, the same settings; experiments/sweep.h "every"),
 // each in OUT/<scenario> as run_landscape does (resumable), then the dataset of them all in

@@ -32,6 +32,7 @@ ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& doc
   options.out = spec.out;
   if (spec.jobs > 0) options.jobs = spec.jobs;
   options.progress = spec.progress;
+  options.progress_label = spec.progress_label;
   return *run_sweep(resolve_sweep(document, spec.limits), options).table;
 }
 

@@ -30,6 +30,7 @@ struct ExperimentSpec {
   long check_windows = 0;
   sim::SimOptions sim;
   bool progress = true;
+  std::string progress_label;                         // RunnerOptions::progress_label
   SweepLimits limits{kDefaultMaxRuns, "--max-runs"};  // more runs are refused (sweep.h)
 };
 

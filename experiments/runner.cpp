@@ -169,14 +169,16 @@ std::string duration(double seconds) {
 // terminal, plain lines otherwise (logs).
 class Progress {
  public:
-  Progress(bool enabled, std::size_t total, std::size_t loaded)
+  Progress(bool enabled, const std::string& label, std::size_t total, std::size_t loaded)
       : enabled_(enabled),
-        in_place_(enabled && ::isatty(STDERR_FILENO) != 0),
+        // Lines of several experiments at once cannot share one line in place.
+        in_place_(enabled && label.empty() && ::isatty(STDERR_FILENO) != 0),
+        prefix_(label.empty() ? "" : label + ": "),
         total_(total),
         done_(loaded),
         start_(Clock::now()) {
     if (enabled_ && loaded > 0) {
-      std::cerr << "resuming: " << loaded << " of " << total << " runs already done\n";
+      std::cerr << prefix_ << "resuming: " << loaded << " of " << total << " runs already done\n";
     }
   }
 
@@ -187,8 +189,8 @@ class Progress {
     const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
     const double left = elapsed / static_cast<double>(ran_) * static_cast<double>(total_ - done_);
     std::ostringstream line;
-    line << "runs " << done_ << "/" << total_ << ", " << duration(elapsed) << " elapsed, about "
-         << duration(left) << " left";
+    line << prefix_ << "runs " << done_ << "/" << total_ << ", " << duration(elapsed)
+         << " elapsed, about " << duration(left) << " left";
     if (in_place_) {
       std::cerr << "\r" << line.str() << "\033[K" << (done_ == total_ ? "\n" : "") << std::flush;
     } else {
@@ -204,6 +206,7 @@ class Progress {
  private:
   bool enabled_;
   bool in_place_;
+  std::string prefix_;
   std::size_t total_;
   std::size_t done_;
   std::size_t ran_ = 0;
@@ -234,7 +237,8 @@ class Session {
         todo_.push_back(i);
       }
     }
-    progress_.emplace(options.progress, tasks.size(), static_cast<std::size_t>(outcome_.loaded));
+    progress_.emplace(options.progress, options.progress_label, tasks.size(),
+                      static_cast<std::size_t>(outcome_.loaded));
   }
 
   // The index of the next task to compute; none once every task is handed out, one failed or

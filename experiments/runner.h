@@ -60,6 +60,9 @@ struct RunnerOptions {
   // start and resume, never compared (a resume may come from another shell or machine).
   nlohmann::json provenance = nlohmann::json::object();
   bool progress = true;  // runs done, elapsed and time left on stderr
+  // Names whose runs the progress lines count when several experiments run at once
+  // ("experiment hexapod: runs 3/24, ..."); empty = no name.
+  std::string progress_label;
 };
 
 // Throws BadInput (one line) for jobs < 1 or an empty output directory.

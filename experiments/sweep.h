@@ -116,6 +116,7 @@ struct SweepRunOptions {
   int jobs = default_jobs();
   Shard shard;
   bool progress = true;
+  std::string progress_label;  // RunnerOptions::progress_label
 };
 
 struct SweepOutcome {

@@ -108,6 +108,7 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   runner.jobs = options.jobs;
   runner.arguments = arguments;
   runner.progress = options.progress;
+  runner.progress_label = options.progress_label;
   runner.provenance = provenance(mj_versionString());
   validate(runner);
   const Models models(shard_specs);

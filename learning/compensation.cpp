@@ -118,6 +118,22 @@ long locked_settle_steps(const neural::ControllerModel& model, const Periods& pe
   return slowest + longest_delay(model);
 }
 
+double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window) {
+  double e = window.worst_deg();
+  if (options.steering == Steering::reflex) {
+    e = std::max(e, options.annealing.threshold_deg * window.steering_effort /
+                        options.steering_params.max_effort);
+  }
+  return e;
+}
+
+long start_settle_steps(const CompensationOptions& options, const neural::ControllerModel& model) {
+  if (options.settle_steps) return *options.settle_steps;
+  return options.mode == Mode::paper
+             ? default_settle_steps(model)
+             : locked_settle_steps(model, Periods(model.size(), kStartPeriod));
+}
+
 std::string_view to_string(Mode mode) {
   return mode == Mode::paper ? "paper" : "robust";
 }
@@ -130,16 +146,19 @@ std::string_view to_string(Outcome outcome) {
       return "not converged";
     case Outcome::no_deviation:
       return "no deviation";
+    case Outcome::budget_reached:
+      return "budget reached";
   }
   return "?";
 }
 
 Outcome parse_outcome(std::string_view text) {
-  for (Outcome o : {Outcome::converged, Outcome::not_converged, Outcome::no_deviation}) {
+  for (Outcome o : {Outcome::converged, Outcome::not_converged, Outcome::no_deviation,
+                    Outcome::budget_reached}) {
     if (text == to_string(o)) return o;
   }
   throw BadInput("unknown outcome '" + std::string(text) +
-                 "' (converged, not converged or no deviation)");
+                 "' (converged, not converged, no deviation or budget reached)");
 }
 
 StopReason parse_stop_reason(std::string_view text) {
@@ -174,6 +193,7 @@ void validate(const CompensationOptions& options) {
   require_in("hold_windows", options.hold_windows, kHoldWindowsLimits);
   require_in("monitor_windows", options.monitor_windows, kMonitorWindowsLimits);
   require_in("max_episodes", options.max_episodes, kMaxEpisodesLimits);
+  require_in("step_budget", options.step_budget, kStepBudgetLimits);
   within("steering_params", [&] { validate(options.steering_params); });
   within("learner", [&] { resolve_learner(options.learner); });
 }
@@ -190,17 +210,45 @@ void validate_faults(const CompensationOptions& options, const sim::FaultTimelin
 namespace {
 
 // Tells the walker's observer that a trial starts (kind trial_start) or was decided (trial_end).
-void emit_trial(Walker& walker, sim::EventKind kind, int episode, int trial, const Periods& periods,
-                double deviation_deg = 0.0, bool accepted = false) {
+void emit_trial_start(Walker& walker, int episode, int trial, const Periods& periods) {
   sim::Event e;
-  e.kind = kind;
+  e.kind = sim::EventKind::trial_start;
   e.episode = episode;
   e.trial = trial;
   e.periods = periods;
-  e.deviation_deg = deviation_deg;
-  e.accepted = accepted;
   walker.emit(e);
 }
+
+void emit_trial_end(Walker& walker, int episode, const TrialRecord& t) {
+  sim::Event e;
+  e.kind = sim::EventKind::trial_end;
+  e.episode = episode;
+  e.trial = t.trial;
+  e.periods = t.periods;
+  e.deviation_deg = t.deviation_deg;
+  e.accepted = t.accepted;
+  e.details = t.details;
+  walker.emit(e);
+}
+
+// The steps a run spends in trials, against its budget (CompensationOptions::step_budget).
+class Budget {
+ public:
+  explicit Budget(long steps) : steps_(steps) {}
+  // Walks one trial's steps through `walk` and counts them.
+  template <typename Walk>
+  auto count(Walker& walker, Walk&& walk) {
+    const long before = walker.step_count();
+    auto measured = walk();
+    spent_ += walker.step_count() - before;
+    return measured;
+  }
+  bool used_up() const { return spent_ >= steps_; }
+
+ private:
+  long steps_;
+  long spent_ = 0;
+};
 
 // What the episode's learner is told: the robot, C0 and its E, the failed legs, the bounds.
 LearnerSetup learner_setup(const Walker& walker, const CompensationOptions& options,
@@ -235,7 +283,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   const neural::ControllerModel& model = walker.controller_model();
   LearningResult result;
   result.mode = Mode::paper;
-  result.settle_steps = options.settle_steps.value_or(default_settle_steps(model));
+  result.settle_steps = start_settle_steps(options, model);
   const AnnealingParams& params = options.annealing;
   Walk walk(walker, options);
 
@@ -272,18 +320,20 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
       options.learner,
       learner_setup(walker, options, result.periods,
                     sim::failing_legs(walker.faults().timeline()), {detecting}, e, options.seed));
+  Budget budget(options.step_budget);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {
-    emit_trial(walker, sim::EventKind::trial_start, 1, trial, periods);
-    neural::set_periods(model, walker.controller(), periods);
-    walk.steps(result.settle_steps);
-    const sim::WindowMeasure window = walk.measured_window();
-    return Measurement{std::abs(window.yaw_deg), {window}};  // paper §3: E = |yaw change|
+    emit_trial_start(walker, 1, trial, periods);
+    return budget.count(walker, [&] {
+      neural::set_periods(model, walker.controller(), periods);
+      walk.steps(result.settle_steps);
+      const sim::WindowMeasure window = walk.measured_window();
+      return Measurement{std::abs(window.yaw_deg), {window}};  // paper §3: E = |yaw change|
+    });
   };
   hooks.decided = [&](const TrialRecord& t) {
-    emit_trial(walker, sim::EventKind::trial_end, 1, t.trial, t.periods, t.deviation_deg,
-               t.accepted);
-    return false;
+    emit_trial_end(walker, 1, t);
+    return budget.used_up();
   };
   EpisodeEnd end = run_episode(*learner, hooks);
   // A run that did not converge keeps walking with the accepted combination, the one reported.
@@ -291,9 +341,10 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
     neural::set_periods(model, walker.controller(), end.answer.periods);
   }
 
-  result.outcome =
-      end.reason == StopReason::below_threshold ? Outcome::converged : Outcome::not_converged;
-  result.reason = end.reason;
+  result.outcome = end.reason == StopReason::below_threshold ? Outcome::converged
+                   : end.reason == StopReason::running       ? Outcome::budget_reached
+                                                             : Outcome::not_converged;
+  if (end.reason != StopReason::running) result.reason = end.reason;
   result.trials = end.trials;
   result.final_deviation_deg = end.answer.deviation_deg;
   result.periods = end.answer.periods;
@@ -320,11 +371,12 @@ class RobustRun {
         options_(options),
         model_(walker.controller_model()),
         params_(options.annealing),
-        walk_(walker, options) {}
+        walk_(walker, options),
+        budget_(options.step_budget) {}
 
   LearningResult run() {
     result_.mode = Mode::robust;
-    result_.settle_steps = settle_for(std::vector<int>(model_.size(), kStartPeriod));
+    result_.settle_steps = start_settle_steps(options_, model_);
     long monitored = 0;  // windows walked since the last fault or episode
     while (monitored < options_.monitor_windows || walk_.faults_pending()) {
       const sim::WindowMeasure m = walk_.measured_window();
@@ -343,7 +395,7 @@ class RobustRun {
         continue;
       }
       if (!sim::holds(error(m), params_.threshold_deg) && options_.learn_periods &&
-          static_cast<int>(result_.episodes.size()) < options_.max_episodes) {
+          static_cast<int>(result_.episodes.size()) < options_.max_episodes && !budget_.used_up()) {
         episode(m);
         monitored = 0;
         result_.final_windows.clear();
@@ -359,16 +411,7 @@ class RobustRun {
   }
 
  private:
-  // What robust mode compares with the threshold: the worse of yaw and path angle, and, with
-  // the reflex, its effort scaled so that max_effort reads as the threshold.
-  double error(const sim::WindowMeasure& m) const {
-    double e = m.worst_deg();
-    if (options_.steering == Steering::reflex) {
-      e = std::max(e,
-                   params_.threshold_deg * m.steering_effort / options_.steering_params.max_effort);
-    }
-    return e;
-  }
+  double error(const sim::WindowMeasure& m) const { return robust_deviation(options_, m); }
 
   long settle_for(const Periods& periods) const {
     return options_.settle_steps.value_or(locked_settle_steps(model_, periods));
@@ -433,16 +476,16 @@ class RobustRun {
     walk_.take_fault_count();
     EpisodeHooks hooks;
     hooks.measure = [&](int trial, const Periods& candidate) {
-      emit_trial(walker_, sim::EventKind::trial_start, number, trial, candidate);
-      set(candidate);
-      return judge();
+      emit_trial_start(walker_, number, trial, candidate);
+      return budget_.count(walker_, [&] {
+        set(candidate);
+        return judge();
+      });
     };
     hooks.decided = [&](const TrialRecord& t) {
-      emit_trial(walker_, sim::EventKind::trial_end, number, t.trial, t.periods, t.deviation_deg,
-                 t.accepted);
-      if (walk_.take_fault_count() == 0) return false;
-      ep.interrupted = true;
-      return true;
+      emit_trial_end(walker_, number, t);
+      if (walk_.take_fault_count() > 0) ep.interrupted = true;
+      return ep.interrupted || budget_.used_up();
     };
     EpisodeEnd end = run_episode(*learner, hooks);
     if (periods() != end.answer.periods) set(end.answer.periods);
@@ -472,7 +515,10 @@ class RobustRun {
       }
     } else {
       const Episode& last = result_.episodes.back();
-      result_.outcome = last.held && held ? Outcome::converged : Outcome::not_converged;
+      // A budget used up ended the last episode or kept the next one from starting.
+      result_.outcome = last.held && held   ? Outcome::converged
+                        : budget_.used_up() ? Outcome::budget_reached
+                                            : Outcome::not_converged;
       result_.reason = last.reason;
     }
     double worst = 0.0;
@@ -485,6 +531,7 @@ class RobustRun {
   const neural::ControllerModel& model_;
   const AnnealingParams& params_;
   Walk walk_;
+  Budget budget_;
   LearningResult result_;
 };
 

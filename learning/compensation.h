@@ -82,6 +82,11 @@ inline constexpr int kDefaultHoldWindows = 3;
 inline constexpr long kDefaultMonitorWindows = 6;
 // Robust mode: learning episodes at most in one run (each restarts learning after a deviation).
 inline constexpr int kDefaultMaxEpisodes = 10;
+// Controller steps a run may spend in trials (their settling and measured windows), over all its
+// episodes, before it ends "budget reached" (docs/learning.md "Step budget"): 10^6 steps, 10.3 h
+// of walking at 27 Hz. The paper's runs never reach it (at most 200 trials of 337 + 400 steps,
+// 147,400 steps); a robust run of 10 episodes of 200 trials could (up to 4 million).
+inline constexpr long kDefaultStepBudget = 1'000'000;
 
 // Documented ranges. A window or settle of up to 10^5 steps (an hour at 27 Hz);
 // counts of windows and episodes far past the defaults above.
@@ -91,6 +96,7 @@ inline constexpr Limits<long> kDetectionWindowsLimits{1, 1000};
 inline constexpr Limits<int> kHoldWindowsLimits{1, 100};
 inline constexpr Limits<long> kMonitorWindowsLimits{1, 1000};
 inline constexpr Limits<int> kMaxEpisodesLimits{1, 1000};
+inline constexpr Limits<long> kStepBudgetLimits{1, sim::kMaxSteps};
 
 // How a compensation run learns. What fails and when is the run's, not the learner's: the
 // walker's fault schedule (sim::FaultSchedule) says what came.
@@ -108,11 +114,21 @@ struct CompensationOptions {
   int hold_windows = kDefaultHoldWindows;             // robust mode
   long monitor_windows = kDefaultMonitorWindows;      // robust mode
   int max_episodes = kDefaultMaxEpisodes;             // robust mode
+  long step_budget = kDefaultStepBudget;              // both modes (see above)
   bool learn_periods = true;                          // robust mode; false = steering alone
   Steering steering = Steering::reflex;               // robust mode
   SteeringParams steering_params;
   std::uint64_t seed = 0;
 };
+
+// The settle a run of `options` starts with (LearningResult::settle_steps): the given one, else
+// paper mode's default_settle_steps, robust mode's locked_settle_steps for all periods at 4.
+long start_settle_steps(const CompensationOptions& options, const neural::ControllerModel& model);
+
+// A robust-mode window's E, what it compares with the threshold (docs/learning.md "Deviation"):
+// the worse of |yaw change| and |path angle|, and with the reflex its effort scaled so that
+// max_effort reads as the threshold.
+double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window);
 
 // Throws OptionError (key "annealing.beta", "window_steps", "learner.name", ...; one line) for a
 // value outside its limits or an unknown learner or learner option. Paper mode ignores the robust-mode options (hold, monitor and max episodes,
@@ -136,11 +152,13 @@ struct Episode {
 };
 
 // How a run ended: converged (a combination held under the threshold), not converged (the trial
-// cap, the search space or the episodes ran out) or no deviation (no window ever exceeded the
-// threshold, so learning never started).
-enum class Outcome { converged, not_converged, no_deviation };
-std::string_view to_string(Outcome outcome);   // "converged", "not converged", "no deviation"
-Outcome parse_outcome(std::string_view text);  // throws BadInput naming the choices
+// cap, the search space or the episodes ran out), no deviation (no window ever exceeded the
+// threshold, so learning never started) or budget reached (its trials used up the step budget;
+// the robot walks on with the learner's answer so far).
+enum class Outcome { converged, not_converged, no_deviation, budget_reached };
+// "converged", "not converged", "no deviation", "budget reached"
+std::string_view to_string(Outcome outcome);
+Outcome parse_outcome(std::string_view text);         // throws BadInput naming the choices
 StopReason parse_stop_reason(std::string_view text);  // to_string(StopReason)'s names
 
 struct LearningResult {
@@ -149,8 +167,10 @@ struct LearningResult {
   std::optional<StopReason> reason;  // why annealing stopped; empty when it never started
   int trials = 0;
   double initial_deviation_deg = 0.0;  // E of C0: the detecting window (or the last window)
-  double final_deviation_deg = 0.0;    // E of the accepted combination when the run ended
-  Periods periods;                     // the accepted combination, left on the controller
+  // Paper mode: E of the accepted combination when the run ended. Robust mode: the largest E of
+  // the windows walked after the last fault or episode (docs/learning.md "What learn prints").
+  double final_deviation_deg = 0.0;
+  Periods periods;  // the accepted combination, left on the controller
   std::vector<TrialRecord> trace;
   long steps_walked = 0;
   std::optional<long> detection_step;  // steps after the start when the deviation was seen

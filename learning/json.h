@@ -39,7 +39,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SteeringState, course, offset_integral_m_step
 // it) for every other field, then the learner.
 #define MULTICPG_COMPENSATION_FIELDS                                                         \
   mode, annealing, window_steps, settle_steps, detection_windows, hold_windows, monitor_windows, \
-      max_episodes, learn_periods, steering, steering_params, seed
+      max_episodes, step_budget, learn_periods, steering, steering_params, seed
 inline void to_json(nlohmann::json& nlohmann_json_j, const CompensationOptions& nlohmann_json_t) {
   NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, MULTICPG_COMPENSATION_FIELDS))
   if (nlohmann_json_t.learner != LearnerChoice{}) nlohmann_json_j["learner"] = nlohmann_json_t.learner;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -51,6 +52,8 @@ struct Event {
   std::vector<int> periods;       // trial_start/end, episode_end: the combination
   double deviation_deg = 0.0;     // detection, trial_end, episode_end
   bool accepted = false;          // trial_end: kept; episode_end: held under the threshold
+  // trial_end: the learner's own details of the trial (learning::TrialRecord::details)
+  nlohmann::json details = nlohmann::json::object();
 };
 
 // Throws BadInput (one line, leg and joint names) for a timeline that is not sorted, has a step

@@ -3,13 +3,18 @@
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <thread>
 
+#include "apps/learning_output.h"
+#include "learning/compensation.h"
 #include "tests/cli_runner.h"
 
 namespace {
@@ -76,6 +81,121 @@ TEST(CliLearn, RobustModeNoticesALateJointFaultAndLearnsWithItsLeg) {
   EXPECT_EQ(faults[0].at("kind"), "passive");
   EXPECT_EQ(faults[0].at("step"), 1200);
   EXPECT_TRUE(j.at("options").at("disabled").empty());
+}
+
+// A run's table streams: the header at once and each trial's row as it is decided, read from a
+// pipe while the process still runs (the dog that cannot compensate R1 walks for minutes).
+TEST(CliLearn, StreamsEachTrialBeforeTheRunEnds) {
+  const std::string cmd = "sh -c 'echo $$; exec " + std::string(MULTICPG_EXE) + " learn --robot " +
+                          MULTICPG_SOURCE_DIR +
+                          "/examples/robots/dog12.toml --disable R1' 2>/dev/null";
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[4096];
+  ASSERT_NE(std::fgets(buffer, sizeof buffer, pipe), nullptr);
+  const long pid = std::stol(buffer);
+  std::vector<std::string> lines;
+  bool trial = false;
+  while (!trial && std::fgets(buffer, sizeof buffer, pipe) != nullptr) {
+    lines.emplace_back(buffer);
+    trial = lines.back().rfind("    1 ", 0) == 0;  // the first trial's row
+  }
+  // Still running (not a zombie): the row came before the end.
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string pid_text, name, state;
+  stat >> pid_text >> name >> state;
+  ::kill(static_cast<pid_t>(pid), SIGKILL);
+  ::pclose(pipe);
+  ASSERT_TRUE(trial) << "no trial row before the output ended";
+  ASSERT_GE(lines.size(), 2u);
+  EXPECT_EQ(lines.front().rfind("quadruped from ", 0), 0u) << lines.front();
+  EXPECT_NE(lines[1].find("terrain flat"), std::string::npos) << lines[1];
+  EXPECT_NE(state, "Z") << "the process had ended";
+  EXPECT_FALSE(state.empty()) << "the process had ended";
+}
+
+// The step budget ends the dog's R1 run, which never converges, with a clear result, recorded
+// with the result; its trials are numbered across the table.
+TEST(CliLearn, StepBudgetEndsARunThatCannotConverge) {
+  const std::string dir = make_temp_dir("learn-budget-");
+  const auto r =
+      run_cli("learn --robot " + std::string(MULTICPG_SOURCE_DIR) +
+              "/examples/robots/dog12.toml --disable R1 --step-budget 12000 --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(read_file(dir + "/learning.json"));
+  EXPECT_EQ(j.at("status"), "budget reached");
+  EXPECT_FALSE(j.at("converged").get<bool>());
+  EXPECT_EQ(j.at("options").at("step_budget"), 12000);
+  const int trials = j.at("trials").get<int>();
+  EXPECT_GE(trials, 1);
+  // The budget is checked after each trial: one trial at most past it (settle and 3 windows),
+  // then the monitored windows.
+  EXPECT_LT(j.at("steps_walked").get<long>(), 12000 + 2045 + 10 * 400 + 4000);
+  EXPECT_NE(r.out.find("budget reached after " + std::to_string(trials) + " trial"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("--step-budget"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("best trial measured: "), std::string::npos) << r.out;
+  std::ostringstream last_row;
+  last_row << "\n" << std::setw(5) << trials << "  4x";
+  EXPECT_NE(r.out.find(last_row.str()), std::string::npos)
+      << "the last trial's row carries the run's trial count\n"
+      << r.out;
+  fs::remove_all(dir);
+}
+
+// The default budget is the documented one, recorded with every result and shown in --help.
+TEST(CliLearn, DefaultStepBudgetIsTheDocumentedOne) {
+  EXPECT_EQ(multicpg::learning::kDefaultStepBudget, 1'000'000);
+  const auto golden = nlohmann::json::parse(
+      read_file(std::string(MULTICPG_SOURCE_DIR) + "/tests/data/golden/learn-paper-R1.json"));
+  EXPECT_EQ(golden.at("options").at("step_budget"), multicpg::learning::kDefaultStepBudget);
+  const std::string docs = read_file(std::string(MULTICPG_SOURCE_DIR) + "/docs/learning.md");
+  EXPECT_NE(docs.find("`--step-budget` (default 1,000,000"), std::string::npos);
+  const auto help = run_cli("learn --help");
+  EXPECT_NE(help.out.find("--step-budget"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("1000000"), std::string::npos) << help.out;
+}
+
+// Trials are numbered across episodes; "1 trial", not "1 trials".
+TEST(CliLearn, TableNumbersTrialsAcrossEpisodes) {
+  multicpg::experiments::RunSpec spec;
+  spec.learning = multicpg::learning::CompensationOptions{};
+  spec.faults = multicpg::sim::fail_at({0}, 0);
+  std::ostringstream out;
+  multicpg::apps::LearningTable table(out, spec);
+  const auto event = [](multicpg::sim::EventKind kind, int episode, int trial) {
+    multicpg::sim::Event e;
+    e.kind = kind;
+    e.episode = episode;
+    e.trial = trial;
+    e.periods = {4, 5, 4, 4, 4, 4};
+    e.deviation_deg = 10.0;
+    return e;
+  };
+  using multicpg::sim::EventKind;
+  for (const auto& e : {event(EventKind::detection, 1, 0), event(EventKind::trial_end, 1, 1),
+                        event(EventKind::trial_end, 1, 2), event(EventKind::episode_end, 1, 2),
+                        event(EventKind::detection, 2, 0), event(EventKind::trial_end, 2, 1),
+                        event(EventKind::episode_end, 2, 1)}) {
+    table.event(e);
+  }
+  const std::string text = out.str();
+  EXPECT_NE(text.find("\n    3  4x   5"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\n    1  4x   5", text.find("episode 2:")), std::string::npos) << text;
+  EXPECT_NE(text.find("episode 2 ended after 1 trial: "), std::string::npos) << text;
+  EXPECT_NE(text.find("episode 1 ended after 2 trials: "), std::string::npos) << text;
+  EXPECT_EQ(multicpg::apps::counted(1, "trial"), "1 trial");
+}
+
+// When the reflex alone holds the course the output says so, and how to see period learning.
+TEST(CliLearn, SaysWhenTheReflexHeldTheCourse) {
+  const auto r = run_cli("learn --disable R1 --seed 1");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("The steering reflex held the course"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--steering off"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--mode paper"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("body model paper-sim"), std::string::npos) << r.out;
 }
 
 TEST(CliLearn, BadInput) {

@@ -60,6 +60,21 @@ TEST(CliTunnel, AllFourHitsTheWallAndThePapersR1CombinationPasses) {
   expect_bad_input("tunnel --video /tmp/x.avi", ".mp4");
 }
 
+// tunnel --learn prints learn's table (streamed, apps/learning_output.h) before the tunnel walk.
+TEST(CliTunnel, LearnPrintsTheLearningTableFirst) {
+  const auto r = run_cli("tunnel --disable R1 --learn --mode paper --max-trials 2 --max-steps 400");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::size_t header = r.out.find("trial  R1  R2  R3  L1  L2  L3");
+  const std::size_t trial = r.out.find("\n    1  4x");
+  const std::size_t learned = r.out.find("learned in the open field");
+  ASSERT_NE(header, std::string::npos) << r.out;
+  ASSERT_NE(trial, std::string::npos) << r.out;
+  ASSERT_NE(learned, std::string::npos) << r.out;
+  EXPECT_LT(header, trial);
+  EXPECT_LT(trial, learned);
+  EXPECT_NE(r.out.find("terrain flat, body model paper-sim"), std::string::npos) << r.out;
+}
+
 TEST(CliFigure, DrawsNamedFiguresAndRejectsUnknownNames) {
   const std::string dir = make_temp_dir("figure-");
   ASSERT_EQ(run_cli("figure gait cpg-sync --out " + dir).exit_code, 0);

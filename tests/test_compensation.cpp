@@ -120,6 +120,29 @@ TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   EXPECT_EQ(periods_of(walker), r.periods);
 }
 
+// The step budget counts the trials' steps over every episode: past it, no trial and no episode
+// starts, and the run ends "budget reached" with the accepted periods (docs/learning.md "Step
+// budget").
+TEST(Compensation, StepBudgetEndsBudgetReachedInBothModes) {
+  for (const Mode mode : {Mode::paper, Mode::robust}) {
+    CompensationOptions o = options_for(3);
+    o.mode = mode;
+    o.settle_steps = 0;
+    o.steering = Steering::off;
+    // 5 trials of one window (paper) or of the first window over the threshold (robust).
+    o.step_budget = 5 * kDefaultWindowSteps;
+    FakeWalker walker(RobotKind::hexapod, failing({0}), 0.2);
+    const LearningResult r = compensate(walker, o);
+    EXPECT_EQ(r.outcome, Outcome::budget_reached) << to_string(mode);
+    EXPECT_FALSE(r.converged());
+    EXPECT_FALSE(r.reason.has_value());
+    EXPECT_EQ(r.trials, 5) << to_string(mode);
+    ASSERT_EQ(r.episodes.size(), 1u) << to_string(mode);
+    EXPECT_EQ(periods_of(walker), r.periods);
+    EXPECT_EQ(parse_outcome("budget reached"), Outcome::budget_reached);
+  }
+}
+
 TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
   CompensationOptions o = options_for(4);
   o.settle_steps = 0;

@@ -60,7 +60,7 @@ Section landscape_stage(const StageContext& ctx) {
   const std::string folder = "experiments/landscape-quadruped-" + std::string(kScenario);
   const experiments::Landscape landscape = experiments::run_landscape(
       spec, ctx.dir(folder), ctx.options.jobs > 0 ? ctx.options.jobs : experiments::default_jobs(),
-      ctx.options.progress, learned);
+      ctx.options.progress, learned, "landscape");
   const FigureFiles figure = draw_landscape(landscape, learned, ctx.dir("figures"));
 
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);

@@ -52,6 +52,7 @@ experiments::ExperimentSpec StageContext::experiment(robot::RobotKind kind, cons
   spec.jobs = options.jobs;
   spec.out = dir("experiments/" + name);
   spec.progress = options.progress;
+  spec.progress_label = "experiment " + name;
   spec.sim = options.sim;
   spec.base.mode = learning::Mode::paper;  // the paper's experiments, its algorithm
   return spec;

@@ -121,6 +121,7 @@ BodyScenario walk_body_scenario(const StageContext& ctx, const Body& body,
   out.papers = experiments::run_tunnel(corridor, t);
   out.periods_alone = learn_and_walk(ctx, body.sim, corridor, disabled, /*periods_alone=*/true);
   out.robust = learn_and_walk(ctx, body.sim, corridor, disabled, /*periods_alone=*/false);
+  ctx.progress("tunnel: " + std::string(sc.disabled) + " on " + body.name + " learned and walked");
   return out;
 }
 
@@ -238,6 +239,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   paths.after_label = "learned";
   out.image =
       ctx.image(plot_trunk_paths(paths, ctx.dir("figures"), "tunnel-path-" + file_stem(name)));
+  ctx.progress("tunnel: " + name + " filmed");
   return out;
 }
 

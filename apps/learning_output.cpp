@@ -1,0 +1,331 @@
+#include "apps/learning_output.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "experiments/run_json.h"
+#include "learning/learners.h"
+#include "robot/body_models.h"
+#include "robot/leg_sets.h"
+#include "robot/terrain.h"
+#include "sim/fault_spec.h"
+
+namespace multicpg::apps {
+namespace {
+
+std::string degrees(double value) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << value << "°";
+  return s.str();
+}
+
+std::string number(double value) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << value;
+  return s.str();
+}
+
+std::string period_cells(const std::vector<int>& periods,
+                         const std::vector<std::size_t>& disabled) {
+  std::ostringstream row;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    const bool off = std::find(disabled.begin(), disabled.end(), i) != disabled.end();
+    row << std::setw(4) << (std::to_string(periods[i]) + (off ? "x" : ""));
+  }
+  return row.str();
+}
+
+// A table row: label, periods (x = disabled), E, what became of it.
+void row(std::ostream& out, const std::string& label, const std::vector<int>& periods,
+         const std::vector<std::size_t>& disabled, double deviation_deg,
+         const std::string& decision) {
+  out << std::setw(5) << label << period_cells(periods, disabled) << std::setw(10)
+      << degrees(deviation_deg) << "  " << decision << std::endl;
+}
+
+std::string stop_text(learning::StopReason reason) {
+  switch (reason) {
+    case learning::StopReason::below_threshold:
+      return "held under the threshold";
+    case learning::StopReason::trial_cap:
+      return "the trial cap (--max-trials) was reached";
+    case learning::StopReason::space_exhausted:
+      return "every combination was tried";
+    case learning::StopReason::running:
+      break;
+  }
+  return "stopped";
+}
+
+// The trial of the lowest E in the trace (numbered across episodes), if any.
+void print_best_trial(std::ostream& out, const experiments::RunSpec& spec,
+                      const learning::LearningResult& r) {
+  if (r.trace.empty()) return;
+  const auto best = std::min_element(
+      r.trace.begin(), r.trace.end(),
+      [](const auto& a, const auto& b) { return a.deviation_deg < b.deviation_deg; });
+  out << "best trial measured: " << (best - r.trace.begin()) + 1 << ", "
+      << robot::period_map_text(experiments::morphology(spec), best->periods,
+                                sim::failing_legs(spec.faults))
+      << ", E " << degrees(best->deviation_deg) << "\n";
+}
+
+}  // namespace
+
+std::string counted(long n, const std::string& noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+std::string robot_text(const experiments::RunSpec& spec) {
+  const std::string layout = experiments::morphology(spec).name;
+  if (!spec.robot_file) return layout;
+  return layout + " from " + spec.robot_file->record.path + " (" + spec.robot_file->record.name +
+         ")";
+}
+
+std::string world_text(const experiments::RunSpec& spec) {
+  std::string text = "terrain " + robot::terrain_text(spec.sim.scene.terrain) + ", ";
+  if (spec.robot_file) return text + "body from the robot file's model";
+  return text + "body model " + std::string(robot::to_string(spec.sim.model));
+}
+
+void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, long settle_steps) {
+  const robot::Morphology& morph = experiments::morphology(spec);
+  const learning::CompensationOptions& options = *spec.learning;
+  out << robot_text(spec) << ", " << learning::to_string(options.mode) << " mode";
+  if (options.mode == learning::Mode::robust) {
+    out << " (steering " << learning::to_string(options.steering) << ", "
+        << counted(options.hold_windows, "window") << " to hold)";
+  }
+  out << ", faults";
+  for (const sim::Fault& f : spec.faults) {
+    out << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
+        << f.step;
+  }
+  if (options.learner.name != learning::kDefaultLearner)
+    out << ", learner " << options.learner.name;
+  out << ", beta " << options.annealing.beta << ", threshold "
+      << degrees(options.annealing.threshold_deg) << ", window " << options.window_steps
+      << ", settle " << settle_steps << ", seed " << options.seed << "\n"
+      << world_text(spec) << ", step budget " << options.step_budget << "\n\n";
+  out << "trial";
+  for (const robot::Leg& leg : morph.legs) out << std::setw(4) << leg.name;
+  out << "  deviation  decision" << std::endl;
+}
+
+LearningTable::LearningTable(std::ostream& out, const experiments::RunSpec& spec)
+    : out_(out), spec_(spec), disabled_(sim::failing_legs(spec.faults)) {}
+
+void LearningTable::event(const sim::Event& e) {
+  const robot::Morphology& morph = experiments::morphology(spec_);
+  const double threshold = spec_.learning->annealing.threshold_deg;
+  switch (e.kind) {
+    case sim::EventKind::fault:
+    case sim::EventKind::recovery:
+      if (e.fault) {
+        out_ << "-- step " << e.step << ": " << sim::malfunction_text(morph, *e.fault)
+             << (e.fault->recover ? " recovers" : " fails") << std::endl;
+      }
+      return;
+    case sim::EventKind::detection:
+      out_ << "-- episode " << e.episode << ": the window ending at step " << e.step << " deviated "
+           << degrees(e.deviation_deg) << " (threshold " << degrees(threshold)
+           << "): CPGs desynchronised, learning starts" << std::endl;
+      row(out_, "start", e.periods, disabled_, e.deviation_deg, "C0, the periods it deviated with");
+      return;
+    case sim::EventKind::trial_end: {
+      ++trials_;
+      std::ostringstream decision;
+      decision << (e.accepted ? "kept" : "rejected");
+      // The annealing's acceptance probability of a worse combination (paper §3).
+      const double p = e.details.value("acceptance_probability", 1.0);
+      if (p < 1.0) decision << " (P = " << std::setprecision(3) << std::scientific << p << ")";
+      row(out_, std::to_string(trials_), e.periods, disabled_, e.deviation_deg, decision.str());
+      return;
+    }
+    case sim::EventKind::episode_end:
+      out_ << "-- episode " << e.episode << " ended after " << counted(e.trial, "trial") << ": "
+           << (e.accepted ? "held under " + degrees(threshold) : "not held") << "; walks on with "
+           << robot::period_map_text(morph, e.periods, disabled_) << " (E "
+           << degrees(e.deviation_deg) << ")" << std::endl;
+      return;
+    case sim::EventKind::trial_start:
+      return;
+  }
+}
+
+LearningStream::LearningStream(std::ostream& out, std::ostream& progress,
+                               const experiments::RunSpec& spec)
+    : table_(out, spec), progress_(progress) {}
+
+void LearningStream::on_step(const sim::SimModel& /*model*/, const sim::SimState& /*state*/) {
+  ++steps_;
+  if (steps_ - last_line_ < kProgressEverySteps) return;
+  last_line_ = steps_;
+  progress_ << "learn: step " << steps_ << ", " << doing_ << std::endl;
+}
+
+void LearningStream::on_event(const sim::SimModel& /*model*/, const sim::SimState& /*state*/,
+                              const sim::Event& event) {
+  switch (event.kind) {
+    case sim::EventKind::trial_start:
+      doing_ = "walking trial " + std::to_string(table_.trials() + 1);
+      break;
+    case sim::EventKind::episode_end:
+      doing_ = "walking on, watching for a deviation";
+      break;
+    default:
+      break;
+  }
+  table_.event(event);
+  if (event.kind != sim::EventKind::trial_start) last_line_ = steps_;
+}
+
+std::vector<sim::Event> result_events(const learning::LearningResult& r) {
+  std::vector<sim::Event> events;
+  learning::Periods before(r.periods.size(), learning::kStartPeriod);
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < r.episodes.size(); ++i) {
+    const learning::Episode& episode = r.episodes[i];
+    const int number = static_cast<int>(i) + 1;
+    sim::Event detected;
+    detected.kind = sim::EventKind::detection;
+    detected.step = episode.detection_step;
+    detected.episode = number;
+    detected.deviation_deg = episode.detection_deg;
+    detected.periods = before;
+    events.push_back(detected);
+    for (int k = 0; k < episode.trials && next < r.trace.size(); ++k, ++next) {
+      const learning::TrialRecord& t = r.trace[next];
+      sim::Event trial;
+      trial.kind = sim::EventKind::trial_end;
+      trial.episode = number;
+      trial.trial = t.trial;
+      trial.periods = t.periods;
+      trial.deviation_deg = t.deviation_deg;
+      trial.accepted = t.accepted;
+      trial.details = t.details;
+      events.push_back(std::move(trial));
+    }
+    sim::Event done;
+    done.kind = sim::EventKind::episode_end;
+    done.episode = number;
+    done.trial = episode.trials;
+    done.periods = episode.periods;
+    done.deviation_deg = episode.final_deviation_deg;
+    done.accepted = episode.held;
+    events.push_back(std::move(done));
+    before = episode.periods;
+  }
+  return events;
+}
+
+void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
+                        const learning::LearningResult& r) {
+  const robot::Morphology& morph = experiments::morphology(spec);
+  const learning::CompensationOptions& options = *spec.learning;
+  const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
+  const double threshold = options.annealing.threshold_deg;
+  const bool robust = r.mode == learning::Mode::robust;
+  const bool reflex = robust && options.steering == learning::Steering::reflex;
+  out << "\n";
+  if (robust) {
+    for (std::size_t i = 0; i < r.episodes.size(); ++i) {
+      const learning::Episode& e = r.episodes[i];
+      out << "episode " << i + 1 << ": detected " << degrees(e.detection_deg) << " at step "
+          << e.detection_step << ", " << counted(e.trials, "trial") << ", "
+          << robot::period_map_text(morph, e.periods, failing) << ", "
+          << (e.held          ? "held"
+              : e.interrupted ? "interrupted by a fault"
+              : e.reason      ? "not held: " + stop_text(*e.reason)
+                              : "stopped by the step budget")
+          << "\n";
+    }
+    out << "windows after the last fault or episode (E = the largest of |yaw change|, |path "
+           "angle|"
+        << (reflex ? " and the reflex's effort x " + degrees(threshold) + " / " +
+                         number(options.steering_params.max_effort)
+                   : "")
+        << "):\n";
+    out << "  window  yaw change  path angle" << (reflex ? "  reflex effort" : "")
+        << "         E\n";
+    for (std::size_t i = 0; i < r.final_windows.size(); ++i) {
+      const sim::WindowMeasure& m = r.final_windows[i];
+      out << std::setw(8) << i + 1 << std::setw(12) << degrees(m.yaw_deg) << std::setw(12)
+          << degrees(m.path_deg);
+      if (reflex) out << std::setw(15) << number(m.steering_effort);
+      out << std::setw(11) << degrees(learning::robust_deviation(options, m)) << "\n";
+    }
+    if (r.final_windows.empty()) out << "  (none)\n";
+  }
+  if (!r.detection_step) {
+    out << "no window's E exceeded the threshold " << degrees(threshold)
+        << ": learning never started (E of the "
+        << (robust ? "first window after the last fault" : "last window walked") << ": "
+        << degrees(r.initial_deviation_deg) << ")\n";
+  }
+
+  out << "\n" << learning::to_string(r.outcome);
+  if (r.detection_step) {
+    out << " after " << counted(r.trials, "trial") << ": "
+        << robot::period_map_text(morph, r.periods, failing) << " (E "
+        << degrees(r.initial_deviation_deg) << " detected -> " << degrees(r.final_deviation_deg)
+        << " after)";
+  }
+  out << "\n";
+  // Every number the lines above print, in their own words (docs/learning.md "What learn prints").
+  if (robust) {
+    out << "E: over one " << options.window_steps
+        << "-step window, the largest of |yaw change|, |path angle|"
+        << (reflex ? " and the steering reflex's mean swing cut scaled so that " +
+                         number(options.steering_params.max_effort) + " reads as the threshold"
+                   : "")
+        << "; a combination is kept after " << counted(options.hold_windows, "window")
+        << " in a row under " << degrees(threshold) << ".";
+    if (r.detection_step) {
+      out << " Detected: E of the window that started the first episode (step " << *r.detection_step
+          << "); after: the largest E of the "
+          << counted(static_cast<long>(r.final_windows.size()), "window")
+          << " walked after the last fault or episode.";
+    }
+  } else {
+    out << "E (paper §3): |yaw change| over one " << options.window_steps << "-step window.";
+    if (r.detection_step) {
+      out << " Detected: E of the window that started learning (step " << *r.detection_step
+          << "); after: E of the trial window of the combination the robot walks on with.";
+    }
+  }
+  out << "\n";
+
+  // What happened, where the table alone does not say it.
+  if (r.outcome == learning::Outcome::budget_reached) {
+    out << "The trials used up the step budget of " << options.step_budget
+        << " steps (--step-budget): learning stopped, and the robot walks on with the "
+           "learner's answer so far.\n";
+    print_best_trial(out, spec, r);
+  } else if (r.outcome == learning::Outcome::not_converged && r.reason) {
+    out << "Learning gave up: " << stop_text(*r.reason) << ".\n";
+    print_best_trial(out, spec, r);
+  }
+  if (robust && !options.learn_periods) {
+    out << "Period learning was off (--no-period-learning): the steering reflex walked alone.\n";
+  } else if (reflex && r.episodes.empty() && r.outcome == learning::Outcome::no_deviation) {
+    out << "The steering reflex held the course: no window's E exceeded " << degrees(threshold)
+        << ", so no period was learned. To see period learning: --steering off (robust mode "
+           "without the reflex) or --mode paper (paper §3: yaw only, no reflex).\n";
+  } else if (reflex) {
+    out << "The steering reflex steered against the fault in every window: each E above is what "
+           "was left with it at work (mean swing cut in the last window "
+        << number(r.steering_effort)
+        << "), which can be far less than the fault turns the robot without it. To see the "
+           "periods learn the whole turn: --steering off, or --mode paper (paper §3).\n";
+  } else if (!robust && r.outcome == learning::Outcome::no_deviation) {
+    out << "The fault did not turn the robot more than " << degrees(threshold) << " in "
+        << counted(options.detection_windows, "window") << " after it (--threshold sets the "
+        << "threshold).\n";
+  }
+}
+
+}  // namespace multicpg::apps
