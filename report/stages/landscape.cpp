@@ -17,7 +17,8 @@
 namespace multicpg::report {
 namespace {
 
-// The scenario of the brute-force check (docs/learning.md): the quadruped's hardest (few combinations hold).
+// The scenario of the brute-force check (docs/learning.md): the quadruped's hardest (few
+// combinations hold).
 constexpr const char* kScenario = "L2";
 
 // The periods every converged run of `scenario` in the experiment `dir` ended with.
