@@ -1,5 +1,5 @@
 // Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1, Interrupted ->
-// 128 + the signal (130 for SIGINT, 143 for SIGTERM; README "Exit codes").
+// 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/cli.md "Exit codes and signals").
 #pragma once
 
 #include <stdexcept>

@@ -1,4 +1,4 @@
-// libFuzzer target for experiment files (README "Experiment files"): TOML text read, bounded and
+// libFuzzer target for experiment files (docs/experiments.md "Experiment files"): TOML text read, bounded and
 // resolved as `multicpg run FILE --check` does (experiments::parse_experiment_text). Each input
 // must resolve or throw BadInput; anything else (another exception, a crash, a sanitizer report,
 // a stack overflow in the TOML parser) is a finding. It also checks the nesting scan against

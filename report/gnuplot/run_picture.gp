@@ -35,6 +35,7 @@ if (has_trace) {
   max_labelled_trials = 30
   stats trace using 'trial' nooutput
   if (STATS_max <= max_labelled_trials) { set xtics 1 }
+  set yrange [0:*]
   set xlabel 'trial (0 = detection window)'
   set ylabel 'deviation (degrees)'
   set title 'Learning trace'
@@ -47,6 +48,7 @@ if (has_trace) {
 # The gait strip: one row per leg, a blue box while its foot touches the ground.
 set offsets 0, 0, 0, 0
 set xtics autofreq
+set autoscale y
 nlegs = words(legs)
 half_height = 0.38
 set xrange [first_step:last_step]

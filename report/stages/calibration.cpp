@@ -174,7 +174,7 @@ Section calibration_stage(const StageContext& ctx) {
       "docs/calibration/candidates.csv and summary.json, committed from `multicpg calibrate "
       "--budget " +
       std::to_string(summary.at("budget").get<int>()) +
-      "` (hours of CPU); this run draws them and does not walk the candidates again.";
+      "`; this run draws them and does not walk the candidates again.";
   return section;
 }
 
