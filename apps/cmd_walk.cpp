@@ -193,8 +193,8 @@ void run_walk(const WalkOptions& o) {
   spec.settle = o.settle;
   spec.steps = o.steps;
   spec.window = o.window;
-  // Every step streams to the CSV as it is made (docs/cli.md: memory flat in the walk's length); the
-  // file takes its name only when the walk has ended well (common/atomic_file.h).
+  // Every step streams to the CSV as it is made (docs/cli.md: memory flat in the walk's length);
+  // the file takes its name only when the walk has ended well (common/atomic_file.h).
   spec.keep_record = false;
   ReplayOutput replay(o.replay);
   PlotOutput plot(o.plot);
