@@ -30,6 +30,14 @@ void install_interrupt_handlers() {
   for (int s : {SIGINT, SIGTERM}) ::sigaction(s, &action, nullptr);
 }
 
+void request_interrupt(int signal) {
+  on_signal(signal);
+}
+
+void clear_interrupt() {
+  pending.store(0, std::memory_order_relaxed);
+}
+
 int interrupt_signal() {
   return pending.load(std::memory_order_relaxed);
 }

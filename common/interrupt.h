@@ -16,6 +16,11 @@ void install_interrupt_handlers();
 // The signal that asked the process to stop, or 0.
 int interrupt_signal();
 
+// Asks the work in progress to stop as a signal would, and forgets the request once it has
+// stopped: for the Python module, whose interpreter handles the signals itself.
+void request_interrupt(int signal);
+void clear_interrupt();
+
 // Throws Interrupted if a signal asked the process to stop. Cheap (one relaxed atomic load):
 // called every controller step.
 void check_interrupted();

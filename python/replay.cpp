@@ -30,7 +30,7 @@ namespace {
 
 using nlohmann::json;
 
-// What Simulation.state().to_bytes() holds (the module's State, python/multicpg_module.cpp).
+// What Simulation.state().to_bytes() holds (the module's State, python/state.cpp).
 constexpr const char* kStateFormat = "multicpg state";
 constexpr int kStateVersion = 1;
 

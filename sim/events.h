@@ -6,8 +6,10 @@
 
 #include <cstddef>
 #include <optional>
+#include <string_view>
 #include <vector>
 
+#include "common/enum_names.h"
 #include "neural/controller.h"
 #include "robot/morphology.h"
 #include "sim/faults.h"
@@ -26,6 +28,18 @@ enum class EventKind {
   trial_end,    // its windows were measured and it was kept or rejected
   episode_end,  // learning stopped: held (converged) or not
 };
+
+// Each kind's name on disk (replays, hardware records).
+inline constexpr auto kEventKindNames =
+    enum_names<EventKind>({{EventKind::fault, "fault"},
+                           {EventKind::recovery, "recovery"},
+                           {EventKind::detection, "detection"},
+                           {EventKind::trial_start, "trial_start"},
+                           {EventKind::trial_end, "trial_end"},
+                           {EventKind::episode_end, "episode_end"}});
+inline std::string_view to_string(EventKind kind) {
+  return kEventKindNames.name(kind);
+}
 
 struct Event {
   EventKind kind = EventKind::fault;

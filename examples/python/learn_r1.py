@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only, no display needed
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
 
 import multicpg  # noqa: E402
 
@@ -33,8 +34,10 @@ def main():
     result = multicpg.learn(robot, disable="R1", mode=args.mode, seed=args.seed,
                             max_trials=args.max_trials)
     learned = [result["periods"][leg] for leg in robot.legs]
+    # R1's period marked x, as the CLI's trace marks a disabled leg.
     print(f"{result['status']} after {result['trials']} trials: "
-          + " ".join(f"{leg}={result['periods'][leg]}" for leg in robot.legs if leg != "R1"))
+          + " ".join(f"{leg}={result['periods'][leg]}{'x' if leg == 'R1' else ''}"
+                     for leg in robot.legs))
 
     fig, ax = plt.subplots(figsize=(6, 5))
     for label, periods in (("before learning (all 4)", 4), ("after learning", learned)):
@@ -49,18 +52,18 @@ def main():
     ax.legend()
     fig.savefig(out / "trunk_path.png", dpi=100)
 
-    trace = result["trace_arrays"]
+    trace = result["trace_arrays"]  # from trial 0: the detecting window, every leg at 4
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.bar([0], [result["initial_deviation_deg"]], color="tab:grey", label="detecting window")
-    colours = ["tab:green" if kept else "tab:red" for kept in trace["accepted"]]
+    colours = ["tab:grey" if trial == 0 else "tab:green" if kept else "tab:red"
+               for trial, kept in zip(trace["trial"], trace["accepted"])]
     ax.bar(trace["trial"], trace["deviation_deg"], color=colours)
     threshold = result["options"]["annealing"]["threshold_deg"]
-    ax.axhline(threshold, color="black", linestyle="--", label="threshold")
+    line = ax.axhline(threshold, color="black", linestyle="--", label="threshold")
     ax.set_xticks(range(0, result["trials"] + 1))
     ax.set_xlabel("trial")
     ax.set_ylabel(f"deviation per {result['options']['window_steps']}-step window (deg)")
     ax.set_title("Deviation per trial (green kept, red rejected)")
-    ax.legend()
+    ax.legend(handles=[Patch(color="tab:grey", label="trial 0: detecting window"), line])
     fig.savefig(out / "deviation.png", dpi=100)
     print(f"wrote {out / 'trunk_path.png'} and {out / 'deviation.png'}")
 

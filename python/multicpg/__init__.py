@@ -3,12 +3,12 @@
 Robots walk in MuJoCo under one chaotic CPG per leg; when legs fail, simulated annealing finds
 leg periods that walk straight again. The classes and functions mirror the ``multicpg`` CLI:
 
-- ``Robot("hexapod" | "quadruped" | "octopod", terrain=..., model="paper-sim" | "real",
-  body={...})``: legs, joints, ``mjcf()``; equal robots are interchangeable (``==``, ``hash``,
-  pickle). ``Robot.from_file("R.toml")``: the robot of a robot file (docs/robots.md).
+- ``Robot("hexapod" | "quadruped" | "octopod" | "R.toml", terrain=..., model="paper-sim" |
+  "real", body={...})``: legs, joints, ``mjcf()``; equal robots are interchangeable (``==``,
+  ``hash``, pickle). A robot file (docs/robots.md) is named by its path, as the CLI's --robot.
 - ``Terrain.flat()``, ``.slope(deg)``, ``.rough(height_m, seed)``, ``.steps(height_m, depth_m)``:
   the ground (the CLI's ``"slope:5"`` text is accepted too).
-- ``Simulation(robot, periods=..., disable=..., faults=[...], ...)``: ``step(n)``,
+- ``Simulation(robot, periods=..., terrain=..., disable=..., faults=[...], ...)``: ``step(n)``,
   ``set_periods``, ``fail``/``recover``, ``synchronise``, ``steer`` (the reflex),
   ``walk_window``, ``state()``/``restore()``, ``record()`` (NumPy arrays), ``measure()``.
 - ``Fault(legs, step, kind=..., joint=..., value=...)``, ``Recovery(...)``: a run's fault
@@ -16,7 +16,9 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
   a slippery foot, a drifting or noisy yaw sensor (the CLI's ``"R2.CTr:locked@600"`` text is
   accepted too).
 - ``State``: a complete, immutable, picklable copy of a simulation; restores bit for bit.
-- ``learn(...)``, ``tunnel(...)``: the CLI's JSON results as dicts, plus the trace as arrays.
+- ``learn(...)``, ``tunnel(...)``: the CLI's JSON results as dicts, plus the trace as arrays
+  (from trial 0, as the CLI's trace); ``learner="bayes", learner_options={...}`` chooses the
+  learner as ``--learner`` and ``--learner-option`` do.
 - ``render(sim, width, height)`` -> H x W x 3 uint8 array; ``film(sim, "out.mp4", steps)``.
 - ``replay(sim, "run.html", steps=400)`` or ``replay(learn(...), "learn.html")``: a 3D replay,
   one HTML page that opens offline in any browser and shows itself inline in Jupyter.
@@ -26,8 +28,13 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 
 Arguments are Python values: periods as an int, a dict ``{"R1": 5}`` or one per leg in leg
 order; legs as a list of names. A wrong type raises TypeError and a wrong value ValueError, each
-naming the parameter (``periods: period 7 gives no gait ...``); a failed run raises
-RuntimeError. ``__version__`` is the project's version, ``build_info()`` says what was built.
+naming the parameter (``periods: period 7 gives no gait ...``; a mistyped keyword with the
+nearest known one); a failed run raises RuntimeError.
+
+Long calls (learn, tunnel, Simulation.step, experiment) stop on Ctrl-C or a Jupyter interrupt
+within half a second with KeyboardInterrupt, leaving their objects usable; learn, tunnel and
+step show a tqdm bar once they have run half a second (``progress=False``: none; a callable:
+your own, given a dict per report). ``__version__`` is the project's version, ``build_info()`` says what was built.
 """
 
 import csv
@@ -104,6 +111,8 @@ def experiment(file_or_dict: Union[str, "os.PathLike[str]", Dict[str, Any]],
     status, trials, deviations, final periods, ...): a pandas DataFrame when pandas is
     installed, else a list of dicts with numbers as int or float. A bad document or value raises
     ValueError with the CLI's message (naming the key); a failed run raises RuntimeError.
+    Ctrl-C stops the runs and raises KeyboardInterrupt; with `out`, the same call resumes from
+    the runs that finished.
     """
     is_document = isinstance(file_or_dict, dict)
     if is_document:

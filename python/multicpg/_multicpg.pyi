@@ -1,4 +1,4 @@
-"""Type stubs of the compiled module multicpg._multicpg (python/multicpg_module.cpp), for editors
+"""Type stubs of the compiled module multicpg._multicpg (python/module.cpp), for editors
 and type checkers. Every name here is re-exported by the multicpg package; the docstrings are
 the module's own (help(multicpg.Simulation) shows them at run time)."""
 
@@ -32,6 +32,9 @@ Faults = Union[None, str, "Fault", Iterable[Union[str, "Fault"]]]
 Pose = Tuple[float, float, float]
 PathLike = Union[str, "os.PathLike[str]"]
 Observer = Optional[Callable[[Dict[str, Any]], Any]]
+# A long call's progress: a bar (True), none (False), or a callable given a dict per report
+# (stage, steps, total, trials, deviation_deg, finished).
+Progress = Union[bool, Callable[[Dict[str, Any]], Any]]
 
 def build_info() -> Dict[str, str]:
     """What this module is: version, git_commit, mujoco_version, compiler, pybind11_version."""
@@ -91,9 +94,11 @@ class Terrain:
     def __hash__(self) -> int: ...
 
 class Robot:
-    """A robot and its MuJoCo model; robots are equal when made of the same name and options."""
+    """A robot (a name or a robot file FILE.toml) and its MuJoCo model; robots are equal when
+    made of the same name and options."""
 
-    def __init__(self, name: str = "hexapod", *, tunnel: bool = False, control_dt: float = 0.037,
+    def __init__(self, name: Union[str, "os.PathLike[str]"] = "hexapod", *, tunnel: bool = False,
+                 control_dt: float = 0.037,
                  physics_dt: Optional[float] = None, servo_gain: Optional[float] = None,
                  terrain: Union["Terrain", str] = "flat", model: str = "paper-sim",
                  body: Optional[Mapping[str, Any]] = None) -> None: ...
@@ -165,11 +170,11 @@ class Simulation:
     """A simulated robot walking under its controller."""
 
     def __init__(self, robot: Union[Robot, str] = "hexapod", *, periods: Periods = 4,
-                 disable: Legs = None, disable_at: int = 0, faults: Faults = None,
-                 recoveries: Faults = None, warmup: int = 1000, record: bool = True,
-                 seed: int = 1) -> None: ...
-    def step(self, n: int = 1) -> None:
-        """Walks n controller steps. Releases the GIL."""
+                 terrain: Union[None, "Terrain", str] = None, disable: Legs = None,
+                 disable_at: int = 0, faults: Faults = None, recoveries: Faults = None,
+                 warmup: int = 1000, record: bool = True, seed: int = 1) -> None: ...
+    def step(self, n: int = 1, *, progress: Progress = True) -> None:
+        """Walks n controller steps. Releases the GIL; Ctrl-C raises KeyboardInterrupt."""
     def set_periods(self, periods: Periods) -> None:
         """Sets CPG periods (legs not named keep theirs) and resets every CPG."""
     def fail(self, legs: Legs) -> None:
@@ -228,23 +233,28 @@ def film(sim: Simulation, out: PathLike, steps: int, *, speed: int = 1, width: i
 def measure_window(start: Pose, end: Pose) -> Dict[str, float]:
     """Yaw change and path angle of a window between two poses."""
 
-def learn(robot: Union[Robot, str] = "hexapod", *, disable: Legs = None, disable_at: int = 0,
-          faults: Faults = None, recoveries: Faults = None, mode: str = "robust",
-          steering: str = "reflex", hold_windows: int = 3, monitor_windows: int = 6,
-          period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
-          window: int = 400, settle: Optional[int] = None, max_trials: int = 200,
-          seed: int = 1, record: bool = False, observer: Observer = None) -> Dict[str, Any]:
+def learn(robot: Union[Robot, str] = "hexapod", *, terrain: Union[None, "Terrain", str] = None,
+          disable: Legs = None, disable_at: int = 0, faults: Faults = None,
+          recoveries: Faults = None, mode: str = "robust", learner: str = "annealing",
+          learner_options: Optional[Mapping[str, Any]] = None, steering: str = "reflex",
+          hold_windows: int = 3, monitor_windows: int = 6, period_learning: bool = True,
+          beta: float = 0.5, threshold: float = 8.0, window: int = 400,
+          settle: Optional[int] = None, max_trials: int = 200, seed: int = 1,
+          record: bool = False, observer: Observer = None,
+          progress: Progress = True) -> Dict[str, Any]:
     """`multicpg learn`: the dict of `learn --json` plus trace_arrays (and path)."""
 
-def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, periods: Optional[Periods] = None, learn: bool = False,
-           max_steps: int = 12000, video: Optional[PathLike] = None, mode: str = "robust",
-           steering: str = "reflex", hold_windows: int = 3, monitor_windows: int = 6,
-           period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
-           window: int = 400, settle: Optional[int] = None, max_trials: int = 200,
-           seed: int = 1, control_dt: float = 0.037, physics_dt: Optional[float] = None,
-           servo_gain: Optional[float] = None, observer: Observer = None, faults: Faults = None,
-           terrain: Union["Terrain", str] = "flat", model: str = "paper-sim",
-           body: Optional[Mapping[str, Any]] = None,
+def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disable_at: int = 0,
+           faults: Faults = None, recoveries: Faults = None, periods: Optional[Periods] = None, learn: bool = False, max_steps: int = 12000,
+           video: Optional[PathLike] = None, mode: str = "robust", learner: str = "annealing",
+           learner_options: Optional[Mapping[str, Any]] = None, steering: str = "reflex",
+           hold_windows: int = 3, monitor_windows: int = 6, period_learning: bool = True,
+           beta: float = 0.5, threshold: float = 8.0, window: int = 400,
+           settle: Optional[int] = None, max_trials: int = 200, seed: int = 1,
+           control_dt: float = 0.037, physics_dt: Optional[float] = None,
+           servo_gain: Optional[float] = None, terrain: Union["Terrain", str] = "flat",
+           model: str = "paper-sim", body: Optional[Mapping[str, Any]] = None,
+           observer: Observer = None, progress: Progress = True,
            scale_tunnel: bool = False) -> Dict[str, Any]:
     """`multicpg tunnel`: the dict of `tunnel --json` plus path (and trace_arrays)."""
 
@@ -280,6 +290,12 @@ class Annealer:
     def trace(self) -> List[Dict[str, Any]]:
         """One dict per decided trial."""
 
+def _learning_options(*, mode: str = "robust", learner: str = "annealing",
+                      learner_options: Optional[Mapping[str, Any]] = None,
+                      steering: str = "reflex", hold_windows: int = 3, monitor_windows: int = 6,
+                      period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
+                      window: int = 400, settle: Optional[int] = None, max_trials: int = 200,
+                      seed: int = 1) -> Dict[str, Any]: ...
 def _run_experiment(file_or_dict: Union[str, PathLike], is_document: bool, jobs: Optional[int],
                     out: PathLike) -> None: ...
 def _test_mujoco_error(message: str) -> None: ...

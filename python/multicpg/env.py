@@ -3,8 +3,11 @@
 One step is one learning trial: the working legs get the action's periods, the robot walks the
 settling steps unmeasured, then the trial's windows are measured. ``mode="paper"`` is
 ``multicpg learn --mode paper`` exactly (one 400-step window judges a trial by its yaw change);
-``mode="robust"`` judges as robust mode does (the worse of yaw change and path angle, up to
-hold_windows windows, the steering reflex's effort) and lets the action switch the reflex.
+``mode="robust"`` (the default, as ``multicpg learn``'s) judges as robust mode does (the worse
+of yaw change and path angle, up to hold_windows windows, the steering reflex's effort) and lets
+the action switch the reflex. The learning keywords are learn()'s, checked by the same
+description (mode, threshold, window, settle, hold_windows, max_trials; the others are the
+agent's choice); faults and terrain are Simulation's.
 
 When ``gymnasium`` is importable the environment is a ``gymnasium.Env`` with gymnasium's spaces;
 otherwise it has the same interface with multicpg.spaces (Debian 12 ships no gymnasium).
@@ -18,9 +21,11 @@ from typing import Any, Dict, List, Optional, Sequence, SupportsFloat, Tuple, Un
 
 import numpy as np
 
-from ._multicpg import (DEFAULT_BETA, DEFAULT_HOLD_WINDOWS, DEFAULT_MAX_TRIALS,
-                        DEFAULT_THRESHOLD_DEG, DEFAULT_WINDOW_STEPS, DETECTION_WINDOWS,
-                        PERIOD_SET, STEERING_MAX_EFFORT, Annealer, Robot, Simulation, render)
+from ._multicpg import (DETECTION_WINDOWS, PERIOD_SET, STEERING_MAX_EFFORT, Annealer, Robot,
+                        Simulation, _learning_options, render)
+# The defaults of the learning keywords, for code written against the environment.
+from ._multicpg import (DEFAULT_BETA, DEFAULT_HOLD_WINDOWS, DEFAULT_MAX_TRIALS,  # noqa: F401
+                        DEFAULT_THRESHOLD_DEG, DEFAULT_WINDOW_STEPS)
 
 try:  # gymnasium is not in Debian 12; its spaces and Env are used where it is installed
     import gymnasium as _gymnasium
@@ -72,6 +77,9 @@ __all__ = ["AnnealingAgent", "CompensationEnv", "HAVE_GYMNASIUM", "MODES"]
 
 # Learning modes the environment has (learn()'s mode argument).
 MODES = ("paper", "robust")
+# The learning keywords an environment uses; learn()'s others (learner, beta, seed, steering,
+# ...) are what an agent on it decides.
+_ENV_LEARNING = ("mode", "threshold", "window", "settle", "hold_windows", "max_trials")
 # Reflex choices, the last action element in robust mode.
 STEERING_OFF, STEERING_ON = 0, 1
 # Bounds of an observation: a window's yaw change and path angle are wrapped angles (deg), the
@@ -110,33 +118,34 @@ class CompensationEnv(_EnvBase):
     metadata = {"render_modes": ["rgb_array"], "render_fps": _RENDER_FPS}
 
     def __init__(self, robot: Union[str, Robot] = "hexapod", disable: Any = "R1",
-                 disable_at: int = 0, *, mode: str = "paper",
-                 threshold: float = DEFAULT_THRESHOLD_DEG, window: int = DEFAULT_WINDOW_STEPS,
-                 settle: Optional[int] = None, hold_windows: int = DEFAULT_HOLD_WINDOWS,
-                 max_trials: int = DEFAULT_MAX_TRIALS, render_mode: Optional[str] = None,
-                 render_size: Tuple[int, int] = (320, 240)):
-        if mode not in MODES:
-            raise ValueError(f"mode: expected one of {MODES}, got {mode!r}")
+                 disable_at: int = 0, *, faults: Any = None, terrain: Any = None,
+                 render_mode: Optional[str] = None, render_size: Tuple[int, int] = (320, 240),
+                 **learning: Any):
+        # learn()'s description of the learning keywords: unknown ones are named, values checked.
+        options = _learning_options(**learning)
+        for name in options["given"]:
+            if name not in _ENV_LEARNING:
+                raise ValueError(f"{name}: learn() takes it, an environment does not (its "
+                                 f"agent decides; it takes {', '.join(_ENV_LEARNING)})")
+        mode = options["mode"]
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode: expected None or 'rgb_array', got {render_mode!r}")
-        if isinstance(robot, Robot):
-            self.robot = robot
-        else:
-            # A robot name, or a robot file as every robot argument takes it.
-            is_file = isinstance(robot, str) and robot.endswith(".toml")
-            self.robot = Robot.from_file(robot) if is_file else Robot(robot)
+        # A Robot, a robot name or a robot file FILE.toml.
+        self.robot = robot if isinstance(robot, Robot) else Robot(robot)
         self.mode = mode
         # A Simulation checks every argument (names, ranges) before anything walks.
-        probe = Simulation(self.robot, disable=disable, disable_at=disable_at, warmup=0,
-                           record=False)
+        probe = Simulation(self.robot, disable=disable, disable_at=disable_at, faults=faults,
+                           terrain=terrain, warmup=0, record=False)
+        self.robot = probe.robot  # on the terrain asked for
         del probe
         self.disable = disable
         self.disable_at = disable_at
-        self.threshold = float(threshold)
-        self.window = window
-        self.settle = settle
-        self.hold_windows = hold_windows if mode == "robust" else 1
-        self.max_trials = max_trials
+        self.faults = faults
+        self.threshold = options["threshold"]
+        self.window = options["window"]
+        self.settle = options["settle"]
+        self.hold_windows = options["hold_windows"] if mode == "robust" else 1
+        self.max_trials = options["max_trials"]
         self.render_mode = render_mode
         self.render_size = render_size
         self.sim: Optional[Simulation] = None
@@ -151,7 +160,11 @@ class CompensationEnv(_EnvBase):
         self.observation_space = Box(low, high, dtype=np.float64)
         # Validate the learning numbers as learn() does, without walking.
         Annealer(self.robot, 4, self.disabled_legs, 0.0, threshold=self.threshold,
-                 max_trials=max_trials)
+                 max_trials=self.max_trials)
+
+    def __repr__(self) -> str:
+        return (f"<multicpg.env.CompensationEnv {self.mode} mode: {self.robot!r}, disable="
+                f"{self.disable!r} at step {self.disable_at}, {self.trials} trials>")
 
     # ---- legs and actions ----------------------------------------------------------------
 
@@ -249,10 +262,11 @@ class CompensationEnv(_EnvBase):
         # Paper mode starts cold (as the authors' code); robust mode from a running controller,
         # steering.
         self.sim = Simulation(self.robot, disable=self.disable, disable_at=self.disable_at,
-                              record=False, **({"warmup": 0} if paper else {}))
+                              faults=self.faults, record=False,
+                              **({"warmup": 0} if paper else {}))
         if not paper:
             self.sim.steer(True)
-        self.sim.step(self._settle())
+        self.sim.step(self._settle(), progress=False)
         windows_since_failure = 0
         while True:
             m = self._window()
@@ -280,7 +294,7 @@ class CompensationEnv(_EnvBase):
             if on != self.sim.steering:
                 self.sim.steer(on)
         self.sim.set_periods(self.periods_of(values))
-        self.sim.step(self._settle())
+        self.sim.step(self._settle(), progress=False)
         worst = None
         for _ in range(self.hold_windows):
             m = self._window()

@@ -127,8 +127,9 @@ def test_learn_equals_the_cli_and_calls_the_observer():
     assert py == cli
     assert [t["trial"] for t in seen] == [t["trial"] for t in cli["trace"]]
     assert [t["deviation_deg"] for t in seen] == [t["deviation_deg"] for t in cli["trace"]]
-    assert arrays["periods"].shape == (len(cli["trace"]), 6)
-    assert list(arrays["deviation_deg"]) == [t["deviation_deg"] for t in cli["trace"]]
+    assert arrays["periods"].shape == (len(cli["trace"]) + 1, 6)  # from trial 0
+    assert arrays["deviation_deg"][0] == cli["initial_deviation_deg"]
+    assert list(arrays["deviation_deg"][1:]) == [t["deviation_deg"] for t in cli["trace"]]
 
 
 def test_tunnel_equals_the_cli():
@@ -146,7 +147,7 @@ def test_tunnel_equals_the_cli():
     del py["path"]
     arrays = py.pop("trace_arrays")
     assert py == cli
-    assert len(trials) == len(arrays["trial"]) == cli["learning"]["trials"]
+    assert len(trials) == len(arrays["trial"]) - 1 == cli["learning"]["trials"]  # and trial 0
 
 
 def test_bad_arguments_raise_value_error_naming_the_argument(hexapod):

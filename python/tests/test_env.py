@@ -21,7 +21,7 @@ SAMPLES = 1000
 def test_the_annealing_agent_gives_the_trace_of_learn_paper():
     cli = cli_json("learn", "--mode", "paper", "--disable", "R1", "--seed", str(SEED),
                    "--max-trials", str(MAX_TRIALS))
-    env = CompensationEnv("hexapod", disable="R1", max_trials=MAX_TRIALS)
+    env = CompensationEnv("hexapod", disable="R1", mode="paper", max_trials=MAX_TRIALS)
     annealer = AnnealingAgent().run(env, seed=SEED)
     legs = env.robot.legs
     assert [[t["periods"][leg] for leg in legs] for t in cli["trace"]] == \
@@ -51,7 +51,7 @@ def check_step(env, result):
 
 
 def test_the_environment_follows_gymnasiums_rules():
-    env = CompensationEnv("hexapod", disable="R1", max_trials=2)
+    env = CompensationEnv("hexapod", disable="R1", mode="paper", max_trials=2)
     if HAVE_GYMNASIUM:
         import gymnasium
         assert isinstance(env, gymnasium.Env)
@@ -79,7 +79,7 @@ def test_the_environment_follows_gymnasiums_rules():
 
 
 def test_spaces_sample_inside_themselves_and_seed_through_reset():
-    env = CompensationEnv("hexapod", disable="R1,L2")
+    env = CompensationEnv("hexapod", disable="R1,L2", mode="paper")
     space = env.action_space
     assert space.shape == (4,) and space.dtype == np.int64
     assert list(space.nvec) == [len(multicpg.env.PERIOD_SET)] * 4

@@ -34,7 +34,7 @@ def test_from_file_walks_as_the_built_in_robot(robot_dir):
     assert robot.name == "hexapod" and robot.file == path and builtin.file is None
     assert robot.legs == builtin.legs and robot.joint_names == builtin.joint_names
     assert robot != builtin
-    assert repr(robot) == f"multicpg.Robot.from_file('{path}')"
+    assert repr(robot) == f"multicpg.Robot('{path}')"
     assert walk(robot) == walk(builtin)
     # A file name is a robot argument too.
     assert multicpg.Simulation(path, warmup=0).robot == robot

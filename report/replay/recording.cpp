@@ -136,7 +136,7 @@ void ReplayRecorder::begin(const sim::SimModel& model, const sim::SimState& stat
   last_quat_.assign(recording_.scene.bodies.size(), {1, 0, 0, 0});
   const sim::Position p = sim::trunk_position(model, state);
   recording_.start = {p.x, p.y, sim::trunk_yaw_deg(model, state)};
-  if (!state.faults.in_force.empty()) paint(model, state, recording_.first_step);
+  if (!state.faults.schedule.in_force().empty()) paint(model, state, recording_.first_step);
 }
 
 void ReplayRecorder::on_start(const sim::SimModel& model, const sim::SimState& state) {
@@ -195,11 +195,11 @@ void ReplayRecorder::append_row(const sim::SimModel& model, const sim::SimState&
 void ReplayRecorder::paint(const sim::SimModel& model, const sim::SimState& state, long step) {
   ReplayPaint p;
   p.step = step;
-  p.colours = fault_colours(model, state.faults.in_force);
-  for (const sim::Fault& f : state.faults.in_force) {
+  p.colours = fault_colours(model, state.faults.schedule.in_force());
+  for (const sim::Fault& f : state.faults.schedule.in_force()) {
     for (std::size_t leg : f.legs) p.legs.emplace_back(leg, kind_colour(f.kind));
   }
-  p.faults = faults_caption(model.controller.morphology, state.faults.in_force);
+  p.faults = faults_caption(model.controller.morphology, state.faults.schedule.in_force());
   const mjModel* shared = model.mj.get();
   const mjModel* now = sim::physics_model(model, state);
   const std::vector<ReplayGeom>& geoms = recording_.scene.geoms;

@@ -1,0 +1,156 @@
+#include "python/run_args.h"
+
+#include <pybind11/stl.h>
+
+#include <string>
+
+#include "common/errors.h"
+#include "learning/annealing.h"
+#include "learning/learners.h"
+#include "learning/steering.h"
+#include "python/args.h"
+#include "python/values.h"
+
+namespace multicpg::python {
+namespace {
+
+// The Python argument that sets a RunSpec key, for messages.
+std::string argument_of(const std::string& key) {
+  if (key == "start.periods") return "periods";
+  if (key == "start.warmup") return "warmup";
+  if (key == "faults") return "disable/faults/recoveries";
+  if (key.rfind("sim.", 0) == 0) return sim_argument(key.substr(4));
+  if (key == "learning.annealing.threshold_deg") return "threshold";
+  if (key == "learning.window_steps") return "window";
+  if (key == "learning.settle_steps") return "settle";
+  if (key == "learning.learn_periods") return "period_learning";
+  const std::string options = "learning.learner.options.";
+  if (key.rfind(options, 0) == 0) return "learner_options['" + key.substr(options.size()) + "']";
+  if (key.rfind("learning.learner", 0) == 0) return "learner";
+  return key.substr(key.rfind('.') + 1);
+}
+
+// What resolve_learner's keys are in Python.
+std::string learner_argument(const std::string& key) {
+  const std::string options = "options.";
+  if (key.rfind(options, 0) == 0) return "learner_options['" + key.substr(options.size()) + "']";
+  return "learner";
+}
+
+}  // namespace
+
+Params fault_params() {
+  return {{"disable", py::none()},
+          {"disable_at", py::int_(0)},
+          {"faults", py::none()},
+          {"recoveries", py::none()}};
+}
+
+sim::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k) {
+  const long at = whole(k["disable_at"], "disable_at", sim::kStepLimits);
+  sim::FaultTimeline timeline = sim::fail_at(legs(morph, k["disable"], "disable"), at);
+  for (sim::Fault& f : faults(morph, k["faults"], "faults", false)) {
+    timeline.push_back(std::move(f));
+  }
+  for (sim::Fault& f : faults(morph, k["recoveries"], "recoveries", true)) {
+    timeline.push_back(std::move(f));
+  }
+  sim::sort_timeline(timeline);
+  return timeline;
+}
+
+Params robust_params() {
+  return {{"steering", py::str(std::string(learning::to_string(learning::Steering::reflex)))},
+          {"hold_windows", py::int_(learning::kDefaultHoldWindows)},
+          {"monitor_windows", py::int_(learning::kDefaultMonitorWindows)},
+          {"period_learning", py::bool_(true)}};
+}
+
+Params learning_params() {
+  return join({{{"mode", py::str(std::string(learning::to_string(learning::Mode::robust)))},
+                {"learner", py::str(std::string(learning::kDefaultLearner))},
+                {"learner_options", py::none()}},
+               robust_params(),
+               {{"beta", py::float_(learning::kDefaultBeta)},
+                {"threshold", py::float_(learning::kDefaultThresholdDeg)},
+                {"window", py::int_(learning::kDefaultWindowSteps)},
+                {"settle", py::none()},
+                {"max_trials", py::int_(learning::kDefaultMaxTrials)},
+                {"seed", py::int_(1)}}});
+}
+
+learning::CompensationOptions learning_options(const Keywords& k) {
+  learning::CompensationOptions o;
+  const std::string mode = text(k["mode"], "mode");
+  o.mode = named("mode", [&] { return learning::parse_mode(mode); });
+  if (o.mode == learning::Mode::paper) {
+    // Paper mode has none of these (the CLI refuses their flags the same way).
+    std::string given;
+    for (const std::string& name : k.given_of(robust_params())) {
+      given += (given.empty() ? "" : ", ") + name;
+    }
+    if (!given.empty()) {
+      value_error("mode",
+                  "'paper' takes none of the robust-mode arguments steering, "
+                  "hold_windows, monitor_windows, period_learning (given: " +
+                      given + ")");
+    }
+  }
+  const std::string steering = text(k["steering"], "steering");
+  const learning::Steering steer =
+      named("steering", [&] { return learning::parse_steering(steering); });
+  o.steering = o.mode == learning::Mode::paper ? learning::Steering::off : steer;
+  o.hold_windows = whole(k["hold_windows"], "hold_windows", learning::kHoldWindowsLimits);
+  o.monitor_windows =
+      whole(k["monitor_windows"], "monitor_windows", learning::kMonitorWindowsLimits);
+  o.learn_periods = flag(k["period_learning"], "period_learning");
+  o.learner.name = text(k["learner"], "learner");
+  const py::object options = k["learner_options"];
+  if (!options.is_none()) {
+    if (!PyDict_Check(options.ptr())) {
+      type_error("learner_options", "a dict of the learner's options", options);
+    }
+    o.learner.options = to_json(options, "learner_options");
+  }
+  try {
+    o.learner = learning::resolve_learner(o.learner);
+  } catch (const OptionError& e) {
+    value_error(learner_argument(e.key()), e.what());
+  }
+  o.annealing.beta = real(k["beta"], "beta", learning::kBetaLimits);
+  o.annealing.threshold_deg = real(k["threshold"], "threshold", learning::kThresholdLimits);
+  o.window_steps = whole(k["window"], "window", learning::kWindowStepsLimits);
+  if (!k["settle"].is_none()) {
+    o.settle_steps = whole(k["settle"], "settle", learning::kSettleStepsLimits);
+  }
+  o.annealing.max_trials = whole(k["max_trials"], "max_trials", learning::kMaxTrialsLimits);
+  o.seed = seed(k["seed"], "seed");
+  return o;
+}
+
+Params progress_params() {
+  return {{"progress", py::bool_(true)}};
+}
+
+experiments::RunSpec run_spec(const Robot& robot, sim::StartSpec start, sim::FaultTimeline faults,
+                              std::optional<learning::CompensationOptions> learning) {
+  experiments::RunSpec spec;
+  spec.robot = robot.kind;
+  spec.robot_file = robot.file;
+  spec.sim = robot.options;
+  spec.faults = std::move(faults);
+  if (learning) {
+    spec.start = experiments::learning_start(learning->mode);
+    spec.learning = std::move(learning);
+  } else {
+    spec.start = std::move(start);
+  }
+  try {
+    experiments::validate(spec);
+  } catch (const OptionError& e) {
+    value_error(argument_of(e.key()), e.what());
+  }
+  return spec;
+}
+
+}  // namespace multicpg::python

@@ -1,0 +1,40 @@
+// The argument descriptions the run-making calls share (python/keywords.h): the faults of a run
+// (Simulation, learn, tunnel), the learning options (learn, tunnel and multicpg.env, each
+// keyword listed once here) and how a call is watched; what each gives, and the whole run
+// checked as the CLI checks it.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <optional>
+
+#include "experiments/run_spec.h"
+#include "learning/compensation.h"
+#include "python/keywords.h"
+#include "python/robots.h"
+#include "sim/events.h"
+
+namespace multicpg::python {
+
+namespace py = pybind11;
+
+// disable, disable_at, faults, recoveries: what fails when (`disable` at `disable_at`, then
+// `faults` and `recoveries`, in step order).
+Params fault_params();
+sim::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k);
+
+// mode, learner, learner_options, steering, hold_windows, monitor_windows, period_learning,
+// beta, threshold, window, settle, max_trials, seed: the options of `multicpg learn`.
+Params learning_params();
+// The robust-mode ones among them: given with mode='paper', they are refused.
+Params robust_params();
+learning::CompensationOptions learning_options(const Keywords& k);
+
+// progress (True, False or a callable, python/watch.h).
+Params progress_params();
+
+// A run checked whole (experiments::validate); a bad value is a ValueError naming its argument.
+experiments::RunSpec run_spec(const Robot& robot, sim::StartSpec start, sim::FaultTimeline faults,
+                              std::optional<learning::CompensationOptions> learning);
+
+}  // namespace multicpg::python
