@@ -11,6 +11,7 @@
 #include "apps/learning_options.h"
 #include "apps/learning_output.h"
 #include "apps/options.h"
+#include "apps/plot_output.h"
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
@@ -33,6 +34,7 @@ struct LearnOptions {
   std::string out;
   hw::HardwareFlags hardware;  // learn on a real robot
   std::string replay;
+  std::string plot;
 };
 
 // trace.csv: the neutral columns, then the learner's own details (learning/learner.h).
@@ -68,6 +70,7 @@ void print_learning(const experiments::RunSpec& spec, const learning::LearningRe
 // signal stops keeps its record so far in --out and --json.
 void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& spec) {
   if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
+  if (!o.plot.empty()) throw BadInput("--plot draws the simulation; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
   const std::filesystem::path dir(o.out);
   std::optional<AtomicFile> steps;
@@ -121,6 +124,7 @@ void run_learn(const LearnOptions& o) {
   // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
   // only when the run has ended well (common/atomic_file.h).
   ReplayOutput replay(o.replay);
+  PlotOutput plot(o.plot);
   std::optional<AtomicFile> steps;
   std::optional<sim::RecordCsvWriter> rows;
   if (!o.out.empty()) {
@@ -139,7 +143,7 @@ void run_learn(const LearnOptions& o) {
     stream.emplace(std::cout, std::cerr, spec);
   }
   sim::Observers observers(
-      {rows ? &*rows : nullptr, replay.observer(), stream ? &*stream : nullptr});
+      {rows ? &*rows : nullptr, replay.observer(), plot.observer(), stream ? &*stream : nullptr});
   const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &observers);
   const learning::LearningResult& r = run.result;
   const nlohmann::json json = experiments::learn_json(spec, r);
@@ -150,6 +154,8 @@ void run_learn(const LearnOptions& o) {
     steps->commit();
   }
   replay.write();
+  plot.learning(r, spec.learning->annealing.threshold_deg);
+  plot.write();
   if (o.json) {
     std::cout << json.dump(2) << "\n";
     return;
@@ -157,6 +163,7 @@ void run_learn(const LearnOptions& o) {
   print_learning_end(std::cout, spec, r);
   if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
+  if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
 }
 
 }  // namespace
@@ -174,6 +181,7 @@ void register_learn(CLI::App& app) {
   cmd->add_option("--out", opts->out,
                   "directory for learning.json, trace.csv and steps.csv (the per-step record)");
   add_replay_flag(*cmd, opts->replay);
+  add_plot_flag(*cmd, opts->plot);
   cmd->callback([opts] { run_learn(*opts); });
 }
 

@@ -4,7 +4,6 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -65,23 +64,6 @@ bool trunk_touches_world(const sim::SimModel& model, const sim::SimState& state)
     if ((world(g1) && trunk(g2)) || (world(g2) && trunk(g1))) return true;
   }
   return false;
-}
-
-// Every model, every value, its unit and its source (robot/body_models.h).
-void print_models(std::ostream& out) {
-  for (robot::BodyModel m : robot::kBodyModels) {
-    out << robot::to_string(m) << (m == robot::kDefaultBodyModel ? " (default)" : "") << ": "
-        << robot::describe(m) << "\n";
-    const robot::BodyParams values = robot::body_params(m);
-    for (std::string_view key : robot::parameter_keys()) {
-      const std::string k(key);
-      const std::string shown =
-          robot::value_text(values, key) + " " + std::string(robot::value_unit(key));
-      out << "  " << std::left << std::setw(20) << k << std::setw(22) << shown << "  "
-          << robot::value_source(m, key) << "\n";
-    }
-    out << "\n";
-  }
 }
 
 // What the robot file says and whether its robot stands: exit 0 when it does, 1 when it falls or
@@ -147,7 +129,7 @@ void write_robot_files(const ModelOptions& o, robot::RobotKind kind, const std::
 
 void run_model(const ModelOptions& o) {
   if (o.list) {
-    print_models(std::cout);
+    std::cout << robot::body_models_listing();
     return;
   }
   if (!o.check.empty()) {

@@ -163,7 +163,8 @@ void rerun(const RerunOptions& o) {
 void register_run(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "run", "run an experiment file (TOML: scenarios, a grid of options, runs; README)");
+      "run",
+      "run an experiment file (TOML: scenarios, a grid of options, runs; docs/experiments.md)");
   cmd->add_option("FILE", o->file, "the experiment file (examples/*.toml)")->required();
   cmd->add_option("--out", o->out, "directory for the runs, tables and CSVs (resumes)");
   cmd->add_option("--jobs", o->jobs, "parallel runs (default: every core)")

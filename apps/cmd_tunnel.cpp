@@ -12,6 +12,7 @@
 #include "apps/learning_options.h"
 #include "apps/learning_output.h"
 #include "apps/options.h"
+#include "apps/plot_output.h"
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
@@ -31,6 +32,7 @@ struct TunnelOptions {
   long max_steps = experiments::kTunnelMaxSteps;
   std::string video;   // .mp4 to film the tunnel walk; empty = none
   std::string replay;  // .html of the tunnel walk; empty = none
+  std::string plot;    // .png of the tunnel walk; empty = none
   bool json = false;
   bool scale_tunnel = false;
   hw::HardwareFlags hardware;  // a real robot, in a real tunnel
@@ -43,6 +45,7 @@ struct TunnelOptions {
 void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& spec) {
   if (!o.video.empty()) throw BadInput("--video films the simulation; not with --hardware");
   if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
+  if (!o.plot.empty()) throw BadInput("--plot draws the simulation; not with --hardware");
   if (o.scale_tunnel)
     throw BadInput("--scale-tunnel scales the simulated tunnel; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
@@ -97,6 +100,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
     throw BadInput("--video must name an .mp4 file");
   }
   ReplayOutput replay(o.replay);
+  PlotOutput plot(o.plot);
   experiments::RunSpec spec = run_spec(o.run, o.learn);
   if (o.hardware.given() || o.hardware.lock_step) {
     run_tunnel_on_hardware(o, spec);
@@ -123,7 +127,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
           << " m x " << corridor.scene.tunnel_width << " m";
     observer.emplace(*film, label.str());
   }
-  sim::Observers observers({observer ? &*observer : nullptr, replay.observer()});
+  sim::Observers observers({observer ? &*observer : nullptr, replay.observer(), plot.observer()});
   // Learning streams its table as it goes (learn's, apps/learning_output.h); --json prints one
   // object at the end instead.
   std::optional<LearningStream> stream;
@@ -137,6 +141,9 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
       experiments::run_tunnel(spec, corridor, o.max_steps, &observers, stream ? &*stream : nullptr);
   if (film) film->finish();
   replay.write();
+  plot.tunnel(corridor.scene.tunnel_length, corridor.scene.tunnel_width);
+  if (out.learned) plot.learning(*out.learned, spec.learning->annealing.threshold_deg);
+  plot.write();
   const experiments::TunnelRun& run = out.run;
   if (o.json) {
     std::cout << experiments::tunnel_json(spec, out, scale).dump(2) << "\n";
@@ -170,6 +177,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
             << "° (+ = left)\n";
   if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
+  if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
 }
 
 }  // namespace
@@ -195,6 +203,7 @@ void register_tunnel(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
   add_replay_flag(*cmd, o->replay);
+  add_plot_flag(*cmd, o->plot);
   cmd->add_flag("--json", o->json, "print one JSON object");
   cmd->add_flag("--scale-tunnel", o->scale_tunnel,
                 "scale the tunnel's length and width by the robot's width (its feet's span at the "

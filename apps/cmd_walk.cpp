@@ -11,6 +11,7 @@
 #include "apps/flag_checks.h"
 #include "apps/hardware_flags.h"
 #include "apps/options.h"
+#include "apps/plot_output.h"
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
@@ -37,6 +38,7 @@ struct WalkOptions {
   long window = sim::kDefaultWindow;
   std::string csv;
   std::string replay;
+  std::string plot;
   bool json = false;
   hw::HardwareFlags hardware;  // walk a real robot
 };
@@ -120,6 +122,7 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
 // window, the path angle only where the robot senses its position.
 void run_walk_on_hardware(const WalkOptions& o, const experiments::RunSpec& spec) {
   if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
+  if (!o.plot.empty()) throw BadInput("--plot draws the simulation; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
   const robot::Morphology& morph = experiments::morphology(spec);
   std::optional<AtomicFile> csv;
@@ -190,17 +193,18 @@ void run_walk(const WalkOptions& o) {
   spec.settle = o.settle;
   spec.steps = o.steps;
   spec.window = o.window;
-  // Every step streams to the CSV as it is made (README: memory flat in the walk's length); the
-  // file takes its name only when the walk has ended well (common/atomic_file.h).
+  // Every step streams to the CSV as it is made (docs/cli.md: memory flat in the walk's length);
+  // the file takes its name only when the walk has ended well (common/atomic_file.h).
   spec.keep_record = false;
   ReplayOutput replay(o.replay);
+  PlotOutput plot(o.plot);
   std::optional<AtomicFile> csv;
   std::optional<sim::RecordCsvWriter> rows;
   if (!o.csv.empty()) {
     csv.emplace(o.csv);
     rows.emplace(csv->stream(), morph, o.csv);
   }
-  sim::Observers observers({rows ? &*rows : nullptr, replay.observer()});
+  sim::Observers observers({rows ? &*rows : nullptr, replay.observer(), plot.observer()});
   spec.observer = &observers;
 
   const sim::SimModel model = experiments::make_run_model(run_spec);
@@ -214,6 +218,7 @@ void run_walk(const WalkOptions& o) {
   }
   if (csv) csv->commit();
   replay.write();
+  plot.write();
   if (o.json) {
     nlohmann::json json = to_json(run, result);
     experiments::record_robot_file(json, run_spec);
@@ -221,6 +226,7 @@ void run_walk(const WalkOptions& o) {
   } else {
     print_summary(std::cout, run, result);
     if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
+    if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
   }
 }
 
@@ -247,6 +253,7 @@ void register_walk(CLI::App& app) {
                   "write every step: trunk position and yaw, each joint's command, target and "
                   "actual angle, each foot's contact");
   add_replay_flag(*cmd, opts->replay);
+  add_plot_flag(*cmd, opts->plot);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the summary");
   add_hardware_flags(*cmd, opts->hardware);
   cmd->callback([opts] { run_walk(*opts); });

@@ -7,16 +7,11 @@
 #include "report/replay/page.h"
 
 namespace multicpg::apps {
-namespace {
-
-// "multicpg learn --disable R1 ...": the command line with the program's name as users type it.
 std::string command_title() {
   const std::string line = provenance(mj_versionString()).at("command_line").get<std::string>();
   const std::size_t space = line.find(' ');
   return "multicpg" + (space == std::string::npos ? std::string() : line.substr(space));
 }
-
-}  // namespace
 
 void add_replay_flag(CLI::App& cmd, std::string& path) {
   cmd.add_option("--replay", path,

@@ -10,6 +10,10 @@
 
 namespace multicpg::apps {
 
+// "multicpg learn --disable R1 ...": the command line with the program's name as users type it
+// (the replay's and the --plot picture's title).
+std::string command_title();
+
 // Adds --replay, bound to `path`.
 void add_replay_flag(CLI::App& cmd, std::string& path);
 

@@ -1,8 +1,9 @@
-// SIGINT and SIGTERM stop a long command cleanly (README "Exit codes"): the handler only records
-// the signal (async-signal-safe); the stepping loop (sim::Stepper), the runner's task loop and the
-// waits for child processes look at it and throw Interrupted, which unwinds like any failure, so
-// temporary files are removed by their owners and saved runs stay for a resume; main exits
-// 128 + signal. A second signal ends the process at once (the default action is restored).
+// SIGINT and SIGTERM stop a long command cleanly (docs/cli.md "Exit codes and signals"): the
+// handler only records the signal (async-signal-safe); the stepping loop (sim::Stepper), the
+// runner's task loop and the waits for child processes look at it and throw Interrupted, which
+// unwinds like any failure, so temporary files are removed by their owners and saved runs stay for
+// a resume; main exits 128 + signal. A second signal ends the process at once (the default action
+// is restored).
 #pragma once
 
 #include "common/errors.h"

@@ -30,8 +30,8 @@ struct Limits {
 };
 
 // Seeds a user gives (--seed, an experiment's `seed`): the 32-bit range NumPy's seeds have, written
-// out the same in --help, errors and README. The seed each run of an experiment derives from it
-// and its name (experiments/runner.h) uses all 64 bits.
+// out the same in --help, errors and docs/cli.md. The seed each run of an experiment derives from
+// it and its name (experiments/runner.h) uses all 64 bits.
 inline constexpr Limits<std::uint64_t> kSeedLimits{0, 4'294'967'295};
 
 // Throws OptionError(key, "must be in lo..hi, got value") unless `limits` contains `value`

@@ -1,6 +1,6 @@
-// The bounds of an experiment (README "Experiment files"), in one place: an experiment file or
-// an in-memory document (Python) is measured against them before it is parsed further or any
-// run is allocated, so no file, however large, deep or wide, can crash the process or exhaust
+// The bounds of an experiment (docs/experiments.md "Experiment files"), in one place: an experiment
+// file or an in-memory document (Python) is measured against them before it is parsed further or
+// any run is allocated, so no file, however large, deep or wide, can crash the process or exhaust
 // its memory. Each is refused with one line naming what exceeds which limit (exit 2).
 #pragma once
 

@@ -1,9 +1,9 @@
-// libFuzzer target for experiment files (README "Experiment files"): TOML text read, bounded and
-// resolved as `multicpg run FILE --check` does (experiments::parse_experiment_text). Each input
-// must resolve or throw BadInput; anything else (another exception, a crash, a sanitizer report,
-// a stack overflow in the TOML parser) is a finding. It also checks the nesting scan against
-// toml++: text the scan passes must parse to a tree no deeper than the scan's limit, else the
-// scan under-counts and a deeper file could reach the parser's unbounded recursion.
+// libFuzzer target for experiment files (docs/experiments.md "Experiment files"): TOML text read,
+// bounded and resolved as `multicpg run FILE --check` does (experiments::parse_experiment_text).
+// Each input must resolve or throw BadInput; anything else (another exception, a crash, a sanitizer
+// report, a stack overflow in the TOML parser) is a finding. It also checks the nesting scan
+// against toml++: text the scan passes must parse to a tree no deeper than the scan's limit, else
+// the scan under-counts and a deeper file could reach the parser's unbounded recursion.
 #include <toml++/toml.h>
 
 #include <cstddef>

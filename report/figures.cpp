@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <system_error>
 
 #include "common/atomic_file.h"
@@ -173,6 +174,36 @@ std::string join(const std::vector<std::string>& words) {
   return out;
 }
 
+// The runs [start, end) of steps where table[step][leg] == value: one box per run draws without
+// seams.
+std::vector<std::pair<std::size_t, std::size_t>> runs_of(
+    const std::vector<std::vector<bool>>& table, std::size_t leg, bool value) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  std::size_t t = 0;
+  while (t < table.size()) {
+    if (table[t][leg] != value) {
+      ++t;
+      continue;
+    }
+    const std::size_t start = t;
+    while (t < table.size() && table[t][leg] == value) ++t;
+    runs.emplace_back(start, t);
+  }
+  return runs;
+}
+
+// E_ref of each trial: the deviation of the combination accepted so far (trial 0, the detection
+// window, is accepted by definition; docs/learning.md "Candidates").
+std::vector<double> reference_deviations(const std::vector<TrialPoint>& trials) {
+  std::vector<double> out;
+  double reference = trials.empty() ? 0.0 : trials.front().deviation_deg;
+  for (const TrialPoint& trial : trials) {
+    if (trial.accepted) reference = trial.deviation_deg;
+    out.push_back(reference);
+  }
+  return out;
+}
+
 // Gait names of paper §2.1 (docs/controller.md "Gaits").
 std::string gait_name(int period) {
   switch (period) {
@@ -218,7 +249,7 @@ FigureFiles plot_gait_diagrams(const std::vector<GaitPanel>& panels,
   require(!panels.empty(), info.name, "no gait panels");
   require_step(step_seconds, info.name);
   ensure_writable_dir(out_dir);
-  // Stance runs as intervals [start, end) in steps: one box per run draws without seams.
+  // Stance runs as intervals [start, end) in steps.
   Csv csv({"period", "leg", "row", "stance_start_step", "stance_end_step"});
   Params params;
   std::size_t steps = 0;
@@ -227,16 +258,9 @@ FigureFiles plot_gait_diagrams(const std::vector<GaitPanel>& panels,
     require_rows(panel.swing, legs, info.name);
     steps = std::max(steps, panel.swing.size());
     for (std::size_t leg = 0; leg < legs.size(); ++leg) {
-      std::size_t t = 0;
-      while (t < panel.swing.size()) {
-        if (panel.swing[t][leg]) {
-          ++t;
-          continue;
-        }
-        const std::size_t start = t;
-        while (t < panel.swing.size() && !panel.swing[t][leg]) ++t;
+      for (const auto& [start, end] : runs_of(panel.swing, leg, false)) {
         csv.row({std::to_string(panel.period), legs[leg], std::to_string(leg),
-                 std::to_string(start), std::to_string(t)});
+                 std::to_string(start), std::to_string(end)});
       }
     }
     const std::string gait = gait_name(panel.period);
@@ -282,11 +306,12 @@ FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
   std::vector<std::string> header{"trial", "deviation_deg", "accepted", "reference_deg", "change"};
   header.insert(header.end(), legs.begin(), legs.end());
   Csv csv(header);
-  // reference_deg: E_ref, the deviation of the combination accepted so far; change: the legs
-  // whose period differs from that combination (docs/learning.md "Candidates").
-  double reference = trials.front().deviation_deg;
+  // reference_deg: E_ref; change: the legs whose period differs from the combination accepted so
+  // far (docs/learning.md "Candidates").
+  const std::vector<double> references = reference_deviations(trials);
   std::vector<int> accepted = trials.front().periods;
-  for (const TrialPoint& trial : trials) {
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    const TrialPoint& trial = trials[i];
     require(trial.periods.size() == legs.size(), info.name,
             "trial " + std::to_string(trial.trial) + " has " +
                 std::to_string(trial.periods.size()) + " periods, expected " +
@@ -297,12 +322,9 @@ FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
       if (!change.empty()) change += ' ';
       change += legs[leg] + "=" + std::to_string(trial.periods[leg]);
     }
-    if (trial.accepted) {
-      reference = trial.deviation_deg;
-      accepted = trial.periods;
-    }
+    if (trial.accepted) accepted = trial.periods;
     std::vector<std::string> row{std::to_string(trial.trial), shortest(trial.deviation_deg),
-                                 trial.accepted ? "1" : "0", shortest(reference), change};
+                                 trial.accepted ? "1" : "0", shortest(references[i]), change};
     for (int p : trial.periods) row.push_back(std::to_string(p));
     csv.row(row);
   }
@@ -550,6 +572,115 @@ FigureFiles plot_calibration(const CalibrationMap& map, const fs::path& out_dir,
       .num("nx", static_cast<double>(map.numbers.size()))
       .num("ny", static_cast<double>(map.params.size()));
   return draw(info, out_dir, stem, csv, params);
+}
+
+namespace {
+
+// The run picture's size: wide enough for the tunnel's 3 m beside its key; one panel taller
+// with the learning trace.
+constexpr int kPictureWidth = 1100;
+constexpr int kPictureHeight = 850;
+constexpr int kPictureTraceHeight = 400;
+// Points of the trunk path drawn at most: a long run is thinned evenly (its last point kept),
+// so gnuplot reads a small file whatever the run's length.
+constexpr std::size_t kPicturePathPoints = 4000;
+
+// A folder of its own under the system's temporary folder, removed with everything in it.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "multicpg-plot-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) {
+      throw RuntimeFailure("cannot make a temporary folder for the plot's data under " +
+                           fs::temp_directory_path().string());
+    }
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+}  // namespace
+
+void check_run_picture_path(const fs::path& png) {
+  if (png.extension() != ".png") {
+    throw BadInput("cannot plot to '" + png.string() + "': the file type must be .png");
+  }
+  require_writable_file(png);
+}
+
+void plot_run_picture(const RunPicture& picture, const fs::path& png) {
+  constexpr std::string_view name = "run picture";
+  check_run_picture_path(png);
+  require(!picture.path.empty(), name, "no trunk path");
+  require(picture.trials.empty() || picture.threshold_deg > 0.0, name,
+          "threshold must be positive");
+  require_rows(picture.contact, picture.legs, name);
+  const TempDir data;
+
+  Csv path({"series", "x_m", "y_m"});
+  const std::size_t stride = (picture.path.size() + kPicturePathPoints - 1) / kPicturePathPoints;
+  for (std::size_t i = 0; i < picture.path.size(); ++i) {
+    if (i % stride != 0 && i + 1 != picture.path.size()) continue;
+    path.row({"path", shortest(picture.path[i].x), shortest(picture.path[i].y)});
+  }
+  path.gap();
+  const auto block = [&path](const std::string& series, const std::vector<Point2>& points) {
+    for (const Point2& p : points) path.row({series, shortest(p.x), shortest(p.y)});
+    path.gap();
+  };
+  for (const auto& wall : picture.walls) block("wall", wall);
+  if (!picture.course.empty()) block("course", picture.course);
+  write_file_atomic(data.path() / "path.csv", path.text());
+
+  Csv trace({"trial", "deviation_deg", "accepted", "reference_deg"});
+  const std::vector<double> references = reference_deviations(picture.trials);
+  for (std::size_t i = 0; i < picture.trials.size(); ++i) {
+    const TrialPoint& t = picture.trials[i];
+    trace.row({std::to_string(t.trial), shortest(t.deviation_deg), t.accepted ? "1" : "0",
+               shortest(references[i])});
+  }
+  write_file_atomic(data.path() / "trace.csv", trace.text());
+
+  Csv gait({"leg", "row", "stance_start_step", "stance_end_step"});
+  const long first = picture.first_contact_step;
+  for (std::size_t leg = 0; leg < picture.legs.size(); ++leg) {
+    for (const auto& [start, end] : runs_of(picture.contact, leg, true)) {
+      gait.row({picture.legs[leg], std::to_string(leg),
+                std::to_string(first + static_cast<long>(start)),
+                std::to_string(first + static_cast<long>(end))});
+    }
+  }
+  write_file_atomic(data.path() / "gait.csv", gait.text());
+
+  const fs::path dir = scripts_dir();
+  Params params;
+  params.text("dir", (dir / "").string())
+      .text("path", (data.path() / "path.csv").string())
+      .text("trace", (data.path() / "trace.csv").string())
+      .text("gait", (data.path() / "gait.csv").string())
+      .text("title", picture.title)
+      .num("has_walls", picture.walls.empty() ? 0 : 1)
+      .num("has_course", picture.course.empty() ? 0 : 1)
+      .num("has_trace", picture.trials.empty() ? 0 : 1)
+      .num("threshold", picture.threshold_deg)
+      .text("legs", join(picture.legs))
+      .num("first_step", static_cast<double>(first))
+      .num("last_step", static_cast<double>(first + static_cast<long>(picture.contact.size())));
+  const int height = kPictureHeight + (picture.trials.empty() ? 0 : kPictureTraceHeight);
+  run_gnuplot(dir / "run_picture.gp",
+              "set terminal pngcairo size " + std::to_string(kPictureWidth) + "," +
+                  std::to_string(height) + " enhanced font " + gp_string(kFont) +
+                  " background rgb 'white'",
+              params, png);
 }
 
 }  // namespace multicpg::report

@@ -181,4 +181,25 @@ struct CalibrationMap {
 FigureFiles plot_calibration(const CalibrationMap& map, const std::filesystem::path& out_dir,
                              std::string_view stem = {});
 
+// `walk`, `learn` and `tunnel --plot FILE.png`: one picture of one run, drawn on the spot. The
+// trunk's path seen from above (with the tunnel's walls and its axis, the course the robot should
+// hold, where there is a tunnel), the learning trace when the run learned (Fig. 8's form), and a
+// gait strip: the feet's contact over the run's last steps (blue = stance, Fig. 2's colours).
+struct RunPicture {
+  std::string title;  // e.g. the command line
+  std::vector<Point2> path;
+  std::vector<std::vector<Point2>> walls;
+  std::vector<Point2> course;
+  std::vector<TrialPoint> trials;  // empty: no learning panel; `trial` is the x position
+  double threshold_deg = 0.0;      // the learning panel's threshold line
+  std::vector<std::string> legs;
+  std::vector<std::vector<bool>> contact;  // [step][leg], true = the foot touches the ground
+  long first_contact_step = 0;             // the run's step of contact[0]
+};
+// Throws BadInput (one line, naming the path) unless `png` ends in .png and can be created.
+void check_run_picture_path(const std::filesystem::path& png);
+// Writes the picture to `png` alone (whole or not at all); the data gnuplot reads live in a
+// temporary folder removed afterwards. Errors as the figures above.
+void plot_run_picture(const RunPicture& picture, const std::filesystem::path& png);
+
 }  // namespace multicpg::report

@@ -41,6 +41,8 @@ table { border-collapse: collapse; margin: 1em 0; font-size: .9em; }
 th, td { border: 1px solid #ccc; padding: .25em .5em; text-align: right; }
 th.left, td.left { text-align: left; }
 .missing { color: #b00; font-weight: bold; }
+.reused { background: #fdf6e3; padding: .5em .8em; border-left: 4px solid #c9a227; }
+td.yes { background: #e3f2dc; } td.partly { background: #fdf1d6; } td.no { background: #f8dcdc; }
 nav a { margin-right: 1em; }
 </style>)";
 
@@ -53,7 +55,39 @@ std::string sibling(const std::string& png, const char* ext) {
   return std::filesystem::path(png).replace_extension(ext).string();
 }
 
+// The verdict table: one row per claim, linked to the section that shows it.
+std::string verdict_table(const std::vector<Section>& sections) {
+  std::ostringstream out;
+  out << "<h2 id=\"verdicts\">What reproduced</h2>\n<table class=\"verdicts\">\n<tr><th "
+         "class=\"left\">claim</th><th class=\"left\">paper</th><th class=\"left\">ours</th>"
+         "<th class=\"left\">reproduced</th><th class=\"left\">section</th></tr>\n";
+  for (const Section& s : sections) {
+    for (const Verdict& v : s.verdicts) {
+      const std::string word(to_string(v.reproduced));
+      out << "<tr><td class=\"left\">" << html_escape(v.claim) << "</td><td class=\"left\">"
+          << html_escape(v.paper) << "</td><td class=\"left\">" << html_escape(v.ours)
+          << "</td><td class=\"left " << word << "\">" << word
+          << "</td><td class=\"left\"><a href=\"#" << html_escape(s.id) << "\">"
+          << html_escape(s.title) << "</a></td></tr>\n";
+    }
+  }
+  out << "</table>\n";
+  return out.str();
+}
+
 }  // namespace
+
+std::string_view to_string(Reproduced r) {
+  switch (r) {
+    case Reproduced::yes:
+      return "yes";
+    case Reproduced::partly:
+      return "partly";
+    case Reproduced::no:
+      return "no";
+  }
+  return "";
+}
 
 nlohmann::json to_json(const Section& s) {
   nlohmann::json tables = nlohmann::json::array();
@@ -64,9 +98,17 @@ nlohmann::json to_json(const Section& s) {
     }
     tables.push_back({{"columns", columns}, {"rows", t.rows}});
   }
-  return {{"id", s.id},          {"title", s.title},   {"paper", s.paper}, {"measured", s.measured},
-          {"images", s.images},  {"videos", s.videos}, {"files", s.files}, {"tables", tables},
-          {"replays", s.replays}};
+  nlohmann::json verdicts = nlohmann::json::array();
+  for (const Verdict& v : s.verdicts) {
+    verdicts.push_back({{"claim", v.claim},
+                        {"paper", v.paper},
+                        {"ours", v.ours},
+                        {"reproduced", std::string(to_string(v.reproduced))}});
+  }
+  return {
+      {"id", s.id},           {"title", s.title},     {"paper", s.paper},  {"measured", s.measured},
+      {"images", s.images},   {"videos", s.videos},   {"files", s.files},  {"tables", tables},
+      {"replays", s.replays}, {"verdicts", verdicts}, {"reused", s.reused}};
 }
 
 Section section_from_json(const nlohmann::json& j) {
@@ -88,6 +130,15 @@ Section section_from_json(const nlohmann::json& j) {
     s.tables.push_back(std::move(table));
   }
   s.replays = j.value("replays", std::vector<std::string>{});
+  for (const nlohmann::json& v : j.value("verdicts", nlohmann::json::array())) {
+    const std::string word = v.at("reproduced").get<std::string>();
+    const Reproduced r = word == "yes"      ? Reproduced::yes
+                         : word == "partly" ? Reproduced::partly
+                                            : Reproduced::no;
+    s.verdicts.push_back({v.at("claim").get<std::string>(), v.at("paper").get<std::string>(),
+                          v.at("ours").get<std::string>(), r});
+  }
+  s.reused = j.value("reused", std::string());
   return s;
 }
 
@@ -97,7 +148,8 @@ std::string index_html(const std::string& title, const std::string& intro,
   out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
       << html_escape(title) << "</title>\n"
       << kStyle << "\n</head>\n<body>\n<h1>" << html_escape(title) << "</h1>\n<p>"
-      << html_escape(intro) << "</p>\n<nav>";
+      << html_escape(intro) << "</p>\n"
+      << verdict_table(sections) << "<nav>";
   for (const Section& s : sections) {
     out << "<a href=\"#" << html_escape(s.id) << "\">" << html_escape(s.title) << "</a> ";
   }
@@ -106,6 +158,10 @@ std::string index_html(const std::string& title, const std::string& intro,
     out << "<section id=\"" << html_escape(s.id) << "\">\n<h2>" << html_escape(s.title)
         << "</h2>\n<p class=\"paper\"><b>The paper:</b> " << html_escape(s.paper)
         << "</p>\n<p class=\"ours\"><b>We measured:</b> " << html_escape(s.measured) << "</p>\n";
+    if (!s.reused.empty()) {
+      out << "<p class=\"reused\"><b>Reuses committed data, not computed by this run:</b> "
+          << html_escape(s.reused) << "</p>\n";
+    }
     for (const Table& t : s.tables) out << to_html(t);
     for (const std::string& png : s.images) {
       out << "<figure><img src=\"" << html_escape(png) << "\" alt=\"" << html_escape(s.title)

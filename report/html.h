@@ -4,11 +4,25 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/table.h"
 
 namespace multicpg::report {
+
+// Whether a claim of the paper came out the same in our runs.
+enum class Reproduced { yes, partly, no };
+std::string_view to_string(Reproduced r);
+
+// One row of the verdict table that opens the report: a claim of the paper, the paper's number
+// (experiments/paper.h), ours from this run's data, and the verdict by the rule `claim` states.
+struct Verdict {
+  std::string claim;
+  std::string paper;
+  std::string ours;
+  Reproduced reproduced = Reproduced::no;
+};
 
 // One part of the report, e.g. "Gaits (paper Fig. 2)". Paths are relative to index.html.
 struct Section {
@@ -22,13 +36,19 @@ struct Section {
   std::vector<Table> tables;
   // 3D replays (HTML, docs/replay.md), linked beside the video of the same name.
   std::vector<std::string> replays = {};
+  // The section's rows of the verdict table (linked to the section).
+  std::vector<Verdict> verdicts = {};
+  // Data committed to the repository the section draws instead of computing it in this run
+  // (e.g. a calibration that takes hours); empty when the run computed everything it shows.
+  std::string reused = {};
 };
 
 nlohmann::json to_json(const Section& section);
 Section section_from_json(const nlohmann::json& j);
 
-// The whole page. It checks on load that every image and video loaded, marks any that did not
-// in red, and sets <body data-media="ok"> or "broken:<files>" (read by the browser test).
+// The whole page: the verdict table of every section's verdicts first, then the sections. It checks
+// on load that every image and video loaded, marks any that did not in red, and sets <body
+// data-media="ok"> or "broken:<files>" (read by the browser test).
 std::string index_html(const std::string& title, const std::string& intro,
                        const std::vector<Section>& sections);
 

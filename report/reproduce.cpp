@@ -178,10 +178,14 @@ class Reproduction {
            (o_.sim.model == robot::kDefaultBodyModel
                 ? ""
                 : " with the body model " + std::string(robot::to_string(o_.sim.model))) +
-           (o_.quick ? " (quick run: one learning run per scenario and per β, faster videos)"
+           (o_.quick ? " (quick run: " + counted(ctx_.sizes.hexapod_runs, "learning run") +
+                           " per scenario and " + std::to_string(ctx_.sizes.beta_runs) +
+                           " per β, faster videos)"
                      : "") +
-           ". Each section says what the paper reports and what we measured; every figure has "
-           "its SVG and the CSV behind it. Tables of the experiments: results.md.";
+           ". The verdict table first: each claim of the paper, its number, ours, whether it "
+           "reproduced (by the rule the claim states) and the section that shows it. Each "
+           "section says what the paper reports and what we measured; every figure has its SVG "
+           "and the CSV behind it. Tables of the experiments: results.md.";
   }
 
   static double seconds_since(std::chrono::steady_clock::time_point t) {

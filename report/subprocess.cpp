@@ -87,7 +87,7 @@ void kill_and_reap(pid_t pid) {
 }
 
 // How often a wait looks whether a signal asked this process to stop: well under the second
-// within which SIGINT and SIGTERM must end a command (README "Exit codes").
+// within which SIGINT and SIGTERM must end a command (docs/cli.md "Exit codes and signals").
 constexpr auto kWaitPoll = std::chrono::milliseconds(10);
 
 // The child's wait status; when SIGINT or SIGTERM asks this process to stop while it waits, the

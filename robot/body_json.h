@@ -45,15 +45,35 @@ inline void from_json(const nlohmann::json& j, BodyModel& model) {
 // a posture as TC,CTr,FTi, leg postures as their JSON objects ("none" when there are none).
 inline std::string value_text(const BodyParams& params, std::string_view key) {
   const nlohmann::json v = nlohmann::json(params).at(std::string(key));
-  const auto number = [](const nlohmann::json& n) { return fmt::format("{:.6g}", n.get<double>()); };
+  const auto number = [](const nlohmann::json& n) {
+    return fmt::format("{:.6g}", n.get<double>());
+  };
   if (v.is_array()) {
     if (v.empty()) return "none";
     std::string out;
     for (const nlohmann::json& e : v) out += (out.empty() ? "" : "; ") + e.dump();
     return out;
   }
-  if (v.is_object()) return number(v.at("tc")) + "," + number(v.at("ctr")) + "," + number(v.at("fti"));
+  if (v.is_object())
+    return number(v.at("tc")) + "," + number(v.at("ctr")) + "," + number(v.at("fti"));
   return number(v);
+}
+
+// `multicpg model --list`: every named model, what it is, and each value with its unit and
+// source. The report's calibration section shows the same text (report/stages/calibration.cpp).
+inline std::string body_models_listing() {
+  std::string out;
+  for (BodyModel m : kBodyModels) {
+    out += fmt::format("{}{}: {}\n", to_string(m), m == kDefaultBodyModel ? " (default)" : "",
+                       describe(m));
+    const BodyParams values = body_params(m);
+    for (std::string_view key : parameter_keys()) {
+      const std::string shown = value_text(values, key) + " " + std::string(value_unit(key));
+      out += fmt::format("  {:<20}{:<22}  {}\n", key, shown, value_source(m, key));
+    }
+    out += "\n";
+  }
+  return out;
 }
 
 }  // namespace multicpg::robot

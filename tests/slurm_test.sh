@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Slurm path of README "On a cluster (Slurm)": a one-node Slurm on 127.0.0.1 (scripts/slurm-local.sh) runs a sweep
+# The Slurm path of docs/experiments.md "On a cluster (Slurm)": a one-node Slurm on 127.0.0.1 (scripts/slurm-local.sh) runs a sweep
 # through both scripts of examples/slurm/ with `sbatch --wait`: the MPI job on 2 ranks, and a job
 # array of 3 shards merged by a job that depends on it. Each must give the files of a plain
 # `--jobs 1` run byte for byte. A job that fails must fail its sbatch. Every daemon is stopped on

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "tests/cli_runner.h"
@@ -83,6 +84,53 @@ TEST(CliFigure, DrawsNamedFiguresAndRejectsUnknownNames) {
   EXPECT_TRUE(fs::exists(fs::path(dir) / "figures/fig06-cpg-sync.csv"));
   expect_bad_input("figure fig99 --out " + dir, "known: gait");
   expect_bad_input("figure gait --out /proc/multicpg-out", "/proc/multicpg-out");
+  fs::remove_all(dir);
+}
+
+// The report's calibration section says what `model --list` says: models.txt is its output, the
+// section's text quotes its line on real, the table's values and sources are its lines, and the
+// candidate it names as real is the one docs/fidelity.md names. It says it reuses committed data.
+TEST(CliReproduce, CalibrationTextIsModelList) {
+  const auto list = run_cli("model --list");
+  ASSERT_EQ(list.exit_code, 0) << list.err;
+  const std::string dir = make_temp_dir("calibration-");
+  const auto r = run_cli("figure calibration --out " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_file(dir + "/calibration/models.txt"), list.out);
+
+  const nlohmann::json section =
+      nlohmann::json::parse(read_file(dir + "/sections/calibration.json"));
+  const std::string measured = section.at("measured").get<std::string>();
+  // model --list: "real: <what it is>", then one line per parameter; a blank line ends the block.
+  const std::size_t real_at = list.out.find("\nreal: ");
+  ASSERT_NE(real_at, std::string::npos) << list.out;
+  const std::size_t line_end = list.out.find('\n', real_at + 1);
+  const std::string describe = list.out.substr(real_at + 7, line_end - real_at - 7);
+  EXPECT_NE(measured.find("\"" + describe + "\""), std::string::npos) << measured;
+  const std::string real_block =
+      list.out.substr(line_end, list.out.find("\n\n", line_end) - line_end);
+  const auto& rows = section.at("tables").at(0).at("rows");
+  ASSERT_FALSE(rows.empty());
+  for (const auto& row : rows) {
+    const std::string key = row.at(0).get<std::string>();
+    const std::size_t at = real_block.find("\n  " + key + " ");
+    ASSERT_NE(at, std::string::npos) << key;
+    const std::string line = real_block.substr(at + 1, real_block.find('\n', at + 1) - at - 1);
+    EXPECT_NE(line.find(row.at(3).get<std::string>()), std::string::npos) << line;
+    EXPECT_NE(line.find(row.at(4).get<std::string>()), std::string::npos) << line;
+  }
+  const std::string named = "The model real is candidate ";
+  const std::size_t id_at = measured.find(named);
+  ASSERT_NE(id_at, std::string::npos) << measured;
+  const std::size_t id_begin = id_at + named.size();
+  const std::string id = measured.substr(id_begin, measured.find(' ', id_begin) - id_begin);
+  EXPECT_NE(read_file(std::string(MULTICPG_SOURCE_DIR) + "/docs/fidelity.md").find("(" + id + ","),
+            std::string::npos)
+      << id;
+  EXPECT_NE(section.at("reused").get<std::string>().find("docs/calibration"), std::string::npos);
+  const std::string index = read_file(dir + "/index.html");
+  EXPECT_NE(index.find("Reuses committed data"), std::string::npos);
+  EXPECT_NE(index.find("What reproduced"), std::string::npos);
   fs::remove_all(dir);
 }
 

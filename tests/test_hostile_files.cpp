@@ -1,7 +1,7 @@
-// Hostile experiment files through the real CLI (README "Experiment files"): every file below is
-// generated here, the giants included (200,000 levels of tables, dotted keys, lists and inline
-// tables; grids of 2*10^9 runs and more; lists of millions of values; /dev/zero, a FIFO, a
-// symlink loop, a directory), and `multicpg run FILE --check` must refuse each with exit 2,
+// Hostile experiment files through the real CLI (docs/experiments.md "Experiment files"): every
+// file below is generated here, the giants included (200,000 levels of tables, dotted keys, lists
+// and inline tables; grids of 2*10^9 runs and more; lists of millions of values; /dev/zero, a FIFO,
+// a symlink loop, a directory), and `multicpg run FILE --check` must refuse each with exit 2,
 // exactly one line on stderr naming the file and what is wrong, and nothing on stdout. A guard
 // of a few seconds catches a hang; nothing here measures speed.
 #include <gtest/gtest.h>

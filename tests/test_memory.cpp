@@ -1,5 +1,5 @@
-// Memory that does not grow with the run (README: `walk --csv` streams its rows): a walk of 10^8
-// steps writing its CSV keeps a flat peak resident memory (VmHWM) between a few seconds and
+// Memory that does not grow with the run (docs/cli.md: `walk --csv` streams its rows): a walk of
+// 10^8 steps writing its CSV keeps a flat peak resident memory (VmHWM) between a few seconds and
 // three times as long, as the rows go to the file and nothing per step stays in memory.
 #include <gtest/gtest.h>
 #include <signal.h>

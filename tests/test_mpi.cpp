@@ -23,8 +23,8 @@ const std::string kExperiment =
     "experiment table --robot quadruped --runs 2 --max-trials 2 --seed 3 ";
 
 #ifdef MULTICPG_MPI
-// mpirun with the root permission (CI runs as root) and its help banners off (-q), as the README
-// tells users; extra processes share the 2 cores (--oversubscribe).
+// mpirun with the root permission (CI runs as root) and its help banners off (-q), as
+// docs/experiments.md tells users; extra processes share the 2 cores (--oversubscribe).
 std::string mpirun(int processes, const std::string& program = MULTICPG_EXE) {
   return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " MULTICPG_MPIEXEC
          " -q --oversubscribe -np " +

@@ -63,6 +63,20 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
         << stem;
   }
 
+  // The verdict table opens the report, each row linked to its section; Table 1's angles are
+  // signed on both sides (the paper's before-learning ones to the right, negative).
+  const std::size_t verdicts = index.find("What reproduced");
+  ASSERT_NE(verdicts, std::string::npos);
+  EXPECT_LT(verdicts, index.find("<section"));
+  const std::string table = index.substr(verdicts, index.find("</table>", verdicts) - verdicts);
+  for (const char* section :
+       {"learning-r1", "hexapod-table", "quadruped-table", "beta", "tunnel"}) {
+    EXPECT_NE(table.find("<a href=\"#" + std::string(section) + "\">"), std::string::npos)
+        << section;
+  }
+  EXPECT_NE(index.find("hit the right wall, ≈-42°"), std::string::npos);
+  EXPECT_EQ(index.find("° right"), std::string::npos);
+
   std::string log;
   const std::string dom = open_in_chromium(root / "index.html", log);
   EXPECT_NE(dom.find("data-media=\"ok\""), std::string::npos)

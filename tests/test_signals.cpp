@@ -1,7 +1,7 @@
-// SIGINT and SIGTERM during long commands, through the real CLI (README "Exit codes"): the
-// command stops with 130 or 143 and one line, leaves no file under its final name that is
-// incomplete (and no temporary file behind), and an experiment started again resumes from the
-// runs it saved. The waits are hang guards of several seconds, not timing claims.
+// SIGINT and SIGTERM during long commands, through the real CLI (docs/cli.md "Exit codes and
+// signals"): the command stops with 130 or 143 and one line, leaves no file under its final name
+// that is incomplete (and no temporary file behind), and an experiment started again resumes from
+// the runs it saved. The waits are hang guards of several seconds, not timing claims.
 #include <gtest/gtest.h>
 #include <signal.h>
 

@@ -1,6 +1,6 @@
-// SIGTERM and SIGINT during `render` (README "Exit codes"): the video stops with 143 or 130 and
-// one line, no MP4 appears under its name, its temporary file is gone and no ffmpeg is left
-// running. Needs rendering (EGL or OSMesa), so outside the sanitizer job's fast tests.
+// SIGTERM and SIGINT during `render` (docs/cli.md "Exit codes and signals"): the video stops with
+// 143 or 130 and one line, no MP4 appears under its name, its temporary file is gone and no ffmpeg
+// is left running. Needs rendering (EGL or OSMesa), so outside the sanitizer job's fast tests.
 #include <gtest/gtest.h>
 #include <signal.h>
 

@@ -84,7 +84,7 @@ control_dt = [0.037, 0.074]
   // "all": every set of 1-3 legs up to mirror, as experiments::mirror_scenarios.
   write(file, "scenarios = \"all\"\nruns = 1\n");
   EXPECT_NE(run_cli("run " + file + " --check").out.find("24 runs"), std::string::npos);
-  // A fault timeline is a scenario too (README: Experiment files).
+  // A fault timeline is a scenario too (docs/experiments.md "Experiment files").
   write(file, R"(scenarios = ["R1", {name = "R1-then-L2", faults = [
   {step = 0, legs = ["R1"]}, {step = 8000, legs = ["L2"]}, {step = 16000, legs = "R1", recover = true}]}]
 runs = 2

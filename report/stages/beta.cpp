@@ -20,20 +20,28 @@ Section beta_stage(const StageContext& ctx) {
   }
   const experiments::Scenario scenario = experiments::beta_study_scenario();
   const FigureFiles f = plot_beta_study(bars, scenario.name, ctx.dir("figures"));
-  return {"beta",
-          "Influence of β (Fig. 14)",
-          "R1 and R2 disabled, " + std::to_string(experiments::kBetaRuns) +
-              " runs per β: β = 0 (random search) needs the most trials; the search shortens as "
-              "β grows; a large β (greedy) can get stuck above " +
-              fixed(experiments::paper::kThresholdDeg, 0) + "°.",
-          counted(t.rows.empty() ? 0 : t.rows.front().runs, "run") + " per β, at most " +
-              std::to_string(ctx.sizes.beta_max_trials) +
-              " trials each; the most trials on average at β = " +
-              (most ? most->group + " (" + fixed(most->trials.mean, 1) + ")" : "-") + ".",
-          {ctx.image(f)},
-          {},
-          {"experiments/beta/table.csv", "experiments/beta/table.md"},
-          {experiments::beta_table(t.rows)}};
+  const bool random_most = most != nullptr && std::stod(most->group) == 0.0;
+  Section section{
+      "beta",
+      "Influence of β (Fig. 14)",
+      "R1 and R2 disabled, " + std::to_string(experiments::kBetaRuns) +
+          " runs per β: β = 0 (random search) needs the most trials; the search shortens as "
+          "β grows; a large β (greedy) can get stuck above " +
+          fixed(experiments::paper::kThresholdDeg, 0) + "°.",
+      counted(t.rows.empty() ? 0 : t.rows.front().runs, "run") + " per β, at most " +
+          std::to_string(ctx.sizes.beta_max_trials) +
+          " trials each; the most trials on average at β = " +
+          (most ? most->group + " (" + fixed(most->trials.mean, 1) + ")" : "-") + ".",
+      {ctx.image(f)},
+      {},
+      {"experiments/beta/table.csv", "experiments/beta/table.md"},
+      {experiments::beta_table(t.rows)}};
+  section.verdicts = {
+      {"β = 0 (random search) needs the most trials (Fig. 14)", "β = 0 the most",
+       most ? "the most at β = " + most->group + " (" + fixed(most->trials.mean, 1) + " on average)"
+            : "-",
+       random_most ? Reproduced::yes : Reproduced::no}};
+  return section;
 }
 
 }  // namespace multicpg::report

@@ -37,19 +37,29 @@ Section cpg_sync_stage(const StageContext& ctx) {
   bool identical = true;
   for (const auto& p : synced) identical = identical && p.client_x1 == p.master_x1;
   const FigureFiles f = plot_cpg_sync(synced, free, kMaster, kClient, ctx.dir("figures"));
-  return {"cpg-sync",
-          "Master and client CPG in and out of synchrony (Fig. 6)",
-          "Master period 5, client period 6: synchronised, the client's output is the "
+  const int client_orbit = experiments::orbit_period(client, neural::kMaxPeriod, kOrbitSamples);
+  Section section{
+      "cpg-sync",
+      "Master and client CPG in and out of synchrony (Fig. 6)",
+      "Master period " + std::to_string(kMaster) + ", client period " + std::to_string(kClient) +
+          ": synchronised, the client's output is the "
           "master's; desynchronised, each oscillates with its own period.",
-          std::string("Synchronised (α = 1): client x1 ") +
-              (identical ? "identical to the master's bit for bit" : "NOT identical") +
-              ". Desynchronised: the client settles to a period-" +
-              std::to_string(experiments::orbit_period(client, neural::kMaxPeriod, kOrbitSamples)) +
-              " orbit, the master to period 5.",
-          {ctx.image(f)},
-          {},
-          {},
-          {}};
+      std::string("Synchronised (α = 1): client x1 ") +
+          (identical ? "identical to the master's bit for bit" : "NOT identical") +
+          ". Desynchronised: the client settles to a period-" + std::to_string(client_orbit) +
+          " orbit, the master to period " + std::to_string(kMaster) + ".",
+      {ctx.image(f)},
+      {},
+      {},
+      {}};
+  section.verdicts = {
+      {"Synchronised, the client's output is the master's (Fig. 6, Eq. 5)", "client = master",
+       identical ? "identical bit for bit" : "not identical",
+       identical ? Reproduced::yes : Reproduced::no},
+      {"Desynchronised, the client oscillates with its own period (Fig. 6)",
+       "period " + std::to_string(kClient), "period " + std::to_string(client_orbit),
+       client_orbit == kClient ? Reproduced::yes : Reproduced::no}};
+  return section;
 }
 
 }  // namespace multicpg::report

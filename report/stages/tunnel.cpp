@@ -50,6 +50,15 @@ sim::SimModel corridor_model(const sim::SimOptions& options) {
   return sim::make_sim_model(robot::RobotKind::hexapod, with_tunnel);
 }
 
+// The paper's angles signed as ours (+ = left): before learning the real robot deviated right
+// (§5), so negative; Table 1 does not say to which side the learned periods erred, so ±.
+std::string papers_before_text(const paper::TunnelResult& sc) {
+  return fixed(paper::signed_before_deg(sc), 0) + "°";
+}
+std::string papers_after_text(const paper::TunnelResult& sc) {
+  return "±" + fixed(sc.after_deg, 2) + "°";
+}
+
 // "passed, -5.1°", "wall at 0.82 m, -21.1°", "too slow, -3.0°".
 std::string outcome_text(const experiments::TunnelRun& t) {
   const std::string angle = fixed(t.deviation_deg, 1) + "°";
@@ -126,8 +135,8 @@ BodyScenario walk_body_scenario(const StageContext& ctx, const Body& body,
 }
 
 std::string learned_text(const robot::Morphology& morph, const experiments::TunnelOutcome& o) {
-  std::string text = outcome_text(o.run) + " (" +
-                     robot::period_map_text(morph, o.periods, o.disabled);
+  std::string text =
+      outcome_text(o.run) + " (" + robot::period_map_text(morph, o.periods, o.disabled);
   if (o.learned) {
     text += o.learned->steering ? " + reflex" : "";
     text += ", " + counted(o.learned->trials, "trial");
@@ -137,8 +146,9 @@ std::string learned_text(const robot::Morphology& morph, const experiments::Tunn
 
 Table side_by_side_table(const std::vector<Body>& bodies,
                          const std::vector<std::vector<BodyScenario>>& results) {
-  Table table{{{"disabled", Align::left}, {"row", Align::left}, {"real AMOSII (paper §5)", Align::left}},
-              {}};
+  Table table{
+      {{"disabled", Align::left}, {"row", Align::left}, {"real AMOSII (paper §5)", Align::left}},
+      {}};
   for (const Body& b : bodies) table.columns.push_back({b.name, Align::left});
   const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
   for (std::size_t s = 0; s < paper::kTunnel.size(); ++s) {
@@ -149,10 +159,10 @@ Table side_by_side_table(const std::vector<Body>& bodies,
       for (std::size_t b = 0; b < bodies.size(); ++b) cells.push_back(cell(results[b][s]));
       table.add_row(std::move(cells));
     };
-    row("before learning (all periods 4)", "hit the right wall, ≈" + fixed(sc.before_deg, 0) + "° right",
+    row("before learning (all periods 4)", "hit the right wall, ≈" + papers_before_text(sc),
         [](const BodyScenario& r) { return outcome_text(r.before); });
     row("the paper's periods " + paper::combination_text(sc.learned),
-        "passed, ≈" + fixed(sc.after_deg, 2) + "°",
+        "passed, ≈" + papers_after_text(sc),
         [](const BodyScenario& r) { return outcome_text(r.papers); });
     row("periods-alone learning (tunnel --learn --steering off)",
         "the row above: learned in the paper's simulator",
@@ -168,7 +178,7 @@ Table side_by_side_table(const std::vector<Body>& bodies,
 struct Variant {
   std::string source;
   std::vector<int> periods;
-  double paper_deg;
+  std::string paper;  // the paper's angle, signed as ours
   bool filmed;
   std::vector<Point2>* path;  // where its trunk path is drawn, if anywhere
 };
@@ -189,14 +199,14 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
   ScenarioOutput out;
   TrunkPaths paths;
   std::vector<Variant> variants{{"all 4", std::vector<int>(morph.size(), learning::kStartPeriod),
-                                 sc.before_deg, true, &paths.before}};
+                                 papers_before_text(sc), true, &paths.before}};
   if (!learned.empty()) {
     variants.push_back({"our learning",
                         robot::parse_period_map(morph, learned, learning::kStartPeriod),
-                        sc.after_deg, true, &paths.after});
+                        papers_after_text(sc), true, &paths.after});
   }
   variants.push_back(
-      {"the paper's learning", papers_periods(morph, sc), sc.after_deg, false, nullptr});
+      {"the paper's learning", papers_periods(morph, sc), papers_after_text(sc), false, nullptr});
   for (const Variant& v : variants) {
     const std::filesystem::path video =
         ctx.dir("videos") /
@@ -226,7 +236,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
     out.rows.push_back({name, robot::period_map_text(morph, v.periods, disabled), v.source,
                         fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
                         t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
-                        "≈" + fixed(v.paper_deg, 2)});
+                        "≈" + v.paper});
     if (v.path == nullptr) continue;
     for (std::size_t i = 0; i < t.record.rows(); ++i) {
       v.path->push_back({t.record.x[i], t.record.y[i]});
@@ -296,41 +306,71 @@ Section tunnel_stage(const StageContext& ctx) {
     const bool last = &sc == &paper::kTunnel.back();
     const std::string sep = last ? "" : ", ";
     scenarios += std::string(sc.disabled) + sep;
-    paper_before += fixed(sc.before_deg, 0) + "°" + sep;
-    paper_after += fixed(sc.after_deg, 2) + "°" + sep;
+    paper_before += papers_before_text(sc) + sep;
+    paper_after += papers_after_text(sc) + sep;
   }
   std::string own = "this run's body";
-  for (const Body& b : bodies) {
-    if (nlohmann::json(b.sim) == nlohmann::json(ctx.options.sim)) own = b.name;
+  std::size_t own_index = bodies.size() - 1;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (nlohmann::json(bodies[b].sim) == nlohmann::json(ctx.options.sim)) {
+      own = bodies[b].name;
+      own_index = b;
+    }
   }
-  return {"tunnel",
-          "The tunnel (Table 1)",
-          "Tunnel " + fixed(corridor.scene.tunnel_length, 1) + " m × " +
-              fixed(corridor.scene.tunnel_width, 1) + " m, the real AMOSII. Disabled " +
-              scenarios + " with all periods 4: the robot deviated right and hit the wall (≈" +
-              paper_before + "); with the periods learned in the paper's simulator (periods " +
-              "alone, no reflex) it passed (≈" + paper_after + ").",
-          "First table: Table 1 on the real robot beside our two bodies, paper-sim (the paper's "
-          "simulator) and real (calibrated against the real robot's before-learning column, "
-          "docs/fidelity.md), deviation = atan(lateral / forward) of the trunk from the entrance "
-          "to the end or to the wall it touched, + = left. \"Periods-alone learning\" learns "
-          "with --mode robust --steering off (--max-trials " +
-              std::to_string(ctx.sizes.periods_alone_max_trials) + " per episode, at most " +
-              counted(ctx.sizes.periods_alone_max_episodes, "episode") +
-              ") in the open field from a walking robot and walks the learned periods through "
-              "the tunnel; \"robust learning\" learns with --mode robust (yaw and path, held "
-              "windows, the steering reflex) and walks the periods with the reflex; seed " +
-              std::to_string(ctx.options.seed) +
-              ". Second table, on " + own +
-              ": rows \"our learning\" walk the most frequent combination the hexapod table "
-              "learned for the scenario (experiments/hexapod) on open ground, rows \"the "
-              "paper's learning\" replay the paper's combinations; films and paths of all 4 "
-              "and of our learning.",
-          images,
-          films,
-          {},
-          {side_by_side_table(bodies, results), detail},
-          replays};
+  std::vector<Verdict> verdicts;
+  for (std::size_t i = 0; i < paper::kTunnel.size(); ++i) {
+    const paper::TunnelResult& sc = paper::kTunnel[i];
+    const BodyScenario& r = results[own_index][i];
+    const std::string name(sc.disabled);
+    verdicts.push_back(
+        {"Tunnel, " + name +
+             " disabled, all periods 4: the robot deviates right and hits the wall "
+             "(§5; yes = it touched a wall turning right, on " +
+             own + ")",
+         "hit the right wall, " + papers_before_text(sc), outcome_text(r.before),
+         r.before.touched_wall && r.before.deviation_deg < 0.0
+             ? Reproduced::yes
+             : (r.before.deviation_deg < 0.0 ? Reproduced::partly : Reproduced::no)});
+    verdicts.push_back({"Tunnel, " + name + " disabled, the paper's learned periods " +
+                            paper::combination_text(sc.learned) +
+                            ": the robot passes (Table 1, on " + own + ")",
+                        "passed, " + papers_after_text(sc), outcome_text(r.papers),
+                        r.papers.passed ? Reproduced::yes : Reproduced::no});
+  }
+  Section section{
+      "tunnel",
+      "The tunnel (Table 1)",
+      "Tunnel " + fixed(corridor.scene.tunnel_length, 1) + " m × " +
+          fixed(corridor.scene.tunnel_width, 1) + " m, the real AMOSII. Disabled " + scenarios +
+          " with all periods 4: the robot deviated right and hit the wall (≈" + paper_before +
+          "); with the periods learned in the paper's simulator (periods " +
+          "alone, no reflex) it passed (≈" + paper_after + ").",
+      "First table: Table 1 on the real robot beside our two bodies, paper-sim (the paper's "
+      "simulator) and real (calibrated against the real robot's before-learning column, "
+      "docs/fidelity.md), deviation = atan(lateral / forward) of the trunk from the entrance "
+      "to the end or to the wall it touched, + = left. \"Periods-alone learning\" learns "
+      "with --mode robust --steering off (--max-trials " +
+          std::to_string(ctx.sizes.periods_alone_max_trials) + " per episode, at most " +
+          counted(ctx.sizes.periods_alone_max_episodes, "episode") +
+          ") in the open field from a walking robot and walks the learned periods through "
+          "the tunnel; \"robust learning\" learns with --mode robust (yaw and path, held "
+          "windows, the steering reflex) and walks the periods with the reflex; seed " +
+          std::to_string(ctx.options.seed) +
+          ". Angles are signed on both sides, + = left: the paper's before-learning angles "
+          "are negative because §5 says the robot deviated to the right; Table 1 does not say "
+          "to which side the learned periods erred, so those are shown ±. Second table, on " +
+          own +
+          ": rows \"our learning\" walk the most frequent combination the hexapod table "
+          "learned for the scenario (experiments/hexapod) on open ground, rows \"the "
+          "paper's learning\" replay the paper's combinations; films and paths of all 4 "
+          "and of our learning.",
+      images,
+      films,
+      {},
+      {side_by_side_table(bodies, results), detail},
+      replays};
+  section.verdicts = std::move(verdicts);
+  return section;
 }
 
 }  // namespace multicpg::report

@@ -1,0 +1,67 @@
+# `walk`, `learn` and `tunnel --plot FILE.png` (report/figures.h, RunPicture): the trunk's path
+# seen from above, with the tunnel's walls and its axis (the course) where there is a tunnel; the
+# learning trace when the run learned (as Fig. 8); a gait strip of the last steps (Fig. 2's
+# colours: blue = stance, the foot on the ground).
+# Variables: path (series = path | wall | course, x_m, y_m; blocks separated by blank lines),
+# has_walls, has_course, trace (trial, deviation_deg, accepted, reference_deg), has_trace,
+# threshold (degrees), gait (leg, row, stance_start_step, stance_end_step), legs (names,
+# space-separated, top to bottom), first_step, last_step, title.
+load dir.'common.gp'
+panels = has_trace ? 3 : 2
+set multiplot layout panels, 1 title title font ',12' noenhanced
+
+# The trunk's path, equal scales on both axes.
+set size ratio -1
+set offsets graph 0.03, graph 0.03, graph 0.08, graph 0.08
+set xlabel 'x (m)'
+set ylabel 'y (m, + = left)'
+set title 'Trunk path seen from above'
+set key outside right top box opaque font ',10'
+is(s) = strcol('series') eq s
+if (has_walls) {
+  plot path using (is('wall') ? column('x_m') : NaN):'y_m' with lines lw 4 lc rgb 'black' title 'tunnel wall', \
+       path using (has_course && is('course') ? column('x_m') : NaN):'y_m' with lines lw 1.5 dt 2 lc rgb grey title 'course (tunnel axis)', \
+       path using (is('path') ? column('x_m') : NaN):'y_m' with lines lw 2.5 lc rgb blue title 'trunk', \
+       path using (is('path') ? column('x_m') : NaN):'y_m' every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'start'
+} else {
+  plot path using (is('path') ? column('x_m') : NaN):'y_m' with lines lw 2.5 lc rgb blue title 'trunk', \
+       path using (is('path') ? column('x_m') : NaN):'y_m' every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'start'
+}
+
+# The learning trace: each trial's deviation, kept or rejected, E_ref and the threshold.
+set size noratio
+set offsets 0.5, 0.5, graph 0.1, graph 0.05
+if (has_trace) {
+  max_labelled_trials = 30
+  stats trace using 'trial' nooutput
+  if (STATS_max <= max_labelled_trials) { set xtics 1 }
+  set yrange [0:*]
+  set xlabel 'trial (0 = detection window)'
+  set ylabel 'deviation (degrees)'
+  set title 'Learning trace'
+  plot threshold with lines lw 2 dt 2 lc rgb 'black' title sprintf('threshold %g°', threshold), \
+       trace using 'trial':'reference_deg' with steps lw 2 lc rgb grey title 'E_{ref} (kept combination)', \
+       trace using 'trial':(column('accepted') == 1 ? column('deviation_deg') : NaN) with points pt 7 ps 1.3 lc rgb green title 'kept', \
+       trace using 'trial':(column('accepted') == 0 ? column('deviation_deg') : NaN) with points pt 2 ps 1.5 lw 2 lc rgb red title 'rejected'
+}
+
+# The gait strip: one row per leg, a blue box while its foot touches the ground.
+set offsets 0, 0, 0, 0
+set xtics autofreq
+set autoscale y
+nlegs = words(legs)
+half_height = 0.38
+set xrange [first_step:last_step]
+set yrange [-0.6:nlegs - 0.4]
+set ytics scale 0 ()
+do for [k=1:nlegs] { set ytics add (word(legs, k) nlegs - k) }
+unset grid
+set key off
+set xlabel 'controller step'
+set ylabel ''
+set title 'Gait strip: foot contact over the last steps (blue = stance, white = swing)'
+y(row) = nlegs - 1 - row
+plot gait using ((column('stance_start_step') + column('stance_end_step')) / 2.0):(y(column('row'))):\
+  (column('stance_start_step')):(column('stance_end_step')):\
+  (y(column('row')) - half_height):(y(column('row')) + half_height) with boxxyerror fc rgb blue
+unset multiplot
