@@ -5,7 +5,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 
 #include "apps/commands.h"
@@ -17,7 +16,7 @@
 #include "experiments/learner_benchmark.h"
 #include "experiments/runner.h"
 #include "learning/landscapes.h"
-#include "report/figures.h"
+#include "report/benchmark_figure.h"
 #include "robot/leg_sets.h"
 
 namespace multicpg::apps {
@@ -25,7 +24,7 @@ namespace {
 
 struct BenchmarkOptions {
   std::string dataset;  // empty: the repository's hexapod dataset
-  std::vector<std::string> learners{"annealing", "random", "greedy", "bayes", "prior"};
+  std::vector<std::string> learners = experiments::kBenchmarkLearners;
   std::vector<std::string> learner_options;  // LEARNER.KEY=VALUE
   std::vector<std::string> scenarios;
   int seeds = experiments::kDefaultBenchmarkSeeds;
@@ -39,17 +38,14 @@ struct BenchmarkOptions {
 };
 
 void run(const BenchmarkOptions& o) {
-  experiments::LearnerBenchmarkSpec spec;
-  spec.dataset = o.dataset.empty()
-                     ? learning::repository_dataset(robot::RobotKind::hexapod).string()
-                     : o.dataset;
+  experiments::LearnerBenchmarkSpec spec = experiments::benchmark_spec(
+      o.dataset.empty() ? learning::repository_dataset(robot::RobotKind::hexapod)
+                        : std::filesystem::path(o.dataset));
+  const learning::LandscapeDataset probe = learning::read_landscape_dataset(spec.dataset);
+  const robot::Morphology& morph = robot::morphology(probe.robot);
   spec.seeds = o.seeds;
   spec.seed = o.seed;
   spec.budget = o.budget;
-  const learning::LandscapeDataset probe = learning::read_landscape_dataset(spec.dataset);
-  const robot::Morphology& morph = robot::morphology(probe.robot);
-  spec.search.period_set = probe.period_set;
-  spec.search.threshold_deg = probe.threshold_deg;
   spec.search.max_trials = o.max_trials;
   const learning::Mode mode = learning::parse_mode(o.mode);
   spec.protocol.yaw_only = mode == learning::Mode::paper;
@@ -78,13 +74,7 @@ void run(const BenchmarkOptions& o) {
     choice.name = name;
     if (given.count(name)) choice.options = given.at(name);
     try {
-      learning::LearnerChoice resolved = learning::resolve_learner(choice);
-      // A learner that learns from landscapes learns from the other scenarios of this dataset.
-      if (resolved.options.contains("dataset") && !choice.options.contains("dataset")) {
-        choice.options["dataset"] = spec.dataset;
-        resolved = learning::resolve_learner(choice);
-      }
-      spec.learners.push_back(resolved);
+      spec.learners.push_back(experiments::resolve_benchmark_learner(choice, spec.dataset));
     } catch (const OptionError& e) {
       throw BadInput("--learners: " + name + ": " + e.key() + " " + std::string(e.what()));
     }
@@ -97,24 +87,8 @@ void run(const BenchmarkOptions& o) {
       experiments::run_learner_benchmark(spec, o.jobs.value_or(experiments::default_jobs()));
   experiments::write_learner_benchmark(b, o.out);
 
+  report::draw_learner_benchmark(b, o.out);
   const nlohmann::json summary = experiments::benchmark_summary(b);
-  std::vector<report::LearnerScore> scores;
-  const auto optional_number = [](const nlohmann::json& v) {
-    return v.is_null() ? std::nullopt : std::optional<double>(v.get<double>());
-  };
-  for (const nlohmann::json& l : summary.at("learners")) {
-    scores.push_back({l.at("learner").at("name").get<std::string>(), l.at("share_held"),
-                      l.at("share_low"), l.at("share_high"), optional_number(l.at("q1_trials")),
-                      optional_number(l.at("median_trials")), optional_number(l.at("q3_trials"))});
-  }
-  std::set<std::string> holding;
-  for (const experiments::BenchmarkCell& c : b.cells) {
-    if (c.holding > 0) holding.insert(c.scenario);
-  }
-  report::plot_learner_benchmark(scores,
-                                 {std::string(robot::to_string(b.dataset.robot)), spec.budget,
-                                  static_cast<int>(holding.size()), spec.seeds},
-                                 o.out);
   std::cout << morph.name << ", " << b.cells.size() / spec.learners.size() << " scenarios x "
             << spec.seeds << " seeds, " << o.mode << " trials, held within " << spec.budget
             << " trials (scenarios where a combination holds):\n";
@@ -181,8 +155,9 @@ void register_learner_benchmark(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--jobs", o->jobs, "threads (default: every core)")
       ->check(in(experiments::kJobsLimits));
-  cmd->add_option("--out", o->out,
-                  "directory for benchmark.{csv,md}, benchmark-figure.{png,svg,csv}, runs.csv, summary.json")
+  cmd->add_option(
+         "--out", o->out,
+         "directory for benchmark.{csv,md}, benchmark-figure.{png,svg,csv}, runs.csv, summary.json")
       ->required();
   cmd->callback([o] { run(*o); });
 }

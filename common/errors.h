@@ -1,7 +1,7 @@
 // Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1, Interrupted ->
-// 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/cli.md "Exit codes and signals"). Every message is
-// made printable (common/user_text.h): text the user typed that holds a NUL, newline or escape
-// sequence is shown escaped, on one line, whole.
+// 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/cli.md "Exit codes and signals"). Every
+// message is made printable (common/user_text.h): text the user typed that holds a NUL, newline or
+// escape sequence is shown escaped, on one line, whole.
 #pragma once
 
 #include <stdexcept>

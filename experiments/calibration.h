@@ -165,8 +165,8 @@ struct Calibration {
 // Runs the search in OUT: OUT/design and one directory per compass round, each a runner
 // experiment (resumable; a resume with another spec is refused naming the key), then writes
 // OUT/candidates.csv, OUT/candidates.json (calibration_json) and OUT/summary.json.
-Calibration run_calibration(const CalibrationSpec& spec, const std::filesystem::path& out,
-                            int jobs, bool progress);
+Calibration run_calibration(const CalibrationSpec& spec, const std::filesystem::path& out, int jobs,
+                            bool progress);
 
 // What every stage's runner records (and a resume must match).
 nlohmann::json calibration_arguments(const CalibrationSpec& spec);

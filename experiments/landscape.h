@@ -99,12 +99,12 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
 // each in OUT/<scenario> as run_landscape does (resumable), then the dataset of them all in
 // OUT/landscapes.{csv.gz,json} (learning/landscapes.h).
 std::vector<Landscape> run_landscape_set(const std::vector<LandscapeSpec>& specs,
-                                         const std::filesystem::path& out, int jobs,
-                                         bool progress);
+                                         const std::filesystem::path& out, int jobs, bool progress);
 // The landscapes as one dataset (learning/landscapes.h), in the order given.
 learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& landscapes);
 // OUT/<scenario> of one landscape of a set.
-std::filesystem::path landscape_set_dir(const std::filesystem::path& out, const LandscapeSpec& spec);
+std::filesystem::path landscape_set_dir(const std::filesystem::path& out,
+                                        const LandscapeSpec& spec);
 // The stem of a set's dataset files: OUT/landscapes.
 std::filesystem::path landscape_set_dataset(const std::filesystem::path& out);
 

@@ -43,8 +43,7 @@ std::optional<double> quantile(std::vector<double> values, std::size_t missing, 
 }
 
 BenchmarkCell score(const learning::ScenarioLandscape& s, const std::string& name,
-                    const std::string& learner, std::vector<learning::ReplayRun> runs,
-                    int budget) {
+                    const std::string& learner, std::vector<learning::ReplayRun> runs, int budget) {
   BenchmarkCell c;
   c.scenario = name;
   c.learner = learner;
@@ -60,7 +59,7 @@ BenchmarkCell score(const learning::ScenarioLandscape& s, const std::string& nam
     c.deviated += r.deviated ? 1 : 0;
     // A start that never deviated holds in its first window, but counts as held only if it
     // holds in truth (then it needed no trial).
-    const std::optional<int> at = r.deviated ? r.held_at
+    const std::optional<int> at = r.deviated       ? r.held_at
                                   : r.answer_holds ? std::optional<int>(0)
                                                    : std::nullopt;
     if (at && *at <= budget) ++c.held_within;
@@ -147,10 +146,10 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
 Table benchmark_table(const LearnerBenchmark& b) {
   Table t;
   for (const char* c : {"scenario", "learner"}) t.columns.push_back({c, Align::left});
-  for (const char* c : {"combinations", "holding", "runs", "held_within_budget", "share_held",
-                        "share_low", "share_high", "q1_trials", "median_trials", "q3_trials",
-                        "false_stops", "mean_trials", "mean_gap_deg", "random_expected_trials",
-                        "oracle_trials"}) {
+  for (const char* c :
+       {"combinations", "holding", "runs", "held_within_budget", "share_held", "share_low",
+        "share_high", "q1_trials", "median_trials", "q3_trials", "false_stops", "mean_trials",
+        "mean_gap_deg", "random_expected_trials", "oracle_trials"}) {
     t.columns.push_back({c});
   }
   for (const BenchmarkCell& c : b.cells) {
@@ -185,6 +184,25 @@ Table benchmark_runs_table(const LearnerBenchmark& b) {
   return t;
 }
 
+LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& dataset) {
+  const learning::LandscapeDataset probe = learning::read_landscape_dataset(dataset);
+  LearnerBenchmarkSpec spec;
+  spec.dataset = dataset;
+  spec.search.period_set = probe.period_set;
+  spec.search.threshold_deg = probe.threshold_deg;
+  return spec;
+}
+
+learning::LearnerChoice resolve_benchmark_learner(learning::LearnerChoice asked,
+                                                  const std::filesystem::path& dataset) {
+  learning::LearnerChoice resolved = learning::resolve_learner(asked);
+  if (resolved.options.contains("dataset") && !asked.options.contains("dataset")) {
+    asked.options["dataset"] = dataset.string();
+    resolved = learning::resolve_learner(asked);
+  }
+  return resolved;
+}
+
 nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
   const LearnerBenchmarkSpec& s = b.spec;
   nlohmann::json learners = nlohmann::json::array();
@@ -203,7 +221,7 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
       false_stops += c.false_stops;
       worst_share = std::min(worst_share, c.share_held);
       for (const learning::ReplayRun& r : c.run_list) {
-        const std::optional<int> at = r.deviated ? r.held_at
+        const std::optional<int> at = r.deviated       ? r.held_at
                                       : r.answer_holds ? std::optional<int>(0)
                                                        : std::nullopt;
         if (at) {

@@ -26,7 +26,7 @@ inline constexpr Limits<int> kBenchmarkSeedsLimits{1, 100'000};
 inline constexpr Limits<int> kBenchmarkBudgetLimits{1, 100'000};
 
 struct LearnerBenchmarkSpec {
-  std::filesystem::path dataset;  // learning/landscapes.h
+  std::filesystem::path dataset;                  // learning/landscapes.h
   std::vector<learning::LearnerChoice> learners;  // resolved
   int seeds = kDefaultBenchmarkSeeds;
   std::uint64_t seed = 1;  // run k of a scenario has seed derive_seed(seed, "<scenario>#k")
@@ -43,18 +43,18 @@ struct BenchmarkCell {
   std::size_t combinations = 0;
   std::size_t holding = 0;  // in the landscape
   int runs = 0;
-  int deviated = 0;           // runs whose start deviated (the others never learn)
-  int held_within = 0;        // stopped, held, on a holding combination within the budget
-  double share_held = 0.0;    // held_within / runs
-  double share_low = 0.0;     // its 95% Wilson interval
+  int deviated = 0;         // runs whose start deviated (the others never learn)
+  int held_within = 0;      // stopped, held, on a holding combination within the budget
+  double share_held = 0.0;  // held_within / runs
+  double share_low = 0.0;   // its 95% Wilson interval
   double share_high = 0.0;
   // Quartiles of the trials to a held combination over all runs (a run that never held counts
   // as more than any); empty where more than that share of runs never held.
   std::optional<double> q1, median, q3;
   int false_stops = 0;
-  double mean_trials = 0.0;         // over the runs, however they ended
-  double mean_gap_deg = 0.0;        // answer's worst deviation minus the landscape's best
-  std::optional<double> random_expected;  // (N + 1) / (K + 1), none when nothing holds
+  double mean_trials = 0.0;                   // over the runs, however they ended
+  double mean_gap_deg = 0.0;                  // answer's worst deviation minus the landscape's best
+  std::optional<double> random_expected;      // (N + 1) / (K + 1), none when nothing holds
   std::vector<learning::ReplayRun> run_list;  // each seed's run
 };
 
@@ -64,6 +64,19 @@ struct LearnerBenchmark {
   std::vector<BenchmarkCell> cells;  // scenario by scenario, each learner in spec order
   double seconds = 0.0;              // wall time of the replays
 };
+
+// The learners the benchmark replays unless told otherwise: the paper's and every other one.
+inline const std::vector<std::string> kBenchmarkLearners{"annealing", "random", "greedy", "bayes",
+                                                         "prior"};
+
+// A spec for the dataset at `dataset`: its period set and threshold, the default protocol and
+// no learner yet. Throws BadInput for an unreadable dataset.
+LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& dataset);
+// `asked` resolved for a benchmark over `dataset`: a learner that learns from landscapes and is
+// not told which learns from the other scenarios of this dataset. Throws OptionError as
+// learning::resolve_learner does.
+learning::LearnerChoice resolve_benchmark_learner(learning::LearnerChoice asked,
+                                                  const std::filesystem::path& dataset);
 
 // Throws BadInput for an unreadable dataset, an unknown scenario, or search bounds that do not
 // fit it. Runs on `jobs` threads; the results do not depend on them.

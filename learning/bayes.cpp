@@ -14,8 +14,7 @@ nlohmann::json bayes_options(const nlohmann::json& asked) {
 }
 
 std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::json& options) {
-  return std::make_unique<ModelLearner>(setup,
-                                        model_learner_params(options.get<ModelOptions>()));
+  return std::make_unique<ModelLearner>(setup, model_learner_params(options.get<ModelOptions>()));
 }
 
 }  // namespace multicpg::learning

@@ -64,8 +64,8 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
     return scenario.points[point].window_error(window, protocol.yaw_only);
   };
   const auto measure = [&](std::size_t point) {
-    const std::vector<std::size_t> order = drawn_windows(
-        seed, point, visits[point]++, static_cast<std::size_t>(dataset.windows));
+    const std::vector<std::size_t> order =
+        drawn_windows(seed, point, visits[point]++, static_cast<std::size_t>(dataset.windows));
     Measurement m;
     const int windows = protocol.yaw_only ? 1 : protocol.hold_windows;
     for (int w = 0; w < windows; ++w) {
@@ -89,9 +89,8 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
     return run;
   };
   // Detection: one window (paper §3 step 2; robust mode judges its windows one at a time).
-  const std::size_t first = drawn_windows(seed, *c0, visits[*c0]++,
-                                          static_cast<std::size_t>(dataset.windows))
-                                .front();
+  const std::size_t first =
+      drawn_windows(seed, *c0, visits[*c0]++, static_cast<std::size_t>(dataset.windows)).front();
   const double e0 = window_error(*c0, first);
   if (sim::holds(e0, search.threshold_deg)) return finish({start, e0});
   run.deviated = true;
@@ -101,7 +100,8 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   setup.start = start;
   setup.fixed = scenario.failed;
   setup.start_deviation_deg = e0;
-  setup.start_windows = {{scenario.points[*c0].yaw_deg[first], scenario.points[*c0].path_deg[first]}};
+  setup.start_windows = {
+      {scenario.points[*c0].yaw_deg[first], scenario.points[*c0].path_deg[first]}};
   setup.yaw_only = protocol.yaw_only;
   setup.search = search;
   setup.seed = mix(seed ^ kLearnerStream);

@@ -316,10 +316,10 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
 
   // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
-  const std::unique_ptr<Learner> learner = make_learner(
-      options.learner,
-      learner_setup(walker, options, result.periods,
-                    sim::failing_legs(walker.faults().timeline()), {detecting}, e, options.seed));
+  const std::unique_ptr<Learner> learner =
+      make_learner(options.learner, learner_setup(walker, options, result.periods,
+                                                  sim::failing_legs(walker.faults().timeline()),
+                                                  {detecting}, e, options.seed));
   Budget budget(options.step_budget);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {
@@ -469,10 +469,9 @@ class RobustRun {
     neural::set_synchronised(walker_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
-    const std::unique_ptr<Learner> learner =
-        make_learner(options_.learner, learner_setup(walker_, options_, periods(),
-                                                     walk_.failed_now(), {detecting},
-                                                     detection_deg, seed));
+    const std::unique_ptr<Learner> learner = make_learner(
+        options_.learner, learner_setup(walker_, options_, periods(), walk_.failed_now(),
+                                        {detecting}, detection_deg, seed));
     walk_.take_fault_count();
     EpisodeHooks hooks;
     hooks.measure = [&](int trial, const Periods& candidate) {
@@ -505,9 +504,9 @@ class RobustRun {
     result_.steps_walked = walk_.walked();
     result_.steering_effort = walk_.effort();
     result_.steering = walk_.steering();
-    const bool held =
-        std::all_of(result_.final_windows.begin(), result_.final_windows.end(),
-                    [&](const sim::WindowMeasure& m) { return sim::holds(error(m), params_.threshold_deg); });
+    const bool held = std::all_of(
+        result_.final_windows.begin(), result_.final_windows.end(),
+        [&](const sim::WindowMeasure& m) { return sim::holds(error(m), params_.threshold_deg); });
     if (result_.episodes.empty()) {
       result_.outcome = held ? Outcome::no_deviation : Outcome::not_converged;
       if (!result_.final_windows.empty()) {
@@ -637,7 +636,9 @@ LearningResult result_from_json(const nlohmann::json& j, const robot::Morphology
     }
     r.final_windows = j.at("final_windows").get<std::vector<sim::WindowMeasure>>();
     r.steering_effort = j.at("steering_effort").get<double>();
-    for (const nlohmann::json& t : j.at("trace")) {
+    // An experiment may record its runs without their trace ([record] trace = false,
+    // docs/experiments.md): such a result reads with an empty trace.
+    for (const nlohmann::json& t : j.value("trace", nlohmann::json::array())) {
       nlohmann::json details = t;
       for (const char* neutral : {"trial", "periods", "deviation_deg", "accepted"}) {
         details.erase(neutral);

@@ -131,8 +131,8 @@ long start_settle_steps(const CompensationOptions& options, const neural::Contro
 double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window);
 
 // Throws OptionError (key "annealing.beta", "window_steps", "learner.name", ...; one line) for a
-// value outside its limits or an unknown learner or learner option. Paper mode ignores the robust-mode options (hold, monitor and max episodes,
-// learn_periods, steering).
+// value outside its limits or an unknown learner or learner option. Paper mode ignores the
+// robust-mode options (hold, monitor and max episodes, learn_periods, steering).
 void validate(const CompensationOptions& options);
 
 // Throws OptionError (key "mode") for a fault timeline these options cannot learn with: paper

@@ -37,12 +37,13 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SteeringState, course, offset_integral_m_step
 // there were other learners reads back as the annealing, byte for byte): the type macro's own
 // field expansion (NLOHMANN_JSON_PASTE, as NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT uses
 // it) for every other field, then the learner.
-#define MULTICPG_COMPENSATION_FIELDS                                                         \
+#define MULTICPG_COMPENSATION_FIELDS                                                             \
   mode, annealing, window_steps, settle_steps, detection_windows, hold_windows, monitor_windows, \
       max_episodes, step_budget, learn_periods, steering, steering_params, seed
 inline void to_json(nlohmann::json& nlohmann_json_j, const CompensationOptions& nlohmann_json_t) {
   NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, MULTICPG_COMPENSATION_FIELDS))
-  if (nlohmann_json_t.learner != LearnerChoice{}) nlohmann_json_j["learner"] = nlohmann_json_t.learner;
+  if (nlohmann_json_t.learner != LearnerChoice{})
+    nlohmann_json_j["learner"] = nlohmann_json_t.learner;
 }
 inline void from_json(const nlohmann::json& nlohmann_json_j, CompensationOptions& nlohmann_json_t) {
   const CompensationOptions nlohmann_json_default_obj;

@@ -6,8 +6,8 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <string>
 #include <random>
+#include <string>
 #include <string_view>
 #include <vector>
 

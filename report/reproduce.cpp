@@ -18,6 +18,7 @@
 #include "common/errors.h"
 #include "common/table.h"
 #include "experiments/landscape.h"
+#include "experiments/learner_benchmark.h"
 #include "experiments/results_page.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
@@ -41,7 +42,8 @@ constexpr Sizes kFull{experiments::kScenarioRuns,
                       experiments::kDefaultLandscapeWindows,
                       {},
                       kPeriodsAloneMaxTrials,
-                      learning::kDefaultMaxEpisodes};
+                      learning::kDefaultMaxEpisodes,
+                      experiments::kDefaultBenchmarkSeeds};
 // The quick landscape: 27 of the 125 combinations (the fastest and the two slowest gaits), two
 // windows each, so that it adds seconds, not a minute.
 constexpr std::array<int, 3> kQuickLandscapePeriods{4, 8, 9};
@@ -52,6 +54,8 @@ constexpr int kQuickBetaMaxTrials = learning::kDefaultMaxTrials / 2;
 // of 20, a minute of CPU for a scenario that never holds).
 constexpr int kQuickPeriodsAloneTrials = 10;
 constexpr int kQuickPeriodsAloneEpisodes = 1;
+// The quick learner benchmark: 10 seeds per scenario and learner (the full one: 100), seconds.
+constexpr int kQuickBenchmarkSeeds = 10;
 constexpr Sizes kQuick{1,
                        1,
                        1,
@@ -62,7 +66,8 @@ constexpr Sizes kQuick{1,
                        2,
                        kQuickLandscapePeriods,
                        kQuickPeriodsAloneTrials,
-                       kQuickPeriodsAloneEpisodes};
+                       kQuickPeriodsAloneEpisodes,
+                       kQuickBenchmarkSeeds};
 
 // The stages asked for and every stage they need, in the table's (the report's) order.
 std::vector<const Stage*> selected(const std::vector<std::string>& only) {

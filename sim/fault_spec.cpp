@@ -79,8 +79,8 @@ Fault parse_fault(const robot::Morphology& morph, std::string_view text, bool re
 }
 
 std::string malfunction_text(const robot::Morphology& morph, const Fault& fault) {
-  std::string out = fault.legs.empty() ? std::string(kSensorTarget)
-                                       : robot::leg_set_name(morph, fault.legs);
+  std::string out =
+      fault.legs.empty() ? std::string(kSensorTarget) : robot::leg_set_name(morph, fault.legs);
   if (fault.joint) {
     out += '.';
     out += robot::to_string(*fault.joint);

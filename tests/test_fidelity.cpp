@@ -1,6 +1,6 @@
 // Physics fidelity: cheaper MuJoCo settings must walk the same robot. The baselines
-// are what the hexapod did before the contact rework changed the physics (explicit ground contact pairs,
-// sparse constraint Jacobians), measured with exactly the specs below:
+// are what the hexapod did before the contact rework changed the physics (explicit ground contact
+// pairs, sparse constraint Jacobians), measured with exactly the specs below:
 //   multicpg walk --robot hexapod --periods P [--disable R1|L1] --warmup 1000 --settle 400
 //                 --steps 1200 --json
 // at commit 1a31546 (MuJoCo 2.2.2, Euler, physics step 0.004625 s; docs/robots.md).

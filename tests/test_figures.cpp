@@ -264,7 +264,8 @@ TEST_F(FiguresTest, LandscapeSortsCombinationsAndMarksBestAndLearned) {
       {"R1=4 R2=4 L1=4", {30.0, 45.0}, 45.0, false, false},
       {"R1=9 R2=9 L1=4", {7.0, 7.9}, 7.9, true, true, true, 2},
       {"R1=5 R2=4 L1=4", {12.0, 9.0}, 12.0, false, true, false, 1}};
-  const auto files = plot_landscape(points, "quadruped, L2 disabled", multicpg::experiments::paper::kThresholdDeg, dir_);
+  const auto files = plot_landscape(points, "quadruped, L2 disabled",
+                                    multicpg::experiments::paper::kThresholdDeg, dir_);
   EXPECT_EQ(files.png.filename(), "landscape-map.png");
   expect_figure(files, "landscape",
                 "rank,worst_deg,holds,first_window_passes,best,learned,label,w1_worst_deg,"
@@ -276,7 +277,8 @@ TEST_F(FiguresTest, LandscapeSortsCombinationsAndMarksBestAndLearned) {
 
   const std::vector<LandscapePoint> ragged{{"a", {1.0}, 1.0, true, true},
                                            {"b", {1.0, 2.0}, 2.0, true, true}};
-  EXPECT_THROW(plot_landscape(ragged, "x", multicpg::experiments::paper::kThresholdDeg, dir_), multicpg::BadInput);
+  EXPECT_THROW(plot_landscape(ragged, "x", multicpg::experiments::paper::kThresholdDeg, dir_),
+               multicpg::BadInput);
 }
 
 TEST_F(FiguresTest, TrunkPathsWithTunnelWalls) {

@@ -111,7 +111,8 @@ TEST_F(RenderTest, FrameShowsTheRobotWithTheRedLegRed) {
   }
   const CameraSpec camera;
   const Image plain = render_frame(renderer, model_.get(), data_.get(), camera, {});
-  const Image red = render_frame(renderer, model_.get(), data_.get(), camera, multicpg::testing::red_leg(model_.get()));
+  const Image red = render_frame(renderer, model_.get(), data_.get(), camera,
+                                 multicpg::testing::red_leg(model_.get()));
   ASSERT_EQ(plain.width, kDefaultFrameWidth);
   ASSERT_EQ(plain.height, kDefaultFrameHeight);
   ASSERT_EQ(red.rgb.size(), 3U * kDefaultFrameWidth * kDefaultFrameHeight);
@@ -201,8 +202,8 @@ TEST_F(RenderTest, VideoHasEveryFrame) {
   for (int i = 0; i < kVideoFrames; ++i) {
     data_->qpos[0] += 0.02;
     mj_forward(model_.get(), data_.get());
-    video.add_frame(
-        render_frame(renderer, model_.get(), data_.get(), CameraSpec{}, multicpg::testing::red_leg(model_.get())));
+    video.add_frame(render_frame(renderer, model_.get(), data_.get(), CameraSpec{},
+                                 multicpg::testing::red_leg(model_.get())));
   }
   EXPECT_FALSE(fs::exists(mp4)) << "the video must appear only when finished";
   video.finish();

@@ -358,6 +358,27 @@ fti = -0.55
   fs::remove_all(dir);
 }
 
+TEST(Sweep, RunsRecordedWithoutTheirTraceStillMakeTheTables) {
+  const std::string dir = make_temp_dir("sweep-notrace-");
+  const std::string file = dir + "/notrace.toml";
+  write(file, R"(scenarios = ["R1"]
+runs = 1
+[learning]
+mode = "paper"
+[learning.annealing]
+max_trials = 1
+[record]
+trace = false
+)");
+  const CliResult r = run_cli("run " + file + " --jobs 1 --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json run = nlohmann::json::parse(read_file(dir + "/out/runs/R1_run000.json"));
+  EXPECT_FALSE(run["result"].contains("trace"));
+  EXPECT_TRUE(run["result"].contains("trials"));
+  EXPECT_NE(read_file(dir + "/out/table.md").find("R1"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(Sweep, LandscapePresetEqualsItsFile) {
   const std::string dir = make_temp_dir("sweep-landscape-");
   write(dir + "/l2.toml", R"(kind = "landscape"

@@ -297,7 +297,7 @@ TEST(Stepper, LegsFailAndRecoverNowOrSayWhyNot) {
   const sim::SimModel& m = model(RobotKind::hexapod);
   sim::Stepper stepper(m, {{}, 0}, {{0, {0}, false}});
   EXPECT_THROW(stepper.apply_now({0, {0}, false}), BadInput);              // already failed
-  EXPECT_THROW(stepper.apply_now({0, {1}, true}), BadInput);             // has not failed
+  EXPECT_THROW(stepper.apply_now({0, {1}, true}), BadInput);               // has not failed
   EXPECT_THROW(stepper.apply_now({0, {1, 2, 3, 4, 5}, false}), BadInput);  // every leg
   stepper.apply_now({0, {0}, true});
   EXPECT_FALSE(stepper.state().controller.legs[0].disabled);

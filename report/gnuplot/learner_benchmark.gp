@@ -17,15 +17,19 @@ set offsets 0, 0, graph 0.12, 0
 set multiplot layout 2, 1 title sprintf('Learners replayed on the %s landscapes (%d scenarios x %d seeds)', robot, scenarios, seeds) font ',14'
 set title sprintf('Share of runs held within %d trials (bars: 95%% interval)', budget)
 set ylabel 'share held'
-set yrange [0:1]
-plot data using 0:'share_held':'share_low':'share_high':xtic(1) with boxerrorbars lc rgb blue, \
+# Room above a full bar for its label.
+set yrange [0:1.12]
+set ytics 0, 0.2, 1
+# Five columns: x, y, ylow, yhigh, half the box width (four would read as ydelta, xdelta).
+plot data using 0:'share_held':'share_low':'share_high':(0.3):xtic(1) with boxerrorbars lc rgb blue, \
      data using 0:'share_high':(sprintf('%.0f%%', 100 * column('share_held'))) \
        with labels offset 0, 0.8 font ',10'
-set title 'Trials to a held combination (median; bars: quartiles)'
+set title sprintf('Trials to a held combination (median; bars: quartiles; axis cut at %d)', 2 * budget)
 set ylabel 'trials'
-set yrange [0:*]
+set yrange [0:2 * budget]
+set ytics autofreq
 set xlabel 'learner'
-plot data using 0:'median_trials':'q1_trials':'q3_trials':xtic(1) with boxerrorbars lc rgb orange, \
+plot data using 0:'median_trials':'q1_trials':'q3_trials':(0.3):xtic(1) with boxerrorbars lc rgb orange, \
      data using 0:'median_trials':(sprintf('%g', column('median_trials'))) \
        with labels offset 0, 0.8 font ',10'
 unset multiplot

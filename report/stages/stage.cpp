@@ -20,6 +20,8 @@ const std::vector<Stage>& reproduce_stages() {
       {"calibration", {"calibration"}, calibration_stage},
       // Where the quadruped table's learning runs with L2 disabled fall in the landscape.
       {"landscape", {"landscape"}, landscape_stage, {"quadruped-table"}},
+      // Replays the committed landscape dataset (data/landscapes): CPU-minutes, no walking.
+      {"learners", {"learner-benchmark"}, learner_benchmark_stage},
   };
   return stages;
 }

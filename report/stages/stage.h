@@ -32,6 +32,8 @@ struct Sizes {
   // and episodes at most.
   int periods_alone_max_trials;
   int periods_alone_max_episodes;
+  // Seeds per scenario and learner of the learner benchmark.
+  int benchmark_seeds;
 };
 
 // What a stage gets: the options, the sizes and the report folder.
@@ -77,6 +79,7 @@ Section beta_stage(const StageContext& ctx);
 Section tunnel_stage(const StageContext& ctx);
 Section landscape_stage(const StageContext& ctx);
 Section calibration_stage(const StageContext& ctx);
+Section learner_benchmark_stage(const StageContext& ctx);
 
 // Leg names in morphology order (the figures' legend).
 std::vector<std::string> leg_names(const robot::Morphology& morph);
