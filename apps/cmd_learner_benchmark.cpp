@@ -97,7 +97,7 @@ void run(const BenchmarkOptions& o) {
     const auto text = [](const nlohmann::json& v) {
       std::ostringstream s;
       if (v.is_null()) {
-        s << "-";
+        s << "never";
       } else {
         s << std::fixed << std::setprecision(0) << v.get<double>();
       }
@@ -108,7 +108,7 @@ void run(const BenchmarkOptions& o) {
               << "% [" << std::setw(5) << 100.0 * l.at("share_low").get<double>() << ", "
               << std::setw(5) << 100.0 * l.at("share_high").get<double>()
               << "], trials to held: median " << text(l.at("median_trials")) << " (quartiles "
-              << text(l.at("q1_trials")) << "-" << text(l.at("q3_trials")) << "), false stops "
+              << text(l.at("q1_trials")) << "–" << text(l.at("q3_trials")) << "), false stops "
               << l.at("false_stops") << "\n";
   }
   std::cout << std::setprecision(1) << "replayed in " << b.seconds << " s; wrote " << o.out

@@ -19,17 +19,6 @@ namespace {
 constexpr int kJsonIndent = 2;
 constexpr double kZ95 = 1.959963984540054;  // the normal quantile of a two-sided 95% interval
 
-// Wilson's score interval for a binomial share (Wilson 1927): well behaved at 0 and 1, where the
-// normal approximation is not.
-std::pair<double, double> wilson(int successes, int n) {
-  if (n == 0) return {0.0, 0.0};
-  const double p = static_cast<double>(successes) / n;
-  const double z2 = kZ95 * kZ95;
-  const double centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
-  const double half = kZ95 / (1.0 + z2 / n) * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n));
-  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
-}
-
 // The q-quantile (nearest rank) of `values` where `missing` more values are larger than any;
 // none when the rank falls among the missing.
 std::optional<double> quantile(std::vector<double> values, std::size_t missing, double q) {
@@ -69,7 +58,7 @@ BenchmarkCell score(const learning::ScenarioLandscape& s, const std::string& nam
     gap += r.answer_worst_deg - best;
   }
   c.share_held = c.runs == 0 ? 0.0 : static_cast<double>(c.held_within) / c.runs;
-  std::tie(c.share_low, c.share_high) = wilson(c.held_within, c.runs);
+  std::tie(c.share_low, c.share_high) = wilson_interval(c.held_within, c.runs);
   const std::size_t missing = runs.size() - held.size();
   c.q1 = quantile(held, missing, 0.25);
   c.median = quantile(held, missing, 0.5);
@@ -184,6 +173,17 @@ Table benchmark_runs_table(const LearnerBenchmark& b) {
   return t;
 }
 
+std::pair<double, double> wilson_interval(int successes, int n) {
+  if (n == 0) return {0.0, 0.0};
+  const double p = static_cast<double>(successes) / n;
+  const double z2 = kZ95 * kZ95;
+  const double centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
+  const double half = kZ95 / (1.0 + z2 / n) * std::sqrt(p * (1.0 - p) / n + z2 / (4.0 * n * n));
+  // At p = 0 and p = 1 the bound is exactly 0 or 1; rounding would put the share outside.
+  return {successes == 0 ? 0.0 : std::max(0.0, centre - half),
+          successes == n ? 1.0 : std::min(1.0, centre + half)};
+}
+
 LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& dataset) {
   const learning::LandscapeDataset probe = learning::read_landscape_dataset(dataset);
   LearnerBenchmarkSpec spec;
@@ -231,7 +231,7 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
         }
       }
     }
-    const auto [low, high] = wilson(held, runs);
+    const auto [low, high] = wilson_interval(held, runs);
     const auto q = [&](double p) {
       const std::optional<double> v = quantile(trials, missing, p);
       return v ? nlohmann::json(*v) : nlohmann::json(nullptr);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/limits.h"
@@ -64,6 +65,10 @@ struct LearnerBenchmark {
   std::vector<BenchmarkCell> cells;  // scenario by scenario, each learner in spec order
   double seconds = 0.0;              // wall time of the replays
 };
+
+// Wilson's score interval (95 %) of a binomial share (Wilson 1927): well behaved at 0 and 1,
+// where the normal approximation is not; {0, 0} for no trials.
+std::pair<double, double> wilson_interval(int successes, int n);
 
 // The learners the benchmark replays unless told otherwise: the paper's and every other one.
 inline const std::vector<std::string> kBenchmarkLearners{"annealing", "random", "greedy", "bayes",

@@ -2,13 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "common/errors.h"
-#include "learning/learner.h"
-#include "learning/learners.h"
 #include "robot/leg_sets.h"
 
 namespace multicpg::learning {
@@ -195,58 +192,6 @@ std::uint64_t draw_below(std::mt19937_64& rng, std::uint64_t n) {
 
 double draw_unit(std::mt19937_64& rng) {
   return static_cast<double>(rng() >> kDropBits) * kTwoToMinus53;
-}
-
-}  // namespace multicpg::learning
-
-// The annealing as a learner (learning/learner.h): the paper's search, in both modes.
-namespace multicpg::learning {
-namespace {
-
-class AnnealingLearner final : public Learner {
- public:
-  explicit AnnealingLearner(const LearnerSetup& setup)
-      : params_(setup.search),
-        state_(start_annealing(params_, setup.start, setup.fixed, setup.start_deviation_deg,
-                               setup.seed)) {}
-
-  std::optional<Periods> propose() override {
-    const std::optional<Candidate> candidate = learning::propose(params_, state_);
-    if (!candidate) return std::nullopt;
-    return candidate->periods;
-  }
-
-  TrialRecord observe(const Measurement& measurement) override {
-    decide(params_, state_, measurement.deviation_deg);
-    const AnnealingTrial& t = state_.trace.back();
-    return {t.trial,
-            t.periods,
-            t.deviation_deg,
-            t.accepted,
-            {{"acceptance_probability", t.acceptance_probability},
-             {"legs_changed", t.legs_changed},
-             {"redraws", t.redraws},
-             {"tabu_redraw", t.redraws > 0}}};
-  }
-
-  StopReason stop() const override { return state_.stop; }
-  Answer answer() const override { return {state_.accepted, state_.e_ref}; }
-
- private:
-  AnnealingParams params_;
-  AnnealingState state_;
-};
-
-}  // namespace
-
-// The annealing's own constant, beta, is the run's annealing.beta (recorded with every run since
-// the paper's algorithm was the only one), so it takes no options here.
-nlohmann::json annealing_options(const nlohmann::json& asked) {
-  return read_learner_options<NoLearnerOptions>(asked);
-}
-
-std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json&) {
-  return std::make_unique<AnnealingLearner>(setup);
 }
 
 }  // namespace multicpg::learning

@@ -105,10 +105,12 @@ nlohmann::json to_json(const Section& s) {
                         {"ours", v.ours},
                         {"reproduced", std::string(to_string(v.reproduced))}});
   }
-  return {
-      {"id", s.id},           {"title", s.title},     {"paper", s.paper},  {"measured", s.measured},
-      {"images", s.images},   {"videos", s.videos},   {"files", s.files},  {"tables", tables},
-      {"replays", s.replays}, {"verdicts", verdicts}, {"reused", s.reused}};
+  return {{"id", s.id},           {"title", s.title},
+          {"paper", s.paper},     {"measured", s.measured},
+          {"images", s.images},   {"videos", s.videos},
+          {"files", s.files},     {"tables", tables},
+          {"replays", s.replays}, {"verdicts", verdicts},
+          {"reused", s.reused},   {"seconds", s.seconds}};
 }
 
 Section section_from_json(const nlohmann::json& j) {
@@ -139,6 +141,7 @@ Section section_from_json(const nlohmann::json& j) {
                           v.at("ours").get<std::string>(), r});
   }
   s.reused = j.value("reused", std::string());
+  s.seconds = j.value("seconds", 0.0);
   return s;
 }
 
@@ -191,6 +194,8 @@ std::string index_html(const std::string& title, const std::string& intro,
       for (const std::string& f : s.files) out << " " << link(f);
       out << "</p>\n";
     }
+    out << "<p class=\"files\">Computed in " << fixed(s.seconds, 0)
+        << " s (wall time of this stage).</p>\n";
     out << "</section>\n";
   }
   out << kMediaCheck << "\n</body></html>\n";

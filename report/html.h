@@ -41,6 +41,9 @@ struct Section {
   // Data committed to the repository the section draws instead of computing it in this run
   // (e.g. a calibration that takes hours); empty when the run computed everything it shows.
   std::string reused = {};
+  // Wall time of the stage that computed the section, in seconds (the report shows it beside the
+  // section; a resumed report keeps the time of the run that computed it).
+  double seconds = 0.0;
 };
 
 nlohmann::json to_json(const Section& section);

@@ -169,9 +169,10 @@ class Reproduction {
     const auto begin = std::chrono::steady_clock::now();
     progress(id + ": started");
     Section section = stage.run(ctx_);
+    section.seconds = seconds_since(begin);
     ensure_writable_dir(saved.parent_path());
     write_file_atomic(saved, to_json(section).dump(2) + "\n");
-    progress(id + ": done in " + fixed(seconds_since(begin), 0) + " s");
+    progress(id + ": done in " + fixed(section.seconds, 0) + " s");
     return section;
   }
 

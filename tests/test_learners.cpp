@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "experiments/learner_benchmark.h"
 #include "learning/benchmark.h"
 #include "learning/landscapes.h"
 #include "learning/learners.h"
@@ -294,6 +295,21 @@ TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
   EXPECT_THROW(learning::check_learner(learning::resolve_learner(missing),
                                        robot::RobotKind::quadruped, {kL2}),
                BadInput);
+}
+
+TEST(Learners, AShareOfNoneOrAllLiesInsideItsInterval) {
+  // Every run held (or none): the interval's bound is the share itself, not a rounding below it.
+  for (int n = 1; n <= 5000; ++n) {
+    const auto [low_all, high_all] = experiments::wilson_interval(n, n);
+    EXPECT_EQ(high_all, 1.0) << n;
+    EXPECT_LT(low_all, 1.0) << n;
+    const auto [low_none, high_none] = experiments::wilson_interval(0, n);
+    EXPECT_EQ(low_none, 0.0) << n;
+    EXPECT_GT(high_none, 0.0) << n;
+  }
+  const auto [low, high] = experiments::wilson_interval(50, 100);
+  EXPECT_NEAR(low, 0.4038, 1e-4);  // Wilson 1927, z = 1.96
+  EXPECT_NEAR(high, 0.5962, 1e-4);
 }
 
 TEST_F(Dataset, TheBenchmarkCommandScoresLearnersTheSameOnAnyThreadCount) {
