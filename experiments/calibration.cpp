@@ -1,20 +1,19 @@
+// Calibrating the body against Table 1 (calibration.h): a candidate walked and scored, the search.
 #include "experiments/calibration.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <iostream>
-#include <limits>
-#include <numeric>
 #include <set>
 #include <sstream>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "experiments/calibration_detail.h"
 #include "experiments/paper.h"
 #include "experiments/processes.h"
 #include "experiments/runner.h"
@@ -26,6 +25,9 @@
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
+
+using namespace calibration_detail;
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -33,20 +35,7 @@ namespace fs = std::filesystem;
 constexpr int kJsonIndent = 2;
 constexpr double kCmPerM = 100.0;
 
-// Column titles of candidates.csv that sensitivity() reads back.
-constexpr const char* kFitPrefix = "fit ";
-constexpr const char* kPaperPrefix = "paper's periods ";
-constexpr const char* kMirrorPrefix = "mirror ";
-constexpr const char* kIntactYawColumn = "intact_max_yaw_deg";
-constexpr const char* kSpeedColumn = "intact_speed_cm_s";
-constexpr const char* kScoreColumn = "score_deg";
-
 // --- numbers -----------------------------------------------------------------------------------
-
-double mean(const std::vector<double>& v) {
-  if (v.empty()) return 0.0;
-  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
 
 // The real robot's before-learning angle of each Table 1 scenario, + = left.
 std::vector<double> targets() {
@@ -130,141 +119,7 @@ ScenarioNumbers walk_scenario(const sim::SimModel& corridor, const Scenario1& sc
   return out;
 }
 
-// --- JSON of the numbers -----------------------------------------------------------------------
-
-nlohmann::json to_json(const TunnelNumbers& t) {
-  return {{"deviation_deg", t.deviation_deg}, {"passed", t.passed},
-          {"touched_wall", t.touched_wall},   {"steps", t.steps},
-          {"forward_m", t.forward_m},         {"lateral_m", t.lateral_m}};
-}
-
-TunnelNumbers tunnel_from_json(const nlohmann::json& j) {
-  return {j.at("deviation_deg"), j.at("passed"),    j.at("touched_wall"),
-          j.at("steps"),         j.at("forward_m"), j.at("lateral_m")};
-}
-
-nlohmann::json to_json(const std::vector<ScenarioNumbers>& scenarios) {
-  nlohmann::json out = nlohmann::json::array();
-  for (const ScenarioNumbers& s : scenarios) {
-    nlohmann::json starts = nlohmann::json::array();
-    for (const TunnelNumbers& t : s.starts) starts.push_back(to_json(t));
-    out.push_back({{"scenario", s.name},
-                   {"periods", s.periods},
-                   {"mean_deg", s.mean_deg()},
-                   {"passed", s.passed()},
-                   {"starts", starts}});
-  }
-  return out;
-}
-
-std::vector<ScenarioNumbers> scenarios_from_json(const nlohmann::json& j) {
-  std::vector<ScenarioNumbers> out;
-  for (const nlohmann::json& s : j) {
-    ScenarioNumbers n{s.at("scenario"), s.at("periods"), {}};
-    for (const nlohmann::json& t : s.at("starts")) n.starts.push_back(tunnel_from_json(t));
-    out.push_back(std::move(n));
-  }
-  return out;
-}
-
-nlohmann::json to_json(const CandidateNumbers& n) {
-  nlohmann::json j{{"failure", n.failure},
-                   {"fit", to_json(n.fit)},
-                   {"paper_periods", to_json(n.paper_periods)},
-                   {"mirrors", to_json(n.mirrors)},
-                   {"intact_yaw_deg", n.intact_yaw_deg},
-                   {"intact_speed_m_s", n.intact_speed_m_s},
-                   {"score_deg", n.score_deg},
-                   {"violation", n.violation}};
-  return j;
-}
-
-CandidateNumbers numbers_from_json(const nlohmann::json& j) {
-  CandidateNumbers n;
-  n.failure = j.at("failure");
-  n.fit = scenarios_from_json(j.at("fit"));
-  n.paper_periods = scenarios_from_json(j.at("paper_periods"));
-  n.mirrors = scenarios_from_json(j.at("mirrors"));
-  n.intact_yaw_deg = j.at("intact_yaw_deg").get<std::vector<double>>();
-  n.intact_speed_m_s = j.at("intact_speed_m_s").get<std::vector<double>>();
-  n.score_deg = j.at("score_deg");
-  n.violation = j.at("violation");
-  return n;
-}
-
-nlohmann::json to_json(const SearchedParam& p) {
-  return {{"key", p.key}, {"lo", p.lo}, {"hi", p.hi}, {"log_scale", p.log_scale}};
-}
-
-SearchedParam param_from_json(const nlohmann::json& j) {
-  return {j.at("key"), j.at("lo"), j.at("hi"), j.at("log_scale")};
-}
-
 // --- the search --------------------------------------------------------------------------------
-
-// SplitMix64: a portable stream (the same draws on every machine and library).
-class Stream {
- public:
-  explicit Stream(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1) with 53 bits.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  // Uniform in 0..n-1 (n small: the modulo bias is below 2^-50).
-  std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
-
- private:
-  std::uint64_t state_;
-};
-
-using Point = std::vector<double>;
-
-std::vector<Point> latin_hypercube(std::size_t n, std::size_t d, Stream& rng) {
-  std::vector<Point> pts(n, Point(d));
-  for (std::size_t j = 0; j < d; ++j) {
-    std::vector<std::size_t> perm(n);
-    std::iota(perm.begin(), perm.end(), 0);
-    for (std::size_t i = n; i > 1; --i) std::swap(perm[i - 1], perm[rng.below(i)]);
-    for (std::size_t i = 0; i < n; ++i) {
-      pts[i][j] = (static_cast<double>(perm[i]) + rng.uniform()) / static_cast<double>(n);
-    }
-  }
-  return pts;
-}
-
-double min_distance(const std::vector<Point>& pts) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t a = 0; a < pts.size(); ++a) {
-    for (std::size_t b = a + 1; b < pts.size(); ++b) {
-      double s = 0.0;
-      for (std::size_t j = 0; j < pts[a].size(); ++j) {
-        const double e = pts[a][j] - pts[b][j];
-        s += e * e;
-      }
-      best = std::min(best, s);
-    }
-  }
-  return std::sqrt(best);
-}
-
-std::vector<Point> maximin_design(std::size_t n, std::size_t d, std::uint64_t seed) {
-  Stream rng(derive_seed(seed, "design"));
-  std::vector<Point> best;
-  double best_distance = -1.0;
-  for (int draw = 0; draw < kDesignDraws; ++draw) {
-    std::vector<Point> pts = latin_hypercube(n, d, rng);
-    const double dist = min_distance(pts);
-    if (dist > best_distance) {
-      best_distance = dist;
-      best = std::move(pts);
-    }
-  }
-  return best;
-}
 
 std::string design_id(std::size_t i) {
   return fmt::format("d{:04}", i);
@@ -316,37 +171,6 @@ std::size_t best_of(const std::vector<Candidate>& c) {
     if (better(c[i].numbers, c[best].numbers)) best = i;
   }
   return best;
-}
-
-// --- Spearman ----------------------------------------------------------------------------------
-
-std::vector<double> ranks(const std::vector<double>& v) {
-  std::vector<std::size_t> order(v.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return v[a] < v[b]; });
-  std::vector<double> r(v.size());
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i;
-    while (j + 1 < order.size() && v[order[j + 1]] == v[order[i]]) ++j;
-    const double mid = 0.5 * static_cast<double>(i + j) + 1.0;  // ties share their mean rank
-    for (std::size_t k = i; k <= j; ++k) r[order[k]] = mid;
-    i = j + 1;
-  }
-  return r;
-}
-
-double pearson(const std::vector<double>& a, const std::vector<double>& b) {
-  const double ma = mean(a);
-  const double mb = mean(b);
-  double sab = 0.0, saa = 0.0, sbb = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  if (saa == 0.0 || sbb == 0.0) return 0.0;
-  return sab / std::sqrt(saa * sbb);
 }
 
 }  // namespace
@@ -615,59 +439,6 @@ Calibration run_calibration(const CalibrationSpec& spec, const fs::path& out, in
   return cal;
 }
 
-nlohmann::json calibration_json(const Calibration& cal) {
-  nlohmann::json candidates = nlohmann::json::array();
-  for (const Candidate& c : cal.candidates) {
-    nlohmann::json values = nlohmann::json::object();
-    for (const SearchedParam& p : cal.spec.params) {
-      values[p.key] = robot::number_param(p.key).get(c.body);
-    }
-    candidates.push_back({{"id", c.id},
-                          {"stage", c.stage},
-                          {"u", c.u},
-                          {"values", values},
-                          {"body", c.body},
-                          {"numbers", to_json(c.numbers)}});
-  }
-  nlohmann::json params = nlohmann::json::array();
-  for (const SearchedParam& p : cal.spec.params) params.push_back(to_json(p));
-  return {{"arguments", calibration_arguments(cal.spec)},
-          {"sim", cal.spec.sim},
-          {"params", params},
-          {"candidates", candidates},
-          {"best", cal.candidates.empty() ? "" : cal.candidates[cal.best].id}};
-}
-
-Calibration read_calibration(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw BadInput("cannot read calibration '" + path.string() + "'");
-  try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    Calibration cal;
-    const nlohmann::json& args = j.at("arguments");
-    cal.spec.target = parse_calibration_target(args.at("target").get<std::string>());
-    cal.spec.robot = robot::parse_robot(args.at("robot").get<std::string>());
-    cal.spec.sim = j.at("sim").get<sim::SimOptions>();
-    for (const nlohmann::json& p : j.at("params")) cal.spec.params.push_back(param_from_json(p));
-    cal.spec.budget = args.at("budget");
-    cal.spec.seed = args.at("seed");
-    cal.spec.warmups = args.at("warmups").get<std::vector<long>>();
-    const std::string best = j.at("best");
-    for (const nlohmann::json& c : j.at("candidates")) {
-      Candidate cand{c.at("id"), c.at("stage"), c.at("u").get<std::vector<double>>(),
-                     c.at("body").get<robot::BodyParams>(), numbers_from_json(c.at("numbers"))};
-      if (cand.id == best) cal.best = cal.candidates.size();
-      cal.candidates.push_back(std::move(cand));
-    }
-    if (cal.candidates.empty()) throw BadInput("no candidates");
-    return cal;
-  } catch (const nlohmann::json::exception& e) {
-    throw BadInput("'" + path.string() + "' is not a calibration (" + e.what() + ")");
-  } catch (const BadInput& e) {
-    throw BadInput("'" + path.string() + "' is not a calibration (" + e.what() + ")");
-  }
-}
-
 Table candidates_table(const Calibration& cal) {
   Table t;
   const auto column = [&t](std::string title) { t.columns.push_back({std::move(title)}); };
@@ -722,59 +493,6 @@ Table candidates_table(const Calibration& cal) {
     t.add_row(std::move(row));
   }
   return t;
-}
-
-Sensitivity sensitivity(const Table& candidates) {
-  const std::size_t stage = column_index(candidates, "stage");
-  const std::size_t failure = column_index(candidates, "failure");
-  Sensitivity s;
-  // The searched parameters: the columns between the stage and the first scenario.
-  std::size_t first_number = stage + 1;
-  while (first_number < candidates.columns.size() &&
-         candidates.columns[first_number].title.rfind(kFitPrefix, 0) != 0) {
-    s.params.push_back(candidates.columns[first_number].title);
-    ++first_number;
-  }
-  const std::string mean_suffix = " mean_deg";
-  const auto ends_with = [](const std::string& t, const std::string& end) {
-    return t.size() >= end.size() && t.compare(t.size() - end.size(), end.size(), end) == 0;
-  };
-  std::vector<std::size_t> columns;
-  const auto add = [&](std::size_t col, std::string label) {
-    columns.push_back(col);
-    s.numbers.push_back(std::move(label));
-  };
-  const auto scenario_means = [&](const std::string& prefix, const std::string& suffix) {
-    for (std::size_t i = 0; i < candidates.columns.size(); ++i) {
-      const std::string& t = candidates.columns[i].title;
-      if (t.rfind(prefix, 0) == 0 && ends_with(t, mean_suffix)) {
-        add(i, t.substr(prefix.size(), t.size() - prefix.size() - mean_suffix.size()) + suffix);
-      }
-    }
-  };
-  scenario_means(kFitPrefix, "");
-  add(column_index(candidates, kScoreColumn), "score");
-  add(column_index(candidates, kIntactYawColumn), "intact yaw");
-  add(column_index(candidates, kSpeedColumn), "speed");
-  scenario_means(kPaperPrefix, " paper's");
-
-  std::vector<const std::vector<std::string>*> used;
-  for (const std::vector<std::string>& row : candidates.rows) {
-    if (row[stage] == "design" && row[failure].empty()) used.push_back(&row);
-  }
-  s.candidates = used.size();
-  const auto values = [&](std::size_t col) {
-    std::vector<double> v;
-    for (const std::vector<std::string>* row : used) v.push_back(std::stod((*row)[col]));
-    return ranks(v);
-  };
-  for (std::size_t p = 0; p < s.params.size(); ++p) {
-    const std::vector<double> rx = values(stage + 1 + p);
-    std::vector<double> row;
-    for (std::size_t col : columns) row.push_back(pearson(rx, values(col)));
-    s.rho.push_back(std::move(row));
-  }
-  return s;
 }
 
 }  // namespace multicpg::experiments

@@ -1,12 +1,11 @@
+// The emulator (emulator.h): a fake robot serving the hardware file's protocol on pseudo-terminals.
 #include "hw/emulator.h"
 
-#include <fmt/format.h>
 #include <poll.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -20,7 +19,6 @@
 #include "common/angles.h"
 #include "common/errors.h"
 #include "common/interrupt.h"
-#include "common/limits.h"
 #include "hw/amosii.h"
 #include "hw/bus.h"
 #include "hw/dynamixel.h"
@@ -48,28 +46,6 @@ constexpr std::uint8_t kRail = 0;
 // Board inputs the heading spans: all but the two rails.
 constexpr int kHeadingCounts = 254;
 
-struct KindName {
-  Injection::Kind kind;
-  std::string_view name;
-  bool value;  // takes a value
-  Limits<double> limits;
-};
-constexpr KindName kKinds[] = {
-    {Injection::Kind::drop, "drop", true, {0.0, 1.0}},
-    {Injection::Kind::corrupt, "corrupt", true, {0.0, 1.0}},
-    {Injection::Kind::latency, "latency", true, {0.0, 10'000.0}},
-    {Injection::Kind::silent, "silent", true, {0.0, 252.0}},
-    {Injection::Kind::drift, "drift", true, {-100.0, 100.0}},
-    {Injection::Kind::silent_yaw, "silent-yaw", false, {0.0, 0.0}},
-};
-
-const KindName& kind_name(Injection::Kind kind) {
-  for (const KindName& k : kKinds) {
-    if (k.kind == kind) return k;
-  }
-  return kKinds[0];
-}
-
 // A servo as the emulator keeps it: where it sits in the leg map, and its RAM.
 struct Servo {
   int leg = -1;  // -1: the backbone
@@ -81,59 +57,6 @@ struct Servo {
 };
 
 }  // namespace
-
-Injection parse_injection(std::string_view text, const HardwareFile& file) {
-  const std::string usage = fmt::format(
-      "'{}': an injection is KIND[=VALUE]@STEP, KIND one of drop, corrupt, latency, silent, "
-      "drift, silent-yaw",
-      text);
-  const std::size_t at = text.rfind('@');
-  if (at == std::string_view::npos) throw BadInput(usage);
-  const std::string_view head = text.substr(0, at);
-  const std::string_view step_text = text.substr(at + 1);
-  Injection in;
-  const auto [end, error] =
-      std::from_chars(step_text.data(), step_text.data() + step_text.size(), in.step);
-  if (error != std::errc() || end != step_text.data() + step_text.size() || in.step < 0) {
-    throw BadInput(usage + " (STEP: a command frame, 0 or more)");
-  }
-  const std::size_t eq = head.find('=');
-  const std::string_view name = head.substr(0, eq);
-  const KindName* kind = nullptr;
-  for (const KindName& k : kKinds) {
-    if (k.name == name) kind = &k;
-  }
-  if (kind == nullptr) throw BadInput(usage);
-  in.kind = kind->kind;
-  if (kind->value != (eq != std::string_view::npos)) {
-    throw BadInput("'" + std::string(text) + "': " + std::string(kind->name) +
-                   (kind->value ? " needs a value (KIND=VALUE@STEP)" : " takes no value"));
-  }
-  if (kind->value) {
-    const std::string value(head.substr(eq + 1));
-    char* stop = nullptr;
-    in.value = std::strtod(value.c_str(), &stop);
-    if (value.empty() || *stop != '\0' || !kind->limits.contains(in.value)) {
-      throw BadInput("'" + std::string(text) + "': " + std::string(kind->name) +
-                     " takes a value in " + kind->limits.text());
-    }
-  }
-  if (in.kind == Injection::Kind::silent && file.protocol == Protocol::dynamixel) {
-    bool known = false;
-    for (const LegServos& leg : file.legs) {
-      for (const ServoJoint& j : leg.joints) known = known || j.id == in.value;
-    }
-    if (!known) {
-      throw BadInput(fmt::format("'{}': no servo of the hardware file has ID {}", text, in.value));
-    }
-  }
-  return in;
-}
-
-std::string to_string(const Injection& in) {
-  const KindName& k = kind_name(in.kind);
-  return fmt::format("{}{}@{}", k.name, k.value ? fmt::format("={}", in.value) : "", in.step);
-}
 
 class Emulator::Impl {
  public:

@@ -1,26 +1,20 @@
+// The figures (figures.h): their registry and one plot function per figure.
 #include "report/figures.h"
-
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <system_error>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
-#include "report/subprocess.h"
+#include "report/figure_drawing.h"
 
 namespace multicpg::report {
 namespace fs = std::filesystem;
 
-namespace {
+using namespace drawing;
 
-constexpr const char* kGnuplot = "gnuplot";
-// Installed layout: <prefix>/bin/multicpg and <prefix>/share/multicpg/gnuplot.
-constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
-constexpr const char* kFont = "DejaVu Sans,11";
+namespace {
 
 constexpr std::array<FigureInfo, 12> kFigures{{
     {"gait", "fig02-gaits", "gait.gp", 1200, 900,
@@ -49,159 +43,8 @@ constexpr std::array<FigureInfo, 12> kFigures{{
      "Learners replayed on landscapes: share held within the budget and trials to hold"},
 }};
 
-// --- CSV -------------------------------------------------------------------------------------
-
-class Csv {
- public:
-  explicit Csv(const std::vector<std::string>& header) { row(header); }
-  void row(const std::vector<std::string>& fields) { text_ += csv_line(fields); }
-  // A blank line: gnuplot starts a new line segment there (used between polylines).
-  void gap() { text_ += '\n'; }
-  const std::string& text() const { return text_; }
-
- private:
-  std::string text_;
-};
-
-// --- gnuplot ---------------------------------------------------------------------------------
-
-// gnuplot single-quoted string: a quote is written twice.
-std::string gp_string(std::string_view text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
-fs::path scripts_dir() {
-  const fs::path source(MULTICPG_GNUPLOT_SOURCE_DIR);
-  if (fs::is_directory(source)) return source;
-  std::error_code ec;
-  const fs::path installed =
-      fs::read_symlink("/proc/self/exe", ec).parent_path() / kInstalledScripts;
-  if (!ec && fs::is_directory(installed)) return installed.lexically_normal();
-  throw RuntimeFailure("gnuplot scripts not found in " + source.string() +
-                       " nor next to the program");
-}
-
-// Parameters handed to a script as gnuplot variables.
-class Params {
- public:
-  Params& text(const std::string& name, std::string_view value) {
-    code_ += name + "=" + gp_string(value) + "; ";
-    return *this;
-  }
-  Params& num(const std::string& name, double value) {
-    code_ += name + "=" + shortest(value) + "; ";
-    return *this;
-  }
-  const std::string& code() const { return code_; }
-
- private:
-  std::string code_;
-};
-
-std::string temp_name(const fs::path& path) {
-  return path.string() + ".tmp" + std::to_string(::getpid());
-}
-
-// Runs one script for one terminal into a temporary file, then moves it into place.
-void run_gnuplot(const fs::path& script, const std::string& terminal, const Params& params,
-                 const fs::path& out) {
-  const std::string tmp = temp_name(out);
-  const std::string preamble = terminal + "; set output " + gp_string(tmp) + "; " + params.code();
-  const ProcessResult result = run_process({kGnuplot, "-e", preamble, script.string()});
-  std::error_code ec;
-  if (result.exit_code != 0 || !fs::exists(tmp) || fs::file_size(tmp, ec) == 0) {
-    fs::remove(tmp, ec);
-    throw RuntimeFailure("gnuplot " + script.filename().string() + " failed: " +
-                         (result.exit_code == 0 ? "wrote no picture (" + tool_error(result) + ")"
-                                                : tool_error(result)));
-  }
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    const std::string why = ec.message();
-    fs::remove(tmp, ec);
-    throw RuntimeFailure("cannot move '" + tmp + "' into place: " + why);
-  }
-}
-
-FigureFiles draw(const FigureInfo& info, const fs::path& out_dir, std::string_view stem,
-                 const Csv& csv, Params params) {
-  const std::string name(stem.empty() ? info.stem : stem);
-  FigureFiles files{out_dir / (name + ".png"), out_dir / (name + ".svg"),
-                    out_dir / (name + ".csv")};
-  write_file_atomic(files.csv, csv.text());
-  const fs::path dir = scripts_dir();
-  params.text("data", files.csv.string()).text("dir", (dir / "").string());
-  const fs::path script = dir / info.script;
-  const std::string size =
-      " size " + std::to_string(info.width) + "," + std::to_string(info.height);
-  const std::string look = " enhanced font " + gp_string(kFont) + " background rgb 'white'";
-  run_gnuplot(script, "set terminal pngcairo" + size + look, params, files.png);
-  run_gnuplot(script, "set terminal svg" + size + look, params, files.svg);
-  return files;
-}
-
-// --- input checks ----------------------------------------------------------------------------
-
-void require(bool ok, std::string_view figure, const std::string& what) {
-  if (!ok) throw BadInput(std::string(figure) + ": " + what);
-}
-
-// Every row of `table` has one entry per leg.
-template <class Row>
-void require_rows(const std::vector<Row>& table, const std::vector<std::string>& legs,
-                  std::string_view figure) {
-  require(!legs.empty(), figure, "no legs");
-  require(!table.empty(), figure, "no steps");
-  for (std::size_t t = 0; t < table.size(); ++t) {
-    require(table[t].size() == legs.size(), figure,
-            "step " + std::to_string(t) + " has " + std::to_string(table[t].size()) +
-                " legs, expected " + std::to_string(legs.size()));
-  }
-}
-
 void require_step(double step_seconds, std::string_view figure) {
   require(step_seconds > 0.0, figure, "step duration must be positive");
-}
-
-std::string join(const std::vector<std::string>& words) {
-  std::string out;
-  for (const auto& w : words) {
-    if (!out.empty()) out += ' ';
-    out += w;
-  }
-  return out;
-}
-
-// The runs [start, end) of steps where table[step][leg] == value: one box per run draws without
-// seams.
-std::vector<std::pair<std::size_t, std::size_t>> runs_of(
-    const std::vector<std::vector<bool>>& table, std::size_t leg, bool value) {
-  std::vector<std::pair<std::size_t, std::size_t>> runs;
-  std::size_t t = 0;
-  while (t < table.size()) {
-    if (table[t][leg] != value) {
-      ++t;
-      continue;
-    }
-    const std::size_t start = t;
-    while (t < table.size() && table[t][leg] == value) ++t;
-    runs.emplace_back(start, t);
-  }
-  return runs;
-}
-
-// E_ref of each trial: the deviation of the combination accepted so far (trial 0, the detection
-// window, is accepted by definition; docs/learning.md "Candidates").
-std::vector<double> reference_deviations(const std::vector<TrialPoint>& trials) {
-  std::vector<double> out;
-  double reference = trials.empty() ? 0.0 : trials.front().deviation_deg;
-  for (const TrialPoint& trial : trials) {
-    if (trial.accepted) reference = trial.deviation_deg;
-    out.push_back(reference);
-  }
-  return out;
 }
 
 // Gait names of paper §2.1 (docs/controller.md "Gaits").
@@ -572,115 +415,6 @@ FigureFiles plot_calibration(const CalibrationMap& map, const fs::path& out_dir,
       .num("nx", static_cast<double>(map.numbers.size()))
       .num("ny", static_cast<double>(map.params.size()));
   return draw(info, out_dir, stem, csv, params);
-}
-
-namespace {
-
-// The run picture's size: wide enough for the tunnel's 3 m beside its key; one panel taller
-// with the learning trace.
-constexpr int kPictureWidth = 1100;
-constexpr int kPictureHeight = 850;
-constexpr int kPictureTraceHeight = 400;
-// Points of the trunk path drawn at most: a long run is thinned evenly (its last point kept),
-// so gnuplot reads a small file whatever the run's length.
-constexpr std::size_t kPicturePathPoints = 4000;
-
-// A folder of its own under the system's temporary folder, removed with everything in it.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "multicpg-plot-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr) {
-      throw RuntimeFailure("cannot make a temporary folder for the plot's data under " +
-                           fs::temp_directory_path().string());
-    }
-    path_ = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-}  // namespace
-
-void check_run_picture_path(const fs::path& png) {
-  if (png.extension() != ".png") {
-    throw BadInput("cannot plot to '" + png.string() + "': the file type must be .png");
-  }
-  require_writable_file(png);
-}
-
-void plot_run_picture(const RunPicture& picture, const fs::path& png) {
-  constexpr std::string_view name = "run picture";
-  check_run_picture_path(png);
-  require(!picture.path.empty(), name, "no trunk path");
-  require(picture.trials.empty() || picture.threshold_deg > 0.0, name,
-          "threshold must be positive");
-  require_rows(picture.contact, picture.legs, name);
-  const TempDir data;
-
-  Csv path({"series", "x_m", "y_m"});
-  const std::size_t stride = (picture.path.size() + kPicturePathPoints - 1) / kPicturePathPoints;
-  for (std::size_t i = 0; i < picture.path.size(); ++i) {
-    if (i % stride != 0 && i + 1 != picture.path.size()) continue;
-    path.row({"path", shortest(picture.path[i].x), shortest(picture.path[i].y)});
-  }
-  path.gap();
-  const auto block = [&path](const std::string& series, const std::vector<Point2>& points) {
-    for (const Point2& p : points) path.row({series, shortest(p.x), shortest(p.y)});
-    path.gap();
-  };
-  for (const auto& wall : picture.walls) block("wall", wall);
-  if (!picture.course.empty()) block("course", picture.course);
-  write_file_atomic(data.path() / "path.csv", path.text());
-
-  Csv trace({"trial", "deviation_deg", "accepted", "reference_deg"});
-  const std::vector<double> references = reference_deviations(picture.trials);
-  for (std::size_t i = 0; i < picture.trials.size(); ++i) {
-    const TrialPoint& t = picture.trials[i];
-    trace.row({std::to_string(t.trial), shortest(t.deviation_deg), t.accepted ? "1" : "0",
-               shortest(references[i])});
-  }
-  write_file_atomic(data.path() / "trace.csv", trace.text());
-
-  Csv gait({"leg", "row", "stance_start_step", "stance_end_step"});
-  const long first = picture.first_contact_step;
-  for (std::size_t leg = 0; leg < picture.legs.size(); ++leg) {
-    for (const auto& [start, end] : runs_of(picture.contact, leg, true)) {
-      gait.row({picture.legs[leg], std::to_string(leg),
-                std::to_string(first + static_cast<long>(start)),
-                std::to_string(first + static_cast<long>(end))});
-    }
-  }
-  write_file_atomic(data.path() / "gait.csv", gait.text());
-
-  const fs::path dir = scripts_dir();
-  Params params;
-  params.text("dir", (dir / "").string())
-      .text("path", (data.path() / "path.csv").string())
-      .text("trace", (data.path() / "trace.csv").string())
-      .text("gait", (data.path() / "gait.csv").string())
-      .text("title", picture.title)
-      .num("has_walls", picture.walls.empty() ? 0 : 1)
-      .num("has_course", picture.course.empty() ? 0 : 1)
-      .num("has_trace", picture.trials.empty() ? 0 : 1)
-      .num("threshold", picture.threshold_deg)
-      .text("legs", join(picture.legs))
-      .num("first_step", static_cast<double>(first))
-      .num("last_step", static_cast<double>(first + static_cast<long>(picture.contact.size())));
-  const int height = kPictureHeight + (picture.trials.empty() ? 0 : kPictureTraceHeight);
-  run_gnuplot(dir / "run_picture.gp",
-              "set terminal pngcairo size " + std::to_string(kPictureWidth) + "," +
-                  std::to_string(height) + " enhanced font " + gp_string(kFont) +
-                  " background rgb 'white'",
-              params, png);
 }
 
 }  // namespace multicpg::report

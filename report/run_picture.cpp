@@ -1,0 +1,126 @@
+// The picture of one run (figures.h RunPicture): path, learning trace and gait strip in one PNG.
+#include <cstdlib>
+#include <system_error>
+
+#include "common/atomic_file.h"
+#include "common/errors.h"
+#include "common/table.h"
+#include "report/figure_drawing.h"
+#include "report/figures.h"
+
+namespace multicpg::report {
+
+namespace fs = std::filesystem;
+
+using namespace drawing;
+
+namespace {
+
+// The run picture's size: wide enough for the tunnel's 3 m beside its key; one panel taller
+// with the learning trace.
+constexpr int kPictureWidth = 1100;
+constexpr int kPictureHeight = 850;
+constexpr int kPictureTraceHeight = 400;
+// Points of the trunk path drawn at most: a long run is thinned evenly (its last point kept),
+// so gnuplot reads a small file whatever the run's length.
+constexpr std::size_t kPicturePathPoints = 4000;
+
+// A folder of its own under the system's temporary folder, removed with everything in it.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "multicpg-plot-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) {
+      throw RuntimeFailure("cannot make a temporary folder for the plot's data under " +
+                           fs::temp_directory_path().string());
+    }
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+}  // namespace
+
+void check_run_picture_path(const fs::path& png) {
+  if (png.extension() != ".png") {
+    throw BadInput("cannot plot to '" + png.string() + "': the file type must be .png");
+  }
+  require_writable_file(png);
+}
+
+void plot_run_picture(const RunPicture& picture, const fs::path& png) {
+  constexpr std::string_view name = "run picture";
+  check_run_picture_path(png);
+  require(!picture.path.empty(), name, "no trunk path");
+  require(picture.trials.empty() || picture.threshold_deg > 0.0, name,
+          "threshold must be positive");
+  require_rows(picture.contact, picture.legs, name);
+  const TempDir data;
+
+  Csv path({"series", "x_m", "y_m"});
+  const std::size_t stride = (picture.path.size() + kPicturePathPoints - 1) / kPicturePathPoints;
+  for (std::size_t i = 0; i < picture.path.size(); ++i) {
+    if (i % stride != 0 && i + 1 != picture.path.size()) continue;
+    path.row({"path", shortest(picture.path[i].x), shortest(picture.path[i].y)});
+  }
+  path.gap();
+  const auto block = [&path](const std::string& series, const std::vector<Point2>& points) {
+    for (const Point2& p : points) path.row({series, shortest(p.x), shortest(p.y)});
+    path.gap();
+  };
+  for (const auto& wall : picture.walls) block("wall", wall);
+  if (!picture.course.empty()) block("course", picture.course);
+  write_file_atomic(data.path() / "path.csv", path.text());
+
+  Csv trace({"trial", "deviation_deg", "accepted", "reference_deg"});
+  const std::vector<double> references = reference_deviations(picture.trials);
+  for (std::size_t i = 0; i < picture.trials.size(); ++i) {
+    const TrialPoint& t = picture.trials[i];
+    trace.row({std::to_string(t.trial), shortest(t.deviation_deg), t.accepted ? "1" : "0",
+               shortest(references[i])});
+  }
+  write_file_atomic(data.path() / "trace.csv", trace.text());
+
+  Csv gait({"leg", "row", "stance_start_step", "stance_end_step"});
+  const long first = picture.first_contact_step;
+  for (std::size_t leg = 0; leg < picture.legs.size(); ++leg) {
+    for (const auto& [start, end] : runs_of(picture.contact, leg, true)) {
+      gait.row({picture.legs[leg], std::to_string(leg),
+                std::to_string(first + static_cast<long>(start)),
+                std::to_string(first + static_cast<long>(end))});
+    }
+  }
+  write_file_atomic(data.path() / "gait.csv", gait.text());
+
+  const fs::path dir = scripts_dir();
+  Params params;
+  params.text("dir", (dir / "").string())
+      .text("path", (data.path() / "path.csv").string())
+      .text("trace", (data.path() / "trace.csv").string())
+      .text("gait", (data.path() / "gait.csv").string())
+      .text("title", picture.title)
+      .num("has_walls", picture.walls.empty() ? 0 : 1)
+      .num("has_course", picture.course.empty() ? 0 : 1)
+      .num("has_trace", picture.trials.empty() ? 0 : 1)
+      .num("threshold", picture.threshold_deg)
+      .text("legs", join(picture.legs))
+      .num("first_step", static_cast<double>(first))
+      .num("last_step", static_cast<double>(first + static_cast<long>(picture.contact.size())));
+  const int height = kPictureHeight + (picture.trials.empty() ? 0 : kPictureTraceHeight);
+  run_gnuplot(dir / "run_picture.gp",
+              "set terminal pngcairo size " + std::to_string(kPictureWidth) + "," +
+                  std::to_string(height) + " enhanced font " + gp_string(kFont) +
+                  " background rgb 'white'",
+              params, png);
+}
+
+}  // namespace multicpg::report
