@@ -8,6 +8,7 @@ deviation.png (each trial's deviation against the threshold) into --out.
 """
 
 import argparse
+import math
 import pathlib
 
 import matplotlib
@@ -43,8 +44,19 @@ def main():
     for label, periods in (("before learning (all 4)", 4), ("after learning", learned)):
         sim = multicpg.Simulation(robot, periods=periods, disable="R1")
         sim.step(args.steps)
-        position = sim.record()["position"]
+        record = sim.record()
+        position = record["position"]
         ax.plot(position[:, 0], position[:, 1], label=label)
+    # Sideways drift of the learned gait: the distance from the line of the start heading.
+    heading = math.radians(record["yaw_deg"][0])
+    dx, dy = position[-1, 0] - position[0, 0], position[-1, 1] - position[0, 1]
+    drift = -dx * math.sin(heading) + dy * math.cos(heading)
+    forward = dx * math.cos(heading) + dy * math.sin(heading)
+    print(f"after learning: {forward:.2f} m forward, {drift:+.2f} m sideways (+ = left) "
+          f"in {args.steps} steps")
+    if result["options"]["mode"] == "paper":
+        print("paper mode judges one 400-step window's yaw change (paper §3): a gait can turn "
+              "little and still crab sideways; --mode robust also judges the path")
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     ax.set_aspect("equal", adjustable="datalim")
