@@ -54,8 +54,8 @@ constexpr int kQuickBetaMaxTrials = learning::kDefaultMaxTrials / 2;
 // of 20, a minute of CPU for a scenario that never holds).
 constexpr int kQuickPeriodsAloneTrials = 10;
 constexpr int kQuickPeriodsAloneEpisodes = 1;
-// The quick learner benchmark: 10 seeds per scenario and learner (the full one: 100), seconds.
-constexpr int kQuickBenchmarkSeeds = 10;
+// The quick learner benchmark: 3 seeds per scenario and learner (the full one: 100), seconds.
+constexpr int kQuickBenchmarkSeeds = 3;
 constexpr Sizes kQuick{1,
                        1,
                        1,
