@@ -38,10 +38,11 @@ struct BenchmarkOptions {
 };
 
 void run(const BenchmarkOptions& o) {
-  experiments::LearnerBenchmarkSpec spec = experiments::benchmark_spec(
-      o.dataset.empty() ? learning::repository_dataset(robot::RobotKind::hexapod)
-                        : std::filesystem::path(o.dataset));
-  const learning::LandscapeDataset probe = learning::read_landscape_dataset(spec.dataset);
+  const std::filesystem::path path = o.dataset.empty()
+                                         ? learning::repository_dataset(robot::RobotKind::hexapod)
+                                         : std::filesystem::path(o.dataset);
+  const learning::LandscapeDataset probe = learning::read_landscape_dataset(path);
+  experiments::LearnerBenchmarkSpec spec = experiments::benchmark_spec(path, probe);
   const robot::Morphology& morph = robot::morphology(probe.robot);
   spec.seeds = o.seeds;
   spec.seed = o.seed;

@@ -190,33 +190,13 @@ std::vector<sim::Event> result_events(const learning::LearningResult& r) {
   for (std::size_t i = 0; i < r.episodes.size(); ++i) {
     const learning::Episode& episode = r.episodes[i];
     const int number = static_cast<int>(i) + 1;
-    sim::Event detected;
-    detected.kind = sim::EventKind::detection;
+    sim::Event detected = learning::detection_event(number, episode.detection_deg, before);
     detected.step = episode.detection_step;
-    detected.episode = number;
-    detected.deviation_deg = episode.detection_deg;
-    detected.periods = before;
-    events.push_back(detected);
+    events.push_back(std::move(detected));
     for (int k = 0; k < episode.trials && next < r.trace.size(); ++k, ++next) {
-      const learning::TrialRecord& t = r.trace[next];
-      sim::Event trial;
-      trial.kind = sim::EventKind::trial_end;
-      trial.episode = number;
-      trial.trial = t.trial;
-      trial.periods = t.periods;
-      trial.deviation_deg = t.deviation_deg;
-      trial.accepted = t.accepted;
-      trial.details = t.details;
-      events.push_back(std::move(trial));
+      events.push_back(learning::trial_end_event(number, r.trace[next]));
     }
-    sim::Event done;
-    done.kind = sim::EventKind::episode_end;
-    done.episode = number;
-    done.trial = episode.trials;
-    done.periods = episode.periods;
-    done.deviation_deg = episode.final_deviation_deg;
-    done.accepted = episode.held;
-    events.push_back(std::move(done));
+    events.push_back(learning::episode_end_event(number, episode));
     before = episode.periods;
   }
   return events;

@@ -61,9 +61,10 @@ std::string printable(std::string_view text) {
 }
 
 std::optional<std::string> closest_name(std::string_view typed,
-                                        const std::vector<std::string>& known) {
+                                        const std::vector<std::string>& known,
+                                        std::size_t min_edits) {
   std::optional<std::string> best;
-  std::size_t best_distance = std::max<std::size_t>(1, typed.size() / kTypoFraction) + 1;
+  std::size_t best_distance = std::max(min_edits, typed.size() / kTypoFraction) + 1;
   for (const std::string& name : known) {
     const std::size_t d = edit_distance(typed, name);
     if (d < best_distance) {

@@ -2,6 +2,7 @@
 // "did you mean" of a mistyped name.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,8 +16,10 @@ namespace multicpg {
 std::string printable(std::string_view text);
 
 // The name of `known` closest to `typed` by edit distance, if it is close enough to be what the
-// user meant (at most a third of its length, at least 1, apart); ties go to the first.
+// user meant (at most a third of its length, and at least `min_edits`, apart); ties go to the
+// first.
 std::optional<std::string> closest_name(std::string_view typed,
-                                        const std::vector<std::string>& known);
+                                        const std::vector<std::string>& known,
+                                        std::size_t min_edits = 1);
 
 }  // namespace multicpg

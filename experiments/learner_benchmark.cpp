@@ -184,12 +184,12 @@ std::pair<double, double> wilson_interval(int successes, int n) {
           successes == n ? 1.0 : std::min(1.0, centre + half)};
 }
 
-LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& dataset) {
-  const learning::LandscapeDataset probe = learning::read_landscape_dataset(dataset);
+LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& path,
+                                    const learning::LandscapeDataset& dataset) {
   LearnerBenchmarkSpec spec;
-  spec.dataset = dataset;
-  spec.search.period_set = probe.period_set;
-  spec.search.threshold_deg = probe.threshold_deg;
+  spec.dataset = path;
+  spec.search.period_set = dataset.period_set;
+  spec.search.threshold_deg = dataset.threshold_deg;
   return spec;
 }
 

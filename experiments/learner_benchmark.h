@@ -74,9 +74,10 @@ std::pair<double, double> wilson_interval(int successes, int n);
 inline const std::vector<std::string> kBenchmarkLearners{"annealing", "random", "greedy", "bayes",
                                                          "prior"};
 
-// A spec for the dataset at `dataset`: its period set and threshold, the default protocol and
-// no learner yet. Throws BadInput for an unreadable dataset.
-LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& dataset);
+// A spec for `dataset`, read from `path`: its period set and threshold, the default protocol
+// and no learner yet.
+LearnerBenchmarkSpec benchmark_spec(const std::filesystem::path& path,
+                                    const learning::LandscapeDataset& dataset);
 // `asked` resolved for a benchmark over `dataset`: a learner that learns from landscapes and is
 // not told which learns from the other scenarios of this dataset. Throws OptionError as
 // learning::resolve_learner does.

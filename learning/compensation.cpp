@@ -206,6 +206,38 @@ void validate_faults(const CompensationOptions& options, const sim::FaultTimelin
   }
 }
 
+sim::Event detection_event(int episode, double deviation_deg, const Periods& periods) {
+  sim::Event e;
+  e.kind = sim::EventKind::detection;
+  e.episode = episode;
+  e.deviation_deg = deviation_deg;
+  e.periods = periods;
+  return e;
+}
+
+sim::Event trial_end_event(int episode, const TrialRecord& trial) {
+  sim::Event e;
+  e.kind = sim::EventKind::trial_end;
+  e.episode = episode;
+  e.trial = trial.trial;
+  e.periods = trial.periods;
+  e.deviation_deg = trial.deviation_deg;
+  e.accepted = trial.accepted;
+  e.details = trial.details;
+  return e;
+}
+
+sim::Event episode_end_event(int episode, const Episode& ended) {
+  sim::Event e;
+  e.kind = sim::EventKind::episode_end;
+  e.episode = episode;
+  e.trial = ended.trials;
+  e.periods = ended.periods;
+  e.deviation_deg = ended.final_deviation_deg;
+  e.accepted = ended.held;
+  return e;
+}
+
 namespace {
 
 // Tells the walker's observer that a trial starts (kind trial_start) or was decided (trial_end).
@@ -215,18 +247,6 @@ void emit_trial_start(Walker& walker, int episode, int trial, const Periods& per
   e.episode = episode;
   e.trial = trial;
   e.periods = periods;
-  walker.emit(e);
-}
-
-void emit_trial_end(Walker& walker, int episode, const TrialRecord& t) {
-  sim::Event e;
-  e.kind = sim::EventKind::trial_end;
-  e.episode = episode;
-  e.trial = t.trial;
-  e.periods = t.periods;
-  e.deviation_deg = t.deviation_deg;
-  e.accepted = t.accepted;
-  e.details = t.details;
   walker.emit(e);
 }
 
@@ -266,18 +286,6 @@ LearnerSetup learner_setup(const Walker& walker, const CompensationOptions& opti
   return setup;
 }
 
-// Tells the walker's observer that episode `number` ended, held or not.
-void emit_episode_end(Walker& walker, int number, const Episode& episode) {
-  sim::Event done;
-  done.kind = sim::EventKind::episode_end;
-  done.episode = number;
-  done.trial = episode.trials;
-  done.periods = episode.periods;
-  done.deviation_deg = episode.final_deviation_deg;
-  done.accepted = episode.held;
-  walker.emit(done);
-}
-
 LearningResult compensate_paper(Walker& walker, const CompensationOptions& options) {
   const neural::ControllerModel& model = walker.controller_model();
   LearningResult result;
@@ -306,12 +314,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
     return result;
   }
   result.detection_step = walk.walked();
-  sim::Event detected;
-  detected.kind = sim::EventKind::detection;
-  detected.episode = 1;
-  detected.deviation_deg = e;
-  detected.periods = result.periods;
-  walker.emit(detected);
+  walker.emit(detection_event(1, e, result.periods));
 
   // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(walker.controller(), false);
@@ -331,7 +334,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
     });
   };
   hooks.decided = [&](const TrialRecord& t) {
-    emit_trial_end(walker, 1, t);
+    walker.emit(trial_end_event(1, t));
     return budget.used_up();
   };
   EpisodeEnd end = run_episode(*learner, hooks);
@@ -357,7 +360,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   episode.reason = result.reason;
   episode.periods = result.periods;
   episode.final_deviation_deg = result.final_deviation_deg;
-  emit_episode_end(walker, 1, episode);
+  walker.emit(episode_end_event(1, episode));
   result.episodes.push_back(std::move(episode));
   return result;
 }
@@ -458,12 +461,7 @@ class RobustRun {
       result_.detection_step = ep.detection_step;
       result_.initial_deviation_deg = detection_deg;
     }
-    sim::Event detected;
-    detected.kind = sim::EventKind::detection;
-    detected.episode = number;
-    detected.deviation_deg = detection_deg;
-    detected.periods = periods();
-    walker_.emit(detected);
+    walker_.emit(detection_event(number, detection_deg, periods()));
 
     neural::set_synchronised(walker_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
@@ -481,7 +479,7 @@ class RobustRun {
       });
     };
     hooks.decided = [&](const TrialRecord& t) {
-      emit_trial_end(walker_, number, t);
+      walker_.emit(trial_end_event(number, t));
       if (walk_.take_fault_count() > 0) ep.interrupted = true;
       return ep.interrupted || budget_.used_up();
     };
@@ -494,7 +492,7 @@ class RobustRun {
     ep.final_deviation_deg = end.answer.deviation_deg;
     for (TrialRecord& t : end.trace) result_.trace.push_back(std::move(t));
     result_.trials += end.trials;
-    emit_episode_end(walker_, number, ep);
+    walker_.emit(episode_end_event(number, ep));
     result_.episodes.push_back(std::move(ep));
   }
 

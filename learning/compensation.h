@@ -200,6 +200,12 @@ struct LearningResult {
 // - with Steering::reflex, learning/steering.h holds the course set where the run started.
 LearningResult compensate(Walker& walker, const CompensationOptions& options);
 
+// The observer's events of a learning run (sim/events.h), as compensate emits them and as a
+// recorded result is replayed (its detections, decided trials and episode ends).
+sim::Event detection_event(int episode, double deviation_deg, const Periods& periods);
+sim::Event trial_end_event(int episode, const TrialRecord& trial);
+sim::Event episode_end_event(int episode, const Episode& ended);
+
 // JSON with converged, status, reason, trials, initial/final_deviation_deg, periods
 // (leg name -> period), disabled (names), steps_walked, detection_step (null if none),
 // settle_steps and trace (trial, periods, deviation_deg, accepted, acceptance_probability,

@@ -26,8 +26,7 @@ bool is_text(py::handle value) {
 int gait_period(py::handle value, std::string_view name) {
   const long long p = whole(value, name, Limits<long long>{neural::kMinPeriod, neural::kMaxPeriod});
   if (!robot::is_gait_period(static_cast<int>(p))) {
-    value_error(
-        name, fmt::format("period {} gives no gait (allowed: {})", p, robot::gait_periods_text()));
+    value_error(name, robot::no_gait_message(static_cast<int>(p)));
   }
   return static_cast<int>(p);
 }

@@ -1,49 +1,28 @@
 #include "python/keywords.h"
 
-#include <algorithm>
-#include <numeric>
+#include <optional>
 #include <stdexcept>
+
+#include "common/user_text.h"
 
 namespace multicpg::python {
 namespace {
 
-// Edits (insertions, deletions, substitutions) between two names.
-std::size_t distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  std::iota(row.begin(), row.end(), std::size_t{0});
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1 : 0)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
-// A name this many edits away, or one third of its length, is a typing slip.
+// A keyword this many edits away (or a third of its length, if more) is a typing slip.
 constexpr std::size_t kNearEdits = 2;
-constexpr std::size_t kNearFraction = 3;
+// A typed keyword at least this long that begins a known one ("max_trial") is near too.
+constexpr std::size_t kPrefixLength = 3;
 
 }  // namespace
 
 std::string suggestion(std::string_view name, const std::vector<std::string>& known) {
-  const std::string* best = nullptr;
-  std::size_t best_distance = 0;
-  for (const std::string& k : known) {
-    const std::size_t d = distance(name, k);
-    if (best == nullptr || d < best_distance) {
-      best = &k;
-      best_distance = d;
+  std::optional<std::string> near = closest_name(name, known, kNearEdits);
+  if (!near && name.size() >= kPrefixLength) {
+    for (const std::string& k : known) {
+      if (k.starts_with(name) && (!near || k.size() < near->size())) near = k;
     }
   }
-  const std::size_t near = std::max(kNearEdits, name.size() / kNearFraction);
-  // A prefix ("max_trial" for "max_trials") is near too.
-  const bool prefix = best != nullptr && best->starts_with(name) && name.size() >= 3;
-  if (best == nullptr || (best_distance > near && !prefix)) return "";
-  return "did you mean '" + *best + "'?";
+  return near ? "did you mean '" + *near + "'?" : "";
 }
 
 py::object Keywords::operator[](std::string_view name) const {

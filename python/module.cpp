@@ -64,11 +64,11 @@ PYBIND11_MODULE(_multicpg, m) {
   m.def(
       "build_info",
       [] {
-        const nlohmann::json p = multicpg::provenance(mj_versionString());
-        return py::dict(arg("version") = MULTICPG_VERSION,
-                        arg("git_commit") = p.at("git_commit").get<std::string>(),
-                        arg("mujoco_version") = p.at("mujoco_version").get<std::string>(),
-                        arg("compiler") = std::string(__VERSION__),
+        const nlohmann::json info = multicpg::build_info(mj_versionString());
+        return py::dict(arg("version") = info.at("version").get<std::string>(),
+                        arg("git_commit") = info.at("git_commit").get<std::string>(),
+                        arg("mujoco_version") = info.at("mujoco_version").get<std::string>(),
+                        arg("compiler") = info.at("compiler").get<std::string>(),
                         arg("pybind11_version") = std::to_string(PYBIND11_VERSION_MAJOR) + "." +
                                                   std::to_string(PYBIND11_VERSION_MINOR) + "." +
                                                   std::to_string(PYBIND11_VERSION_PATCH));

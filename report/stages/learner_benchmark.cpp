@@ -62,9 +62,10 @@ Section learner_benchmark_stage(const StageContext& ctx) {
   std::size_t scenarios = 0;
   int holding_scenarios = 0;
   // The two trial protocols compared: robust mode's default, and every window of the dataset.
-  const int every_window = learning::read_landscape_dataset(dataset).windows;
+  const learning::LandscapeDataset landscapes = learning::read_landscape_dataset(dataset);
+  const int every_window = landscapes.windows;
   for (const int windows : {learning::kDefaultHoldWindows, every_window}) {
-    experiments::LearnerBenchmarkSpec spec = experiments::benchmark_spec(dataset);
+    experiments::LearnerBenchmarkSpec spec = experiments::benchmark_spec(dataset, landscapes);
     spec.seeds = ctx.sizes.benchmark_seeds;
     spec.seed = ctx.options.seed;
     spec.protocol.hold_windows = windows;
