@@ -20,7 +20,7 @@ void add_plot_flag(CLI::App& cmd, std::string& path) {
                  "and its axis), the learning trace, a gait strip of the last steps");
 }
 
-void PlotOutput::Recorder::on_start(const sim::SimModel& model, const sim::SimState& state) {
+void PlotRecorder::on_start(const sim::SimModel& model, const sim::SimState& state) {
   if (picture_.legs.empty()) {
     for (const robot::Leg& leg : model.controller.morphology.legs)
       picture_.legs.push_back(leg.name);
@@ -28,7 +28,7 @@ void PlotOutput::Recorder::on_start(const sim::SimModel& model, const sim::SimSt
   on_step(model, state);
 }
 
-void PlotOutput::Recorder::on_step(const sim::SimModel& model, const sim::SimState& state) {
+void PlotRecorder::on_step(const sim::SimModel& model, const sim::SimState& state) {
   const sim::Position p = sim::trunk_position(model, state);
   picture_.path.push_back({p.x, p.y});
   std::vector<bool> feet(picture_.legs.size());

@@ -18,6 +18,23 @@ namespace multicpg::apps {
 // Adds --plot, bound to `path`.
 void add_plot_flag(CLI::App& cmd, std::string& path);
 
+// The run as --plot records it: its trunk path and its feet's contact over the last steps. At
+// namespace scope, not nested in PlotOutput: clang cannot use a nested class's default member
+// initialisers (steps_) before the enclosing class is complete, which std::optional needs.
+class PlotRecorder final : public sim::Observer {
+ public:
+  void on_start(const sim::SimModel& model, const sim::SimState& state) override;
+  void on_step(const sim::SimModel& model, const sim::SimState& state) override;
+  report::RunPicture& picture() { return picture_; }
+  std::deque<std::vector<bool>>& contact() { return contact_; }
+  long steps() const { return steps_; }
+
+ private:
+  report::RunPicture picture_;
+  std::deque<std::vector<bool>> contact_;  // the last steps' contact, [step][leg]
+  long steps_ = 0;                         // rows recorded
+};
+
 class PlotOutput {
  public:
   // Checks the path before any work (BadInput naming --plot).
@@ -33,22 +50,8 @@ class PlotOutput {
   void write();
 
  private:
-  class Recorder final : public sim::Observer {
-   public:
-    void on_start(const sim::SimModel& model, const sim::SimState& state) override;
-    void on_step(const sim::SimModel& model, const sim::SimState& state) override;
-    report::RunPicture& picture() { return picture_; }
-    std::deque<std::vector<bool>>& contact() { return contact_; }
-    long steps() const { return steps_; }
-
-   private:
-    report::RunPicture picture_;
-    std::deque<std::vector<bool>> contact_;  // the last steps' contact, [step][leg]
-    long steps_ = 0;                         // rows recorded
-  };
-
   std::string path_;
-  std::optional<Recorder> recorder_;
+  std::optional<PlotRecorder> recorder_;
 };
 
 }  // namespace multicpg::apps

@@ -20,6 +20,7 @@ std::string cell(const json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
   if (v.is_string()) return v.get<std::string>();
   if (v.is_array() || v.is_object()) return value_text(v);
+  return v.dump();  // integers
 }
 
 // The columns every CSV row of a run starts with: key, scenario, run, seed, grid values.

@@ -11,11 +11,16 @@
 #include "experiments/sweep.h"
 // GCC 12 inlines the type macro's default object of CompensationOptions here and warns that its
 // std::optional settle_steps may be uninitialized, which it is not: a known false positive of
-// -Wmaybe-uninitialized with std::optional, silenced for this header's from_json alone.
+// -Wmaybe-uninitialized with std::optional, silenced for this header's from_json alone (clang
+// has no such warning).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include "learning/json.h"
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 #include "robot/leg_sets.h"
 #include "sim/course_json.h"
 #include "sim/fault_spec.h"
