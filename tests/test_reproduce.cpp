@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "tests/cli_runner.h"
@@ -75,6 +76,10 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
         << section;
   }
   EXPECT_NE(index.find("hit the right wall, ≈-42°"), std::string::npos);
+  // Fig. 14's claim holds in the quick study too (fewer β values, one run each, seed 1).
+  const nlohmann::json beta =
+      nlohmann::json::parse(read_file((root / "sections" / "beta.json").string()));
+  EXPECT_EQ(beta.at("verdicts").at(0).at("reproduced"), "yes") << beta.at("measured");
   EXPECT_EQ(index.find("° right"), std::string::npos);
 
   std::string log;

@@ -21,7 +21,9 @@ namespace multicpg::report {
 // with --quick, a few.
 struct Sizes {
   int hexapod_runs, quadruped_runs, beta_runs;
-  int beta_max_trials;    // trial cap of the β study's runs (paper: 200)
+  int beta_max_trials;  // trial cap of the β study's runs (paper: 200)
+  // The β values of the study; empty = the paper's (Fig. 14, experiments::kBetaStudyValues).
+  std::span<const double> beta_values;
   int film_speed;         // controller steps per video frame of the learning film
   int tunnel_film_speed;  // and of the tunnel films (slower: the walls are the point)
   long walk_film_steps;   // steps of the walking videos, filmed in real time
