@@ -1,7 +1,8 @@
-"""Python misuse never takes the interpreter down: each case runs in its own interpreter, which
-must exit normally having caught the expected ValueError, TypeError or RuntimeError, whose
-message names the parameter as the call wrote it (never a CLI flag, never a pybind11 cast
-message)."""
+"""Python misuse never takes the interpreter down: the cases run one after another in two
+interpreters, each of which must catch every case's expected ValueError, TypeError or
+RuntimeError and go on to the next case and exit normally; the message names the parameter as
+the call wrote it (never a CLI flag, never a pybind11 cast message). A case that crashes the
+interpreter ends it by a signal and fails with every case it had not yet reported."""
 
 import concurrent.futures
 import json
@@ -11,8 +12,8 @@ import sys
 
 import pytest
 
-# Runs one case: `setup` then `call`; prints what it raised. Any other exception exits 1, a
-# crash ends the process by a signal; both fail the case.
+# Runs its cases in turn: `setup` then `call`; prints what each raised, one JSON line per case.
+# Any other exception exits 1, a crash ends the process by a signal; both fail the cases left.
 WRAPPER = r"""
 import json, pickle, sys
 import numpy as np
@@ -29,15 +30,15 @@ def fnv1a64(data):
 def sealed(payload):
     return payload + fnv1a64(payload).to_bytes(8, "little")
 
-case = json.loads(sys.argv[1])
-scope = dict(globals())
-exec(case["setup"], scope)
-try:
-    exec(case["call"], scope)
-except (ValueError, TypeError, RuntimeError) as e:
-    print(json.dumps({"type": type(e).__name__, "message": str(e)}))
-    sys.exit(0)
-print(json.dumps({"type": None, "message": ""}))
+for case in json.loads(sys.argv[1]):
+    scope = dict(globals())
+    exec(case["setup"], scope)
+    try:
+        exec(case["call"], scope)
+        raised = {"type": None, "message": ""}
+    except (ValueError, TypeError, RuntimeError) as e:
+        raised = {"type": type(e).__name__, "message": str(e)}
+    print(json.dumps({"id": case["id"], **raised}), flush=True)
 """
 
 SIM = "sim = Simulation('hexapod', warmup=0)"
@@ -240,20 +241,24 @@ CASES = [
 ]
 
 
-def run_case(case):
-    _, setup, call, _, _ = case
-    done = subprocess.run(
-        [sys.executable, "-c", WRAPPER, json.dumps({"setup": setup, "call": call})],
-        capture_output=True, text=True, timeout=120)
-    return done
+def run_cases(cases):
+    payload = [{"id": c[0], "setup": c[1], "call": c[2]} for c in cases]
+    return subprocess.run([sys.executable, "-c", WRAPPER, json.dumps(payload)],
+                          capture_output=True, text=True, timeout=300)
 
 
 @pytest.fixture(scope="module")
 def outcomes():
-    # Two at a time: each case is its own interpreter (import, a robot, the call).
-    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        done = pool.map(run_case, CASES)
-        return {case[0]: result for case, result in zip(CASES, done)}
+    # Two interpreters at a time, each importing multicpg once and taking every other case.
+    halves = [CASES[0::2], CASES[1::2]]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=len(halves)) as pool:
+        done = list(pool.map(run_cases, halves))
+    reported = {}
+    for process in done:
+        for line in process.stdout.splitlines():
+            raised = json.loads(line)
+            reported[raised.pop("id")] = raised
+    return reported, done
 
 
 def test_the_table_is_large_and_its_ids_unique():
@@ -261,12 +266,19 @@ def test_the_table_is_large_and_its_ids_unique():
     assert len({case[0] for case in CASES}) == len(CASES)
 
 
+def test_every_interpreter_survives_its_cases(outcomes):
+    _, processes = outcomes
+    for p in processes:
+        assert p.returncode == 0, f"exit {p.returncode}\n{p.stderr}"
+
+
 @pytest.mark.parametrize("case", CASES, ids=[case[0] for case in CASES])
 def test_misuse_raises_naming_the_parameter(case, outcomes):
     name, _, call, expected, mention = case
-    done = outcomes[name]
-    assert done.returncode == 0, f"{call}: exit {done.returncode}\n{done.stderr}"
-    raised = json.loads(done.stdout.strip().splitlines()[-1])
+    reported, processes = outcomes
+    assert name in reported, f"{call}: never reported\n" + "\n".join(
+        f"exit {p.returncode}: {p.stderr}" for p in processes)
+    raised = reported[name]
     assert raised["type"] == expected, f"{call}: {raised}"
     message = raised["message"]
     assert mention in message, f"{call}: {message!r} does not name {mention!r}"
