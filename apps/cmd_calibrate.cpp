@@ -115,11 +115,11 @@ void print_summary(const experiments::Calibration& cal, const std::string& out,
 void run(const CalibrateOptions& o) {
   experiments::CalibrationSpec spec;
   spec.target = experiments::parse_calibration_target(o.target);
-  spec.robot = robot::parse_robot(o.robot);
-  if (spec.robot != robot::RobotKind::hexapod) {
+  spec.robot.kind = robot::parse_robot(o.robot);
+  if (spec.robot.kind != robot::RobotKind::hexapod) {
     throw BadInput("--robot: Table 1 is the hexapod's; got " + o.robot);
   }
-  spec.sim = sim_options(o.sim, o.body, spec.robot);
+  spec.robot.sim = sim_options(o.sim, o.body, spec.robot.kind);
   if (o.search.empty()) {
     spec.params = experiments::default_searched_params();
   } else {

@@ -28,7 +28,8 @@ struct EmulateOptions {
 
 void run_emulate(const EmulateOptions& o) {
   const experiments::RunSpec spec = run_spec(o.run, /*learn=*/false);
-  const hw::HardwareFile file = hw::load_hardware_file(o.hardware, experiments::morphology(spec));
+  const hw::HardwareFile file =
+      hw::load_hardware_file(o.hardware, experiments::morphology(spec.robot));
   if (!o.protocol.empty() && hw::parse_protocol(o.protocol) != file.protocol) {
     throw BadInput("--protocol " + o.protocol + ": the hardware file '" + o.hardware + "' speaks " +
                    std::string(hw::to_string(file.protocol)));
@@ -45,13 +46,13 @@ void run_emulate(const EmulateOptions& o) {
   emulator.wire_time = o.wire_time;
   emulator.log = o.log;
   if (!o.rehearsal.empty()) require_writable_file(o.rehearsal);
-  const sim::SimModel model = experiments::make_run_model(spec);
+  const sim::SimModel model = experiments::make_model(spec.robot);
   hw::Emulator emu(model, file, emulator);
   if (!o.rehearsal.empty()) {
     write_file_atomic(o.rehearsal, hw::with_ports(file.path, emu.bus_path(), emu.yaw_path()));
   }
   std::cout << "emulating " << file.name << " (" << hw::to_string(file.protocol) << ") on the "
-            << experiments::morphology(spec).name << "\nbus " << emu.bus_path() << "\n";
+            << experiments::morphology(spec.robot).name << "\nbus " << emu.bus_path() << "\n";
   if (!emu.yaw_path().empty()) std::cout << "yaw " << emu.yaw_path() << "\n";
   if (!o.rehearsal.empty()) std::cout << "rehearsal file " << o.rehearsal << "\n";
   std::cout << std::flush;

@@ -34,14 +34,14 @@ struct ExperimentOptions {
 
 experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
   experiments::ExperimentSpec spec;
-  spec.kind = kind;
+  spec.robot.kind = kind;
   spec.runs = o.runs;
   spec.seed = o.learning.options.seed;
   spec.jobs = o.jobs.value_or(0);
   spec.out = o.out;
   spec.base = learning_options(o.learning);  // checked with each run (resolve_sweep)
   spec.check_windows = o.check_windows;
-  spec.sim = sim_options(o.sim, o.body, kind);
+  spec.robot.sim = sim_options(o.sim, o.body, kind);
   spec.limits.max_runs = o.max_runs;
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
@@ -96,7 +96,7 @@ void register_experiment(CLI::App& app) {
     if (sim::is_robot_file(table->robot)) {
       const auto file = experiments::load_run_robot_file(table->robot);
       experiments::ExperimentSpec spec = spec_of(*table, file->file.layout);
-      spec.robot_file = file;
+      spec.robot.file = file;
       print_table(experiments::run_scenario_table(spec), table->out);
       return;
     }

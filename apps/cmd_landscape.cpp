@@ -19,7 +19,6 @@
 #include "experiments/sweep.h"
 #include "report/landscape_figure.h"
 #include "robot/leg_sets.h"
-#include "sim/robot_file.h"
 
 namespace multicpg::apps {
 namespace {
@@ -53,13 +52,8 @@ std::vector<learning::Periods> read_learned(const std::string& path,
 
 void run(const LandscapeOptions& o) {
   experiments::LandscapeSpec spec;
-  if (sim::is_robot_file(o.robot)) {
-    spec.robot_file = experiments::load_run_robot_file(o.robot);
-    spec.kind = spec.robot_file->file.layout;
-  } else {
-    spec.kind = robot::parse_robot(o.robot);
-  }
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  spec.robot = experiments::named_robot(o.robot);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   if (o.every_loss && !o.disable.empty()) {
     throw BadInput("--every-loss: walks every leg set itself; leave out --disable");
   }
@@ -74,7 +68,7 @@ void run(const LandscapeOptions& o) {
   spec.period_set = o.period_set;
   spec.windows = o.windows;
   spec.threshold_deg = o.threshold;
-  spec.sim = sim_options(o.sim, o.body, spec.kind);
+  spec.robot.sim = sim_options(o.sim, o.body, spec.robot.kind);
   if (!o.every_loss) experiments::validate(spec);
   if (o.jobs && *o.jobs < 1) {
     throw BadInput("--jobs must be at least 1, got " + std::to_string(*o.jobs));
@@ -93,7 +87,7 @@ void run(const LandscapeOptions& o) {
 void report_landscape(const experiments::Landscape& landscape,
                       const std::vector<learning::Periods>& learned, const std::string& out) {
   const experiments::LandscapeSpec& spec = landscape.spec;
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const report::FigureFiles figure = report::draw_landscape(landscape, learned, out);
   const nlohmann::json summary = experiments::landscape_summary(landscape, learned);
   std::cout << std::fixed << std::setprecision(1) << morph.name << ", "
@@ -130,7 +124,7 @@ void run_landscapes_and_report(const std::vector<experiments::LandscapeSpec>& sp
   for (const experiments::Landscape& l : landscapes) {
     report::draw_landscape(l, {}, experiments::landscape_set_dir(out, l.spec));
   }
-  const robot::Morphology& morph = robot::morphology(specs.front().kind);
+  const robot::Morphology& morph = experiments::morphology(specs.front().robot);
   std::cout << morph.name << ", " << specs.size()
             << " scenarios (share of combinations that hold):\n";
   std::cout << std::fixed << std::setprecision(1);

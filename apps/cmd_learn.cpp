@@ -78,7 +78,7 @@ void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& sp
   if (!o.out.empty()) {
     ensure_writable_dir(o.out);
     steps.emplace(dir / "hardware.csv");
-    rows.emplace(steps->stream(), setup.file, experiments::morphology(spec));
+    rows.emplace(steps->stream(), setup.file, experiments::morphology(spec.robot));
   }
   const hw::StoppedSink record = stopped_record(o.json, "");
   const auto stopped = [&](const nlohmann::json& j) {
@@ -96,8 +96,8 @@ void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& sp
   json["hardware"] = learned.hardware;
   if (!o.out.empty()) {
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
-    write_file_atomic(dir / "trace.csv",
-                      trace_csv(experiments::morphology(spec), spec.learning->learner, run.result));
+    write_file_atomic(dir / "trace.csv", trace_csv(experiments::morphology(spec.robot),
+                                                   spec.learning->learner, run.result));
     steps->commit();
   }
   if (o.json) {
@@ -119,7 +119,7 @@ void run_learn(const LearnOptions& o) {
     run_learn_on_hardware(o, spec);
     return;
   }
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const std::filesystem::path dir(o.out);
   // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
   // only when the run has ended well (common/atomic_file.h).
@@ -132,7 +132,7 @@ void run_learn(const LearnOptions& o) {
     steps.emplace(dir / "steps.csv");
     rows.emplace(steps->stream(), morph, (dir / "steps.csv").string());
   }
-  const sim::SimModel model = experiments::make_run_model(spec);
+  const sim::SimModel model = experiments::make_model(spec.robot);
 
   // The table streams as the robot learns: the header now, each trial as it is decided
   // (--json prints one object at the end instead).

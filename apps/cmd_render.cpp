@@ -32,8 +32,8 @@ void run_render(const RenderOptions& o) {
   report::film_format(o.out);  // an unknown file type fails before any work
   ReplayOutput replay(o.replay);
   experiments::RunSpec run = run_spec(o.run, o.learn);
-  run.sim.scene.tunnel = o.tunnel;
-  const sim::SimModel model = experiments::make_run_model(run);
+  run.robot.sim.scene.tunnel = o.tunnel;
+  const sim::SimModel model = experiments::make_model(run.robot);
   report::FilmSpec spec;
   spec.out = o.out;
   spec.width = o.width;

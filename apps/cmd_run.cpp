@@ -119,7 +119,7 @@ void rerun(const RerunOptions& o) {
   const experiments::RunSpec& spec = planned->spec;
   nlohmann::json result;
   if (!o.film.empty()) {
-    const sim::SimModel model = experiments::make_run_model(spec);
+    const sim::SimModel model = experiments::make_model(spec.robot);
     report::FilmSpec film_spec;
     film_spec.out = o.film;
     report::Film film(model, film_spec);

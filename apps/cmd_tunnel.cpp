@@ -49,9 +49,9 @@ void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& 
   if (o.scale_tunnel)
     throw BadInput("--scale-tunnel scales the simulated tunnel; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const hw::HardwareTunnel t = hw::tunnel_on_hardware(
-      spec, setup, o.max_steps, spec.sim.scene.tunnel_length, stopped_record(o.json, ""));
+      spec, setup, o.max_steps, spec.robot.sim.scene.tunnel_length, stopped_record(o.json, ""));
   const std::vector<std::size_t> disabled = sim::failed_after(morph, spec.faults);
   const auto optional = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
   if (o.json) {
@@ -67,7 +67,7 @@ void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& 
       j["learning"] = learning::to_json(*t.learned, morph, disabled);
       j["options"] = experiments::learning_record(*spec.learning, spec.faults);
     }
-    experiments::record_robot_file(j, spec);
+    experiments::record_robot_file(j, spec.robot);
     std::cout << j.dump(2) << "\n";
     return;
   }
@@ -114,7 +114,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
       throw BadInput("--scale-tunnel: " + e.key() + " " + e.what());
     }
   }
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const sim::SimModel corridor = experiments::tunnel_model(spec);
   std::optional<report::Film> film;
   std::optional<report::FilmObserver> observer;

@@ -36,7 +36,7 @@ void run_view(const ViewOptions& o, bool steps_given) {
     spec.steps = o.steps;
   }
 
-  const sim::SimModel model = experiments::make_run_model(run);
+  const sim::SimModel model = experiments::make_model(run.robot);
   const long steps = report::run_viewer(model, spec);
   std::cout << "viewed " << steps << " steps (" << static_cast<double>(steps) * model.control_dt
             << " s simulated)\n";

@@ -124,7 +124,7 @@ void run_walk_on_hardware(const WalkOptions& o, const experiments::RunSpec& spec
   if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
   if (!o.plot.empty()) throw BadInput("--plot draws the simulation; not with --hardware");
   const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   std::optional<AtomicFile> csv;
   std::optional<hw::StepCsv> rows;
   if (!o.csv.empty()) {
@@ -158,7 +158,7 @@ void run_walk_on_hardware(const WalkOptions& o, const experiments::RunSpec& spec
         {"windows", windows},
         {"final_yaw_deg", w.final_yaw_deg},
         {"hardware", w.hardware}};
-    experiments::record_robot_file(json, spec);
+    experiments::record_robot_file(json, spec.robot);
     std::cout << json.dump(2) << "\n";
     return;
   }
@@ -185,7 +185,7 @@ void run_walk(const WalkOptions& o) {
     run_walk_on_hardware(o, run_spec);
     return;
   }
-  const robot::Morphology& morph = experiments::morphology(run_spec);
+  const robot::Morphology& morph = experiments::morphology(run_spec.robot);
   Run run{&morph, {}, 0.0, 0.0};
   sim::WalkSpec& spec = run.spec;
   spec.start = run_spec.start;
@@ -207,7 +207,7 @@ void run_walk(const WalkOptions& o) {
   sim::Observers observers({rows ? &*rows : nullptr, replay.observer(), plot.observer()});
   spec.observer = &observers;
 
-  const sim::SimModel model = experiments::make_run_model(run_spec);
+  const sim::SimModel model = experiments::make_model(run_spec.robot);
   run.control_dt = model.control_dt;
   run.physics_dt = model.physics_dt;
   sim::WalkResult result;
@@ -221,7 +221,7 @@ void run_walk(const WalkOptions& o) {
   plot.write();
   if (o.json) {
     nlohmann::json json = to_json(run, result);
-    experiments::record_robot_file(json, run_spec);
+    experiments::record_robot_file(json, run_spec.robot);
     std::cout << json.dump(2) << "\n";
   } else {
     print_summary(std::cout, run, result);

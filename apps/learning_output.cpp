@@ -67,7 +67,7 @@ void print_best_trial(std::ostream& out, const experiments::RunSpec& spec,
       r.trace.begin(), r.trace.end(),
       [](const auto& a, const auto& b) { return a.deviation_deg < b.deviation_deg; });
   out << "best trial measured: " << (best - r.trace.begin()) + 1 << ", "
-      << robot::period_map_text(experiments::morphology(spec), best->periods,
+      << robot::period_map_text(experiments::morphology(spec.robot), best->periods,
                                 sim::failing_legs(spec.faults))
       << ", E " << degrees(best->deviation_deg) << "\n";
 }
@@ -79,20 +79,20 @@ std::string counted(long n, const std::string& noun) {
 }
 
 std::string robot_text(const experiments::RunSpec& spec) {
-  const std::string layout = experiments::morphology(spec).name;
-  if (!spec.robot_file) return layout;
-  return layout + " from " + spec.robot_file->record.path + " (" + spec.robot_file->record.name +
+  const std::string layout = experiments::morphology(spec.robot).name;
+  if (!spec.robot.file) return layout;
+  return layout + " from " + spec.robot.file->record.path + " (" + spec.robot.file->record.name +
          ")";
 }
 
 std::string world_text(const experiments::RunSpec& spec) {
-  std::string text = "terrain " + robot::terrain_text(spec.sim.scene.terrain) + ", ";
-  if (spec.robot_file) return text + "body from the robot file's model";
-  return text + "body model " + std::string(robot::to_string(spec.sim.model));
+  std::string text = "terrain " + robot::terrain_text(spec.robot.sim.scene.terrain) + ", ";
+  if (spec.robot.file) return text + "body from the robot file's model";
+  return text + "body model " + std::string(robot::to_string(spec.robot.sim.model));
 }
 
 void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, long settle_steps) {
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const learning::CompensationOptions& options = *spec.learning;
   out << robot_text(spec) << ", " << learning::to_string(options.mode) << " mode";
   if (options.mode == learning::Mode::robust) {
@@ -119,7 +119,7 @@ LearningTable::LearningTable(std::ostream& out, const experiments::RunSpec& spec
     : out_(out), spec_(spec), disabled_(sim::failing_legs(spec.faults)) {}
 
 void LearningTable::event(const sim::Event& e) {
-  const robot::Morphology& morph = experiments::morphology(spec_);
+  const robot::Morphology& morph = experiments::morphology(spec_.robot);
   const double threshold = spec_.learning->annealing.threshold_deg;
   switch (e.kind) {
     case sim::EventKind::fault:
@@ -204,7 +204,7 @@ std::vector<sim::Event> result_events(const learning::LearningResult& r) {
 
 void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
                         const learning::LearningResult& r) {
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const learning::CompensationOptions& options = *spec.learning;
   const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
   const double threshold = options.annealing.threshold_deg;

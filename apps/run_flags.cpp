@@ -9,7 +9,6 @@
 #include "common/errors.h"
 #include "robot/leg_sets.h"
 #include "sim/fault_spec.h"
-#include "sim/robot_file.h"
 #include "sim/walk.h"
 
 namespace multicpg::apps {
@@ -123,14 +122,9 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
 
 experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   experiments::RunSpec spec;
-  if (sim::is_robot_file(f.robot)) {
-    spec.robot_file = experiments::load_run_robot_file(f.robot);
-    spec.robot = spec.robot_file->file.layout;
-  } else {
-    spec.robot = robot::parse_robot(f.robot);
-  }
-  const robot::Morphology& morph = robot::morphology(spec.robot);
-  spec.sim = with_body(f.sim, f.body);
+  spec.robot = experiments::named_robot(f.robot);
+  spec.robot.sim = with_body(f.sim, f.body);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   spec.faults = parse_faults(morph, f);
   if (learn) {
     spec.learning = learning_options(f.learning);

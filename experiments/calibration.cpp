@@ -213,11 +213,15 @@ std::vector<SearchedParam> default_searched_params() {
 }
 
 void validate(const CalibrationSpec& spec) {
-  if (spec.robot != robot::RobotKind::hexapod) {
-    throw OptionError(
-        "robot", "Table 1 is the hexapod's; got the " + std::string(robot::to_string(spec.robot)));
+  if (spec.robot.kind != robot::RobotKind::hexapod) {
+    throw OptionError("robot", "Table 1 is the hexapod's; got the " +
+                                   std::string(robot::to_string(spec.robot.kind)));
   }
-  within("sim", [&] { sim::validate(spec.sim, spec.robot); });
+  if (spec.robot.file) {
+    throw OptionError("robot", "Table 1 is the built-in hexapod's; got the robot file '" +
+                                   spec.robot.file->record.path + "'");
+  }
+  validate(spec.robot);
   if (spec.params.empty()) throw OptionError("params", "search at least one parameter");
   std::set<std::string> seen;
   for (std::size_t i = 0; i < spec.params.size(); ++i) {
@@ -251,7 +255,7 @@ void validate(const CalibrationSpec& spec) {
 }
 
 robot::BodyParams body_at(const CalibrationSpec& spec, const std::vector<double>& u) {
-  robot::BodyParams body = spec.sim.body;
+  robot::BodyParams body = spec.robot.sim.body;
   for (std::size_t i = 0; i < spec.params.size(); ++i) {
     const SearchedParam& p = spec.params[i];
     const double t = std::clamp(u.at(i), 0.0, 1.0);
@@ -285,11 +289,11 @@ double CandidateNumbers::intact_mean_speed_m_s() const {
 
 CandidateNumbers measure_candidate(const CalibrationSpec& spec, const robot::BodyParams& body) {
   CandidateNumbers n;
-  sim::SimOptions options = spec.sim;
-  options.body = body;
+  RobotSpec candidate = spec.robot;
+  candidate.sim.body = body;
   try {
-    options.scene.tunnel = false;
-    const sim::SimModel open = sim::make_sim_model(spec.robot, options);
+    candidate.sim.scene.tunnel = false;
+    const sim::SimModel open = make_model(candidate);
     for (long w : spec.warmups) {
       sim::WalkSpec walk;
       walk.start.warmup = w;
@@ -300,8 +304,8 @@ CandidateNumbers measure_candidate(const CalibrationSpec& spec, const robot::Bod
       for (const sim::WindowMeasure& m : r.windows) n.intact_yaw_deg.push_back(m.yaw_deg);
       n.intact_speed_m_s.push_back(r.speed_m_s);
     }
-    options.scene.tunnel = true;
-    const sim::SimModel corridor = sim::make_sim_model(spec.robot, options);
+    candidate.sim.scene.tunnel = true;
+    const sim::SimModel corridor = make_model(candidate);
     const Scenarios sc = table1_scenarios(open.controller.morphology);
     for (const Scenario1& s : sc.fit) {
       n.fit.push_back(walk_scenario(corridor, s, spec.warmups, kCalibrationFitSteps));
@@ -334,7 +338,7 @@ bool better(const CandidateNumbers& a, const CandidateNumbers& b) {
 nlohmann::json calibration_arguments(const CalibrationSpec& spec) {
   // The searched values of the base body never reach a candidate: recorded as paper-sim's, so
   // that a base body differing only in them is the same calibration.
-  sim::SimOptions base = spec.sim;
+  sim::SimOptions base = spec.robot.sim;
   const robot::BodyParams reference;
   for (const SearchedParam& p : spec.params) {
     const robot::NumberParam& param = robot::number_param(p.key);
@@ -345,7 +349,7 @@ nlohmann::json calibration_arguments(const CalibrationSpec& spec) {
   const std::vector<double> t = targets();
   return {{"target", to_string(spec.target)},
           {"target_deg", t},
-          {"robot", robot::to_string(spec.robot)},
+          {"robot", robot::to_string(spec.robot.kind)},
           {"sim", base},
           {"params", params},
           {"budget", spec.budget},
@@ -446,7 +450,7 @@ Table candidates_table(const Calibration& cal) {
   column("stage");
   for (const SearchedParam& p : cal.spec.params) column(p.key);
   // A failed candidate has no scenarios: the names come from the scenarios of Table 1.
-  const Scenarios sc = table1_scenarios(robot::morphology(cal.spec.robot));
+  const Scenarios sc = table1_scenarios(morphology(cal.spec.robot));
   const std::size_t starts = cal.spec.warmups.size();
   const auto scenario_columns = [&](const std::vector<Scenario1>& v, const std::string& prefix) {
     for (const Scenario1& s : v) {

@@ -17,6 +17,7 @@
 
 #include "common/limits.h"
 #include "common/table.h"
+#include "experiments/run_robot.h"
 #include "robot/body_params.h"
 #include "robot/morphology.h"
 #include "sim/sim.h"
@@ -79,10 +80,9 @@ inline constexpr long kCalibrationCheckSteps = 6000;
 
 struct CalibrationSpec {
   CalibrationTarget target = CalibrationTarget::table1;
-  robot::RobotKind robot = robot::RobotKind::hexapod;
-  // The body's unsearched values (and the time steps): every candidate is this body with the
-  // searched parameters set.
-  sim::SimOptions sim;
+  // The hexapod, built in (Table 1 is its). Its options hold the body's unsearched values (and
+  // the time steps): every candidate is this body with the searched parameters set.
+  RobotSpec robot;
   std::vector<SearchedParam> params;
   int budget = kDefaultCalibrationBudget;
   std::uint64_t seed = 1;
@@ -96,7 +96,7 @@ std::vector<SearchedParam> default_searched_params();
 
 // Throws OptionError naming the key ("params[2].hi", "budget", "warmups[1]", "sim.body.slip")
 // for a parameter that is not a number of the body, named twice, or an interval outside its
-// documented range or empty; a robot other than the hexapod (Table 1 is the hexapod's).
+// documented range or empty; a robot other than the built-in hexapod (Table 1 is its).
 void validate(const CalibrationSpec& spec);
 
 // The body of a point of the normalised box (u in [0, 1] per searched parameter).

@@ -104,7 +104,7 @@ nlohmann::json calibration_json(const Calibration& cal) {
   nlohmann::json params = nlohmann::json::array();
   for (const SearchedParam& p : cal.spec.params) params.push_back(to_json(p));
   return {{"arguments", calibration_arguments(cal.spec)},
-          {"sim", cal.spec.sim},
+          {"sim", cal.spec.robot.sim},
           {"params", params},
           {"candidates", candidates},
           {"best", cal.candidates.empty() ? "" : cal.candidates[cal.best].id}};
@@ -118,8 +118,8 @@ Calibration read_calibration(const fs::path& path) {
     Calibration cal;
     const nlohmann::json& args = j.at("arguments");
     cal.spec.target = parse_calibration_target(args.at("target").get<std::string>());
-    cal.spec.robot = robot::parse_robot(args.at("robot").get<std::string>());
-    cal.spec.sim = j.at("sim").get<sim::SimOptions>();
+    cal.spec.robot.kind = robot::parse_robot(args.at("robot").get<std::string>());
+    cal.spec.robot.sim = j.at("sim").get<sim::SimOptions>();
     for (const nlohmann::json& p : j.at("params")) cal.spec.params.push_back(param_from_json(p));
     cal.spec.budget = args.at("budget");
     cal.spec.seed = args.at("seed");

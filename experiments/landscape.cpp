@@ -14,7 +14,6 @@
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
 #include "sim/json.h"
-#include "sim/robot_file.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -51,17 +50,16 @@ nlohmann::json periods_json(const robot::Morphology& morph,
 nlohmann::json arguments(const LandscapeSpec& spec) {
   // The simulation options whole (sim/json.h), so a changed controller parameter is refused on
   // resume like any other option; a robot file by its record, so a changed file is too.
-  nlohmann::json args{
-      {"experiment", "landscape"},
-      {"robot", robot::to_string(spec.kind)},
-      {"disabled", robot::leg_set_json(robot::morphology(spec.kind), spec.disabled)},
-      {"period_set", spec.period_set},
-      {"windows", spec.windows},
-      {"window_steps", spec.window_steps},
-      {"threshold_deg", spec.threshold_deg},
-      {"controller_warmup", sim::kControllerWarmup},
-      {"sim", spec.sim}};
-  if (spec.robot_file) args["robot_file"] = spec.robot_file->record;
+  nlohmann::json args{{"experiment", "landscape"},
+                      {"robot", robot::to_string(spec.robot.kind)},
+                      {"disabled", robot::leg_set_json(morphology(spec.robot), spec.disabled)},
+                      {"period_set", spec.period_set},
+                      {"windows", spec.windows},
+                      {"window_steps", spec.window_steps},
+                      {"threshold_deg", spec.threshold_deg},
+                      {"controller_warmup", sim::kControllerWarmup},
+                      {"sim", spec.robot.sim}};
+  record_robot_file(args, spec.robot);
   return args;
 }
 
@@ -72,7 +70,7 @@ double share(std::size_t part, std::size_t whole) {
 }  // namespace
 
 void validate(const LandscapeSpec& spec) {
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = morphology(spec.robot);
   std::set<std::size_t> seen;
   for (std::size_t leg : spec.disabled) {
     if (leg >= morph.size()) {
@@ -131,7 +129,7 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
 }
 
 std::vector<learning::Periods> landscape_combinations(const LandscapeSpec& spec) {
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = morphology(spec.robot);
   const std::vector<std::size_t> working = working_legs(morph, spec.disabled);
   std::vector<std::size_t> digit(working.size(), 0);
   std::vector<learning::Periods> out;
@@ -208,7 +206,7 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
                         bool progress, const std::vector<learning::Periods>& learned,
                         const std::string& progress_label) {
   validate(spec);
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = morphology(spec.robot);
   RunnerOptions runner;
   runner.out_dir = out;
   runner.jobs = jobs;
@@ -227,9 +225,7 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
     task.params = {{"periods", combinations[i]}};
     tasks.push_back(std::move(task));
   }
-  const sim::SimModel model = spec.robot_file  // shared, read-only
-                                  ? sim::make_sim_model(spec.robot_file->file, spec.sim)
-                                  : sim::make_sim_model(spec.kind, spec.sim);
+  const sim::SimModel model = make_model(spec.robot);  // shared, read-only
   const RunnerOutcome outcome = run_tasks(
       tasks,
       [&](const Task& task) {
@@ -253,7 +249,7 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
 
 std::filesystem::path landscape_set_dir(const std::filesystem::path& out,
                                         const LandscapeSpec& spec) {
-  return out / robot::leg_set_name(robot::morphology(spec.kind), spec.disabled);
+  return out / robot::leg_set_name(morphology(spec.robot), spec.disabled);
 }
 
 std::filesystem::path landscape_set_dataset(const std::filesystem::path& out) {
@@ -277,12 +273,12 @@ learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& lands
   learning::LandscapeDataset d;
   if (landscapes.empty()) return d;
   const LandscapeSpec& first = landscapes.front().spec;
-  d.robot = first.kind;
+  d.robot = first.robot.kind;
   d.period_set = first.period_set;
   d.windows = first.windows;
   d.window_steps = first.window_steps;
   d.threshold_deg = first.threshold_deg;
-  d.sim = first.sim;
+  d.sim = first.robot.sim;
   for (const Landscape& l : landscapes) {
     learning::ScenarioLandscape s;
     s.failed = l.spec.disabled;
@@ -303,7 +299,7 @@ learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& lands
 }
 
 std::string landscape_csv(const Landscape& landscape) {
-  const robot::Morphology& morph = robot::morphology(landscape.spec.kind);
+  const robot::Morphology& morph = morphology(landscape.spec.robot);
   const std::vector<std::size_t> working = working_legs(morph, landscape.spec.disabled);
   std::string out;
   for (std::size_t leg : working) out += morph.legs[leg].name + ",";
@@ -326,7 +322,7 @@ std::string landscape_csv(const Landscape& landscape) {
 nlohmann::json landscape_summary(const Landscape& landscape,
                                  const std::vector<learning::Periods>& learned) {
   const LandscapeSpec& spec = landscape.spec;
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = morphology(spec.robot);
   const std::vector<CombinationMeasure>& c = landscape.combinations;
   const auto entry = [&](std::size_t i) {
     return nlohmann::json{{"periods", periods_json(morph, spec.disabled, c[i].periods)},
@@ -377,7 +373,7 @@ bool in_landscape(const LandscapeSpec& spec, const learning::Periods& periods) {
 }
 
 std::vector<learning::Periods> parse_learned(const nlohmann::json& j, const LandscapeSpec& spec) {
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = morphology(spec.robot);
   if (!j.is_array()) throw BadInput("learned combinations: expected a JSON array of {leg: period}");
   std::vector<learning::Periods> out;
   for (std::size_t n = 0; n < j.size(); ++n) {

@@ -31,14 +31,12 @@ inline constexpr std::size_t kLandscapeTop = 10;
 
 // Everything that decides a landscape's results.
 struct LandscapeSpec {
-  robot::RobotKind kind = robot::RobotKind::hexapod;  // with a robot file, its layout
-  std::shared_ptr<const RunRobotFile> robot_file;     // null: the built-in robot
-  std::vector<std::size_t> disabled;                  // sorted, unique, not every leg
+  RobotSpec robot;                    // run_robot.h
+  std::vector<std::size_t> disabled;  // sorted, unique, not every leg
   std::vector<int> period_set = learning::AnnealingParams{}.period_set;
   int windows = kDefaultLandscapeWindows;
   long window_steps = learning::kDefaultWindowSteps;
   double threshold_deg = learning::kDefaultThresholdDeg;
-  sim::SimOptions sim;
 };
 
 // Throws BadInput (one line) for an unknown or repeated leg, every leg disabled, an empty period

@@ -19,7 +19,7 @@ nlohmann::json preset_document(const ExperimentSpec& spec, robot::RobotKind kind
           {"runs", spec.runs},
           {"seed", spec.seed},
           {"learning", learning_document(spec.base, 0)},
-          {"sim", spec.sim},
+          {"sim", spec.robot.sim},
           {"record", {{"check_windows", spec.check_windows}}}};
 }
 
@@ -39,13 +39,12 @@ ExperimentTable run_preset(const ExperimentSpec& spec, const nlohmann::json& doc
 }  // namespace
 
 nlohmann::json scenario_table_document(const ExperimentSpec& spec) {
-  nlohmann::json doc = preset_document(spec, spec.kind);
+  nlohmann::json doc = preset_document(spec, spec.robot.kind);
   doc["scenarios"] = "paper";
-  if (spec.robot_file) {
-    doc["robot_file"] = spec.robot_file->record;
+  if (spec.robot.file) {
+    doc["robot_file"] = spec.robot.file->record;
     doc["scenarios"] = nlohmann::json::array();
-    for (const Scenario& s :
-         leg_loss_scenarios(robot::morphology(spec.kind), kRobotFileScenarioLegs)) {
+    for (const Scenario& s : leg_loss_scenarios(morphology(spec.robot), kRobotFileScenarioLegs)) {
       doc["scenarios"].push_back(s.name);
     }
   }

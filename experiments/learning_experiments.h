@@ -18,8 +18,7 @@
 namespace multicpg::experiments {
 
 struct ExperimentSpec {
-  robot::RobotKind kind = robot::RobotKind::hexapod;  // with a robot file, its layout
-  std::shared_ptr<const RunRobotFile> robot_file;     // null: the built-in robot
+  RobotSpec robot;  // run_robot.h
   int runs = 10;
   std::uint64_t seed = 1;
   int jobs = 0;  // 0 = every core
@@ -28,7 +27,6 @@ struct ExperimentSpec {
   learning::CompensationOptions base;
   // Windows walked after each run with its final controller, to see whether it holds.
   long check_windows = 0;
-  sim::SimOptions sim;
   bool progress = true;
   std::string progress_label;                         // RunnerOptions::progress_label
   SweepLimits limits{kDefaultMaxRuns, "--max-runs"};  // more runs are refused (sweep.h)
@@ -41,7 +39,7 @@ nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind e
 
 // The experiments as documents of experiments/sweep.h (what examples/paper-*.toml hold with
 // the default options), run through run_sweep.
-// Every scenario of experiments::paper_scenarios(spec.kind), spec.runs runs each; for a robot
+// Every scenario of experiments::paper_scenarios(spec.robot.kind), spec.runs runs each; for a robot
 // file every one- and two-leg loss of its layout (leg_loss_scenarios).
 nlohmann::json scenario_table_document(const ExperimentSpec& spec);
 // R1+R2 disabled on the hexapod, spec.runs runs per beta.

@@ -44,7 +44,7 @@ struct LearningRun {
 };
 
 // Runs the learning run `spec` (which must have learning options; the caller validated it) on
-// `model`, made from spec.robot and spec.sim: compensation from its start with its faults, every
+// `model`, made from spec.robot (make_model): compensation from its start with its faults, every
 // step recorded when spec.record.steps; afterwards walks `after_steps` more with the final
 // periods (for "after learning" figures and the tunnel). `observer` (may be null) sees every
 // step, fault, detection, trial and episode.

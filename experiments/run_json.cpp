@@ -14,17 +14,13 @@ nlohmann::json learning_record(const learning::CompensationOptions& options,
   return j;
 }
 
-void record_robot_file(nlohmann::json& json, const RunSpec& spec) {
-  if (spec.robot_file) json["robot_file"] = spec.robot_file->record;
-}
-
 nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& result) {
-  const robot::Morphology& morph = morphology(spec);
+  const robot::Morphology& morph = morphology(spec.robot);
   nlohmann::json json = learning::to_json(result, morph, sim::failing_legs(spec.faults));
   json["robot"] = morph.name;
   json["disable_at"] = spec.faults.empty() ? 0L : spec.faults.front().step;
   json["options"] = learning_record(*spec.learning, spec.faults);
-  record_robot_file(json, spec);
+  record_robot_file(json, spec.robot);
   return json;
 }
 
@@ -32,14 +28,14 @@ std::string other_faults_text(const RunSpec& spec) {
   std::string out;
   for (const sim::Fault& f : spec.faults) {
     if (std::holds_alternative<sim::LegFault>(f.kind) && !f.joint) continue;
-    out += (out.empty() ? "" : ", ") + sim::fault_text(morphology(spec), f);
+    out += (out.empty() ? "" : ", ") + sim::fault_text(morphology(spec.robot), f);
   }
   return out;
 }
 
 nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o,
                            const std::optional<TunnelScale>& scale) {
-  const robot::Morphology& morph = morphology(spec);
+  const robot::Morphology& morph = morphology(spec.robot);
   const TunnelRun& run = o.run;
   nlohmann::json j{{"passed", run.passed},       {"touched_wall", run.touched_wall},
                    {"steps", run.steps},         {"forward_m", run.forward_m},
@@ -51,10 +47,10 @@ nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o,
     j["learning"] = learning::to_json(*o.learned, morph, o.disabled);
     j["options"] = learning_record(*spec.learning, spec.faults);
   }
-  record_robot_file(j, spec);
+  record_robot_file(j, spec.robot);
   if (scale) {
-    j["tunnel"] = {{"length_m", spec.sim.scene.tunnel_length},
-                   {"width_m", spec.sim.scene.tunnel_width},
+    j["tunnel"] = {{"length_m", spec.robot.sim.scene.tunnel_length},
+                   {"width_m", spec.robot.sim.scene.tunnel_width},
                    {"scale", *scale}};
   }
   return j;

@@ -27,10 +27,6 @@ nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& r
 nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& outcome,
                            const std::optional<TunnelScale>& scale = std::nullopt);
 
-// Adds "robot_file" (RobotFileRecord) to `json` when the run walks a robot file; a built-in
-// robot's records stay as they were.
-void record_robot_file(nlohmann::json& json, const RunSpec& spec);
-
 // The run's faults other than whole legs failing, as the CLI writes them ("R2.CTr:locked@0,
 // imu:noise=1@0"); empty when there are none.
 std::string other_faults_text(const RunSpec& spec);

@@ -1,10 +1,13 @@
 #include "experiments/run_robot.h"
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
 #include "common/checksum.h"
 #include "common/errors.h"
+#include "common/limits.h"
+#include "robot/body_models.h"
 #include "sim/robot_file.h"
 
 namespace multicpg::experiments {
@@ -24,6 +27,78 @@ std::shared_ptr<const RunRobotFile> load_run_robot_file(const std::filesystem::p
   loaded->record = {path.string(), loaded->file.name, checksum_text(toml),
                     checksum_text(loaded->file.model_xml)};
   return loaded;
+}
+
+RobotSpec named_robot(const std::string& name) {
+  RobotSpec robot;
+  if (sim::is_robot_file(name)) {
+    robot.file = load_run_robot_file(name);
+    robot.kind = robot.file->file.layout;
+  } else {
+    robot.kind = robot::parse_robot(name);
+  }
+  return robot;
+}
+
+void record_robot_file(nlohmann::json& json, const RobotSpec& robot) {
+  if (robot.file) json["robot_file"] = robot.file->record;
+}
+
+bool operator==(const RobotSpec& a, const RobotSpec& b) {
+  const bool same_file = a.file && b.file ? a.file->record == b.file->record : a.file == b.file;
+  return a.kind == b.kind && same_file && a.sim == b.sim;
+}
+
+namespace {
+
+// A robot file's body is its MJCF: of the body parameters only those of the controller apply
+// (the disabled legs' posture and the body lift, robot/body_params.h).
+void validate_file_robot(const sim::SimOptions& options) {
+  if (options.model != robot::kDefaultBodyModel) {
+    throw OptionError("sim.model", "a robot file's body is its model (docs/robots.md)");
+  }
+  const robot::BodyParams defaults = robot::body_params(robot::kDefaultBodyModel);
+  for (const robot::NumberParam& p : robot::number_params()) {
+    const bool controller = p.key == "lift_body" || p.key.starts_with("disabled_posture");
+    if (!controller && p.get(options.body) != p.get(defaults)) {
+      throw OptionError("sim.body." + std::string(p.key),
+                        "a robot file's body is its model (docs/robots.md)");
+    }
+  }
+}
+
+}  // namespace
+
+void validate(const RobotSpec& robot) {
+  within("sim", [&] { sim::validate(robot.sim, robot.kind); });
+  if (robot.file) validate_file_robot(robot.sim);
+}
+
+const robot::Morphology& morphology(const RobotSpec& robot) {
+  return robot::morphology(robot.kind);
+}
+
+sim::SimModel make_model(const RobotSpec& robot) {
+  return robot.file ? sim::make_sim_model(robot.file->file, robot.sim)
+                    : sim::make_sim_model(robot.kind, robot.sim);
+}
+
+std::shared_ptr<const sim::SimModel> ModelCache::model(const RobotSpec& robot) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::erase_if(models_, [](const auto& entry) { return entry.second.expired(); });
+  const auto found = std::find_if(models_.begin(), models_.end(),
+                                  [&](const auto& entry) { return entry.first == robot; });
+  // Its last user may let it go between the pruning and here.
+  if (found != models_.end()) {
+    if (std::shared_ptr<const sim::SimModel> model = found->second.lock()) return model;
+  }
+  auto made = std::make_shared<const sim::SimModel>(make_model(robot));
+  if (found != models_.end()) {
+    found->second = made;
+  } else {
+    models_.emplace_back(robot, made);
+  }
+  return made;
 }
 
 }  // namespace multicpg::experiments

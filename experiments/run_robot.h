@@ -1,15 +1,22 @@
-// A robot file as runs carry it (experiments::RunSpec): the leg map and model it describes, and
-// the record every output of a run keeps of it, so a result names the robot it was walked with
-// and a resumed experiment sees when that robot changed (docs/robots.md "Your robot: robot
+// The robot a run walks (RobotSpec): a built-in robot or a robot file, with its simulation
+// options, held by every spec that runs a robot (RunSpec, LandscapeSpec, ExperimentSpec,
+// CalibrationSpec, Python's Robot), and the one cache of the models made from it. A robot file
+// is carried with the record every output keeps of it, so a result names the robot it was walked
+// with and a resumed experiment sees when that robot changed (docs/robots.md "Your robot: robot
 // files").
 #pragma once
 
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "robot/morphology.h"
 #include "robot/robot_file.h"
+#include "sim/sim.h"
 
 namespace multicpg::experiments {
 
@@ -30,5 +37,49 @@ struct RunRobotFile {
 
 // The robot file at `path` and its record. Throws BadInput as sim::load_robot_file does.
 std::shared_ptr<const RunRobotFile> load_run_robot_file(const std::filesystem::path& path);
+
+// The built-in robot, or with a robot file the built-in whose layout it has (its legs,
+// controller, servos and fault geometry; robot/robot_file.h), in the world its options make.
+struct RobotSpec {
+  robot::RobotKind kind = robot::RobotKind::hexapod;  // with a robot file, its layout
+  std::shared_ptr<const RunRobotFile> file;           // null: the built-in robot
+  sim::SimOptions sim;  // time steps, servos, scene, the controller's parameters, the body
+};
+
+// The robot `name` names, with default options: a built-in robot ("hexapod") or a robot file
+// ("FILE.toml", sim::is_robot_file). Throws BadInput as robot::parse_robot and
+// load_run_robot_file do.
+RobotSpec named_robot(const std::string& name);
+
+// Adds "robot_file" (RobotFileRecord) to `json` when the robot is a robot file's; a built-in
+// robot's records stay as they were.
+void record_robot_file(nlohmann::json& json, const RobotSpec& robot);
+
+// Equal robots make equal models: the same kind, robot file (by its record) and options.
+bool operator==(const RobotSpec& a, const RobotSpec& b);
+
+// Throws OptionError naming the key of the first bad option: "sim.control_dt",
+// "sim.body.leg_postures[0].leg" (sim::validate), and with a robot file "sim.model" and
+// "sim.body.<key>" for a body parameter other than the controller's (its body is its model).
+void validate(const RobotSpec& robot);
+
+// The robot's leg layout.
+const robot::Morphology& morphology(const RobotSpec& robot);
+
+// The robot's simulation.
+sim::SimModel make_model(const RobotSpec& robot);
+
+// The models of equal robots, made once and shared read-only while any user holds one (a
+// compile takes tens of milliseconds: a sweep's runs and Python's equal robots share theirs).
+// Thread-safe; a model is made under the cache's lock.
+class ModelCache {
+ public:
+  std::shared_ptr<const sim::SimModel> model(const RobotSpec& robot);
+
+ private:
+  std::mutex mutex_;
+  // Few distinct robots at a time (a sweep's grid of sim options at most): searched in order.
+  std::vector<std::pair<RobotSpec, std::weak_ptr<const sim::SimModel>>> models_;
+};
 
 }  // namespace multicpg::experiments

@@ -4,9 +4,7 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
-#include "robot/body_models.h"
 #include "robot/leg_sets.h"
-#include "sim/robot_file.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
@@ -17,44 +15,9 @@ sim::StartSpec learning_start(learning::Mode mode) {
   return start;
 }
 
-const robot::Morphology& morphology(const RunSpec& spec) {
-  return robot::morphology(spec.robot);
-}
-
-sim::SimModel make_run_model(const RunSpec& spec) {
-  return make_run_model(spec, spec.sim);
-}
-
-sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options) {
-  return spec.robot_file ? sim::make_sim_model(spec.robot_file->file, options)
-                         : sim::make_sim_model(spec.robot, options);
-}
-
-namespace {
-
-// A robot file's body is its MJCF: of the body
-// parameters only those of the controller apply (the disabled legs' posture and the body lift,
-// robot/body_params.h).
-void validate_file_robot(const sim::SimOptions& options) {
-  if (options.model != robot::kDefaultBodyModel) {
-    throw OptionError("sim.model", "a robot file's body is its model (docs/robots.md)");
-  }
-  const robot::BodyParams defaults = robot::body_params(robot::kDefaultBodyModel);
-  for (const robot::NumberParam& p : robot::number_params()) {
-    const bool controller = p.key == "lift_body" || p.key.starts_with("disabled_posture");
-    if (!controller && p.get(options.body) != p.get(defaults)) {
-      throw OptionError("sim.body." + std::string(p.key),
-                        "a robot file's body is its model (docs/robots.md)");
-    }
-  }
-}
-
-}  // namespace
-
 void validate(const RunSpec& spec) {
-  const robot::Morphology& morph = morphology(spec);
-  within("sim", [&] { sim::validate(spec.sim, spec.robot); });
-  if (spec.robot_file) validate_file_robot(spec.sim);
+  const robot::Morphology& morph = morphology(spec.robot);
+  validate(spec.robot);
   const std::vector<int>& periods = spec.start.periods;
   if (!periods.empty() && periods.size() != morph.size()) {
     throw OptionError("start.periods", "the " + morph.name + " takes " +
@@ -78,7 +41,8 @@ void validate(const RunSpec& spec) {
     learning::validate(*spec.learning);
     learning::validate_faults(*spec.learning, spec.faults);
     within("learner", [&] {
-      learning::check_learner(spec.learning->learner, spec.robot, sim::failing_legs(spec.faults));
+      learning::check_learner(spec.learning->learner, spec.robot.kind,
+                              sim::failing_legs(spec.faults));
     });
   });
   if (spec.faults.empty()) {

@@ -4,7 +4,6 @@
 // run is saved or read back (experiments/run_json.h).
 #pragma once
 
-#include <memory>
 #include <optional>
 
 #include "experiments/run_robot.h"
@@ -27,11 +26,7 @@ struct RecordSpec {
 };
 
 struct RunSpec {
-  // The built-in robot, or with a robot file the built-in whose layout it has (its legs,
-  // controller, servos and fault geometry; robot/robot_file.h).
-  robot::RobotKind robot = robot::RobotKind::hexapod;
-  std::shared_ptr<const RunRobotFile> robot_file;  // null: the built-in robot
-  sim::SimOptions sim;        // time steps, servos, scene, the controller's parameters
+  RobotSpec robot;            // which robot, in which world (run_robot.h)
   sim::StartSpec start;       // periods and warm-up
   sim::FaultTimeline faults;  // what fails, and recovers, when
   // How the robot learns to compensate; none = it walks as it started.
@@ -44,19 +39,12 @@ struct RunSpec {
 // running, locked one, as a robot that was walking when a leg failed.
 sim::StartSpec learning_start(learning::Mode mode);
 
-// Throws OptionError naming the key of the first bad value: "sim.control_dt",
-// "start.periods", "start.warmup", "faults", "learning.annealing.beta", "record.check_windows"
-// (a value out of its range, a period that gives no gait or the wrong number of them, a fault
-// timeline that cannot happen, a learning run without a fault or with unequal start periods),
-// "learning.mode" for faults the learning mode cannot take; with a robot file "sim.model" and
-// "sim.body.<key>" for a body parameter other than the controller's (its body is its model).
+// Throws OptionError naming the key of the first bad value: the robot's ("sim.control_dt",
+// "sim.model", validate(const RobotSpec&)), "start.periods", "start.warmup", "faults",
+// "learning.annealing.beta", "record.check_windows" (a value out of its range, a period that
+// gives no gait or the wrong number of them, a fault timeline that cannot happen, a learning run
+// without a fault or with unequal start periods), "learning.mode" for faults the learning mode
+// cannot take.
 void validate(const RunSpec& spec);
-
-// The leg layout of the run's robot.
-const robot::Morphology& morphology(const RunSpec& spec);
-
-// The simulation the run walks in: its robot with its simulation options (or `options`).
-sim::SimModel make_run_model(const RunSpec& spec);
-sim::SimModel make_run_model(const RunSpec& spec, const sim::SimOptions& options);
 
 }  // namespace multicpg::experiments

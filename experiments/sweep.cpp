@@ -111,10 +111,6 @@ void check_run_count(const std::vector<GridAxis>& grid, std::size_t scenarios, i
   check_count(multiply(factors), "runs", join(parts, " x "), limits);
 }
 
-void check_sim(const sim::SimOptions& options, robot::RobotKind kind) {
-  within("sim", [&] { sim::validate(options, kind); });
-}
-
 // The defaults [sim] is merged onto: the simulation's, with the body of the document's
 // sim.model (a model supplies the body, [sim.body] keys override it).
 json sim_defaults(const json& doc) {
@@ -145,15 +141,14 @@ json sim_defaults(const json& doc) {
 // recorded.
 json run_params(const RunSpec& spec, const RunLabel& label) {
   json params{
-      {"robot", robot::to_string(spec.robot)},
+      {"robot", robot::to_string(spec.robot.kind)},
       {"scenario", label.scenario},
-      {"disabled",
-       robot::leg_set_json(robot::morphology(spec.robot), sim::failing_legs(spec.faults))},
+      {"disabled", robot::leg_set_json(morphology(spec.robot), sim::failing_legs(spec.faults))},
       {"grid", label.grid},
       {"learning", learning_record(*spec.learning, spec.faults)},
-      {"sim", spec.sim},
+      {"sim", spec.robot.sim},
       {"record", {{"check_windows", spec.record.check_windows}, {"trace", spec.record.trace}}}};
-  record_robot_file(params, spec);
+  record_robot_file(params, spec.robot);
   return params;
 }
 
@@ -258,8 +253,8 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
     }
   }
   LandscapeSpec spec;
-  spec.kind = kind;
-  spec.robot_file = robot.file;
+  spec.robot.kind = kind;
+  spec.robot.file = robot.file;
   spec.disabled = scenarios.front().disabled;
   std::vector<GridAxis> grid;
   const json defaults = landscape_json(spec);
@@ -274,7 +269,7 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
   json sim_doc = sim_default;
   merge_checked(doc.value("sim", json::object()), sim_default, "sim", sim_doc, grid);
   refuse_grid(grid);
-  spec.sim = options_from<sim::SimOptions>(canonical_sim(sim_doc), "sim");
+  spec.robot.sim = options_from<sim::SimOptions>(canonical_sim(sim_doc), "sim");
   try {
     validate(spec);
   } catch (const OptionError& e) {
@@ -282,14 +277,7 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
   } catch (const BadInput& e) {
     throw OptionError("landscape", e.what());
   }
-  check_sim(spec.sim, kind);
-  if (robot.file) {
-    RunSpec walk;
-    walk.robot = kind;
-    walk.robot_file = robot.file;
-    walk.sim = spec.sim;
-    validate(walk);  // its body and ground, as for any run of the robot file
-  }
+  validate(spec.robot);  // its options, and a robot file's body, as for any run of it
   Sweep sweep;
   sweep.robot = kind;
   sweep.robot_file = robot.file;
@@ -355,11 +343,11 @@ std::string to_string(const Shard& shard) {
 
 nlohmann::json landscape_document(const LandscapeSpec& spec) {
   json doc{{"kind", "landscape"},
-           {"robot", robot::to_string(spec.kind)},
-           {"scenarios", {robot::leg_set_name(robot::morphology(spec.kind), spec.disabled)}},
+           {"robot", robot::to_string(spec.robot.kind)},
+           {"scenarios", {robot::leg_set_name(morphology(spec.robot), spec.disabled)}},
            {"landscape", landscape_json(spec)},
-           {"sim", spec.sim}};
-  if (spec.robot_file) doc["robot_file"] = spec.robot_file->record;
+           {"sim", spec.robot.sim}};
+  record_robot_file(doc, spec.robot);
   return doc;
 }
 
@@ -475,12 +463,11 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(canonical_sim(sim_point), "sim");
-    if (sims_checked.insert(json(sim_options).dump()).second) check_sim(sim_options, sweep.robot);
+    const RobotSpec robot_point{sweep.robot, sweep.robot_file, sim_options};
+    if (sims_checked.insert(json(sim_options).dump()).second) validate(robot_point);
     for (const ScenarioSpec& s : scenarios) {
       RunSpec spec;
-      spec.robot = sweep.robot;
-      spec.robot_file = sweep.robot_file;
-      spec.sim = sim_options;
+      spec.robot = robot_point;
       spec.learning = base;
       spec.start = learning_start(base.mode);
       spec.faults = s.faults;

@@ -47,25 +47,6 @@ json arguments_of(const Sweep& sweep, const Shard& shard) {
   return args;
 }
 
-// Each distinct simulation of the runs, made once and shared read-only by the threads.
-class Models {
- public:
-  explicit Models(const std::vector<const RunSpec*>& specs) {
-    for (const RunSpec* spec : specs) {
-      const std::string key = key_of(*spec);
-      if (!models_.count(key)) models_.emplace(key, make_run_model(*spec));
-    }
-  }
-  const sim::SimModel& of(const RunSpec& spec) const { return models_.at(key_of(spec)); }
-
- private:
-  // The robot and every simulation option, as recorded: equal records, equal models.
-  static std::string key_of(const RunSpec& spec) {
-    return std::string(robot::to_string(spec.robot)) + json(spec.sim).dump();
-  }
-  std::map<std::string, sim::SimModel> models_;
-};
-
 json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer* observer) {
   const robot::Morphology& morph = model.controller.morphology;
   const learning::CompensationOptions& options = *spec.learning;
@@ -91,18 +72,6 @@ json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer*
 SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   const json arguments = arguments_of(sweep, options.shard);
   if (is_primary_process()) ensure_writable_dir(options.out);
-  std::vector<Task> tasks;
-  std::map<std::string, const RunSpec*> specs;  // of the shard's runs, by key
-  std::vector<const RunSpec*> shard_specs;
-  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
-        options.shard.index) {
-      const PlannedRun& run = sweep.runs[i];
-      tasks.push_back(run.task);
-      shard_specs.push_back(&run.spec);
-      specs.emplace(run.task.key, &run.spec);
-    }
-  }
   RunnerOptions runner;
   runner.out_dir = options.out;
   runner.jobs = options.jobs;
@@ -111,12 +80,28 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
   runner.progress_label = options.progress_label;
   runner.provenance = provenance(mj_versionString());
   validate(runner);
-  const Models models(shard_specs);
+  // The shard's runs by key, each with its model: one per distinct robot, made before any run
+  // and shared read-only by the threads.
+  struct ShardRun {
+    const RunSpec* spec;
+    std::shared_ptr<const sim::SimModel> model;
+  };
+  std::vector<Task> tasks;
+  std::map<std::string, ShardRun> runs;
+  ModelCache models;
+  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
+    if (static_cast<int>(i % static_cast<std::size_t>(options.shard.count)) ==
+        options.shard.index) {
+      const PlannedRun& run = sweep.runs[i];
+      tasks.push_back(run.task);
+      runs.emplace(run.task.key, ShardRun{&run.spec, models.model(run.spec.robot)});
+    }
+  }
   const RunnerOutcome outcome = run_tasks(
       tasks,
       [&](const Task& task) {
-        const RunSpec& spec = *specs.at(task.key);
-        return task_result(models.of(spec), spec, nullptr);
+        const ShardRun& run = runs.at(task.key);
+        return task_result(*run.model, *run.spec, nullptr);
       },
       runner);
   SweepOutcome result;
@@ -132,7 +117,7 @@ SweepOutcome run_sweep(const Sweep& sweep, const SweepRunOptions& options) {
 }
 
 json run_sweep_task(const RunSpec& spec, sim::Observer* observer) {
-  return task_result(make_run_model(spec), spec, observer);
+  return task_result(make_model(spec.robot), spec, observer);
 }
 
 RecordedSweep read_sweep(const fs::path& dir) {

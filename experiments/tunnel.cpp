@@ -76,26 +76,26 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
 }
 
 sim::SimModel tunnel_model(const RunSpec& spec) {
-  sim::SimOptions options = spec.sim;
-  options.scene.tunnel = true;
-  return make_run_model(spec, options);
+  RobotSpec corridor = spec.robot;
+  corridor.sim.scene.tunnel = true;
+  return make_model(corridor);
 }
 
 TunnelScale scale_tunnel(RunSpec& spec) {
   TunnelScale scale;
-  scale.robot_width_m = sim::foot_span(make_run_model(spec));
-  scale.layout_width_m = sim::foot_span(sim::make_sim_model(spec.robot));
+  scale.robot_width_m = sim::foot_span(make_model(spec.robot));
+  scale.layout_width_m = sim::foot_span(sim::make_sim_model(spec.robot.kind));
   scale.factor = scale.robot_width_m / scale.layout_width_m;
-  robot::Scene& scene = spec.sim.scene;
+  robot::Scene& scene = spec.robot.sim.scene;
   scene.tunnel_length *= scale.factor;
   scene.tunnel_width *= scale.factor;
-  within("sim", [&] { sim::validate(spec.sim); });
+  within("sim", [&] { sim::validate(spec.robot.sim); });
   return scale;
 }
 
 TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, long max_steps,
                          sim::Observer* observer, sim::Observer* learning_observer) {
-  const robot::Morphology& morph = morphology(spec);
+  const robot::Morphology& morph = morphology(spec.robot);
   TunnelOutcome out;
   TunnelSpec tunnel;
   tunnel.max_steps = max_steps;
@@ -107,9 +107,9 @@ TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, lon
                       ? std::vector<int>(morph.size(), learning::kStartPeriod)
                       : spec.start.periods;
   } else {
-    sim::SimOptions open_options = spec.sim;
-    open_options.scene.tunnel = false;
-    const sim::SimModel open = make_run_model(spec, open_options);
+    RobotSpec open_robot = spec.robot;
+    open_robot.sim.scene.tunnel = false;
+    const sim::SimModel open = make_model(open_robot);
     out.learned = run_learning(open, spec, 0, learning_observer).result;
     out.disabled = sim::failed_after(morph, spec.faults);
     out.periods = out.learned->periods;

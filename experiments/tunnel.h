@@ -48,7 +48,7 @@ struct TunnelRun {
 TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec,
                      sim::Observer* observer = nullptr);
 
-// The tunnel's model for a run: spec.sim with the corridor in its scene.
+// The tunnel's model for a run: its robot with the corridor in its scene.
 sim::SimModel tunnel_model(const RunSpec& spec);
 
 // The tunnel scaled to a robot (`tunnel --scale-tunnel`): its length and width times the robot's
@@ -61,13 +61,13 @@ struct TunnelScale {
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(TunnelScale, robot_width_m, layout_width_m, factor)
 
-// The scale of spec's robot; spec.sim's tunnel length and width scaled by it. Throws OptionError
+// The scale of spec's robot; its options' tunnel length and width scaled by it. Throws OptionError
 // ("sim.scene.tunnel_length", "sim.scene.tunnel_width") when the scaled tunnel leaves its range.
 TunnelScale scale_tunnel(RunSpec& spec);
 
 // Paper §5 for a run description. Without learning options the robot walks spec.start with
 // spec.faults through the tunnel of `corridor` (tunnel_model(spec)). With them it first learns in
-// the open field (spec.sim without the corridor) from the run's start, then walks the learned
+// the open field (its robot without the corridor) from the run's start, then walks the learned
 // controller (its periods and, if the learner used it, its steering reflex) from a warmed start
 // through the tunnel, with the legs still failed when the timeline is over. `observer` (may be
 // null) sees the tunnel walk, `learning_observer` (may be null) the learning run. `spec` must be

@@ -68,7 +68,7 @@ void report_stop(const experiments::RunSpec& spec, const HardwareSetup& setup,
                  HardwareWalker& walker, const std::exception& e, const StoppedSink& stopped,
                  nlohmann::json record = nlohmann::json::object()) {
   walker.stop(e.what(), true);
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   record["status"] = "stopped";
   record["cause"] = walker.stopped()->cause;
   record["robot"] = morph.name;
@@ -108,14 +108,14 @@ BodyMap body_map(const sim::SimModel& model) {
 }
 
 HardwareSetup hardware_setup(const experiments::RunSpec& spec, const HardwareFlags& flags) {
-  const robot::Morphology& morph = experiments::morphology(spec);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   HardwareSetup s;
   s.file = load_hardware_file(flags.file, morph);
   require_hardware_faults(morph, spec.faults);
   if (spec.learning) {
     within("learning", [&] { learning::require_senses(*spec.learning, s.file.senses_position()); });
   }
-  s.body = body_map(experiments::make_run_model(spec));
+  s.body = body_map(experiments::make_model(spec.robot));
   s.pacing = flags.lock_step ? Pacing::lock_step : Pacing::real_time;
   return s;
 }

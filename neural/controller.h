@@ -26,6 +26,8 @@ struct ControllerParams {
   VrnParams vrn;
   MotorNeuronParams motor;
   DelayParams delays;
+
+  bool operator==(const ControllerParams&) const = default;
 };
 
 // The fixed wiring of one leg's circuit.

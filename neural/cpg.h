@@ -19,6 +19,8 @@ struct CpgParams {
   double theta2 = 3.8;
   double lambda = 0.05;  // adaptation rate of mu, paper Eq. 4
   double mu0 = -1.0;     // initial control strength: docs/controller.md "Control law"
+
+  bool operator==(const CpgParams&) const = default;
 };
 
 // What the CPG is doing.

@@ -13,6 +13,8 @@ namespace multicpg::neural {
 struct DelayParams {
   int tau = 18;    // ipsilateral lag per leg, hind to front
   int tau_l = 90;  // left side lags the right
+
+  bool operator==(const DelayParams&) const = default;
 };
 
 // One leg's FIFO of pre-motor signals, starting as zeros. Holds d + 2 entries:

@@ -11,6 +11,8 @@ struct MotorNeuronParams {
   double inhibition = 10.0;  // input0 weight
   double psn_weight = 5.0;   // CTr_pre = tanh(5 o11 - 0.5 + 10 input0)
   double bias = -0.5;
+
+  bool operator==(const MotorNeuronParams&) const = default;
 };
 
 // Pre-motor signals of one leg, before the delay lines.

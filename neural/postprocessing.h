@@ -12,6 +12,8 @@ struct PostProcessingParams {
   double self_weight = 1.1;  // w_hys
   double gain = 5.0;         // tanh5(u) = tanh(5u)
   double flip = 0.5;         // EPS: |h(t) - h(t-1)| above this is a flip
+
+  bool operator==(const PostProcessingParams&) const = default;
 };
 
 // What it is doing: window counter, hysteresis outputs h, ramp outputs y (all start at 0).

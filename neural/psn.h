@@ -17,6 +17,8 @@ struct PsnParams {
   double hidden_bias = 0.5;
   double output_weight = 3.0;  // o10, o11 = tanh(3 o + 3 o - 1.35)
   double output_bias = -1.35;
+
+  bool operator==(const PsnParams&) const = default;
 };
 
 // Neuron outputs o0..o11, all starting at 0.

@@ -12,6 +12,8 @@ struct VrnParams {
   double hidden_weight = 1.7246;
   double hidden_bias = -2.48285;
   double output_weight = 0.5;
+
+  bool operator==(const VrnParams&) const = default;
 };
 
 // Outputs u0, u1, h4..h7 and v, all starting at 0.

@@ -180,7 +180,9 @@ py::dict tunnel(const Keywords& k) {
   }
   // The robot's kind or file; the tunnel's arguments set its simulation.
   const std::shared_ptr<Robot> base = robot_arg(k["robot"]);
-  const std::shared_ptr<Robot> robot = robot_of(base->kind, sim_options(k, false), base->file);
+  experiments::RobotSpec walked = base->spec;
+  walked.sim = sim_options(k, false);
+  const std::shared_ptr<Robot> robot = robot_of(std::move(walked));
   const robot::Morphology& morph = robot->morph();
   const long max_steps = whole(k["max_steps"], "max_steps", sim::kRunStepsLimits);
   std::string video;

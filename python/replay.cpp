@@ -35,19 +35,18 @@ constexpr const char* kStateFormat = "multicpg state";
 constexpr int kStateVersion = 1;
 
 // The simulation a robot key describes ({"robot", "robot_file", "sim"}: a Robot's pickled form).
-experiments::RunSpec robot_spec(const json& key, std::string_view name) {
-  experiments::RunSpec spec;
+experiments::RobotSpec robot_spec(const json& key, std::string_view name) {
+  experiments::RobotSpec spec;
   spec.sim = key.at("sim").get<sim::SimOptions>();
   if (key.contains("robot_file")) {
     const auto recorded = key.at("robot_file").get<experiments::RobotFileRecord>();
-    spec.robot_file = named(name, [&] { return experiments::load_run_robot_file(recorded.path); });
-    if (spec.robot_file->record != recorded) {
+    spec.file = named(name, [&] { return experiments::load_run_robot_file(recorded.path); });
+    if (spec.file->record != recorded) {
       value_error(name, "'" + recorded.path + "' has changed since the simulation started");
     }
-    spec.robot = spec.robot_file->file.layout;
+    spec.kind = spec.file->file.layout;
   } else {
-    spec.robot =
-        named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
+    spec.kind = named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
   }
   return spec;
 }
@@ -96,12 +95,12 @@ py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::ha
       document.value("version", 0) != kStateVersion) {
     value_error("sim", "not a multicpg.Simulation of this version");
   }
-  const experiments::RunSpec spec = robot_spec(document.at("robot"), "sim");
+  const experiments::RobotSpec walked = robot_spec(document.at("robot"), "sim");
   std::string html;
   sim::Pose2 end;
   {
     const py::gil_scoped_release release;
-    const sim::SimModel model = experiments::make_run_model(spec);
+    const sim::SimModel model = experiments::make_model(walked);
     const sim::StepperCheckpoint checkpoint =
         sim::checkpoint_from_json(model, document.at("checkpoint"));
     report::ReplayRecorder recorder(checkpoint.walked);

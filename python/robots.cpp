@@ -4,9 +4,6 @@
 
 #include <pybind11/stl.h>
 
-#include <map>
-#include <mutex>
-
 #include "common/errors.h"
 #include "experiments/run_spec.h"
 #include "python/args.h"
@@ -19,26 +16,6 @@
 namespace multicpg::python {
 
 using Json = nlohmann::json;
-
-namespace {
-
-// Equal robots share one compiled model while any of them lives (a compile takes tens of ms,
-// and unpickled states each need their robot's).
-std::shared_ptr<const sim::SimModel> shared_model(robot::RobotKind kind,
-                                                  const experiments::RunRobotFile* file,
-                                                  const sim::SimOptions& options,
-                                                  const std::string& key) {
-  static std::mutex mutex;
-  static std::map<std::string, std::weak_ptr<const sim::SimModel>> models;
-  const std::lock_guard<std::mutex> lock(mutex);
-  if (std::shared_ptr<const sim::SimModel> model = models[key].lock()) return model;
-  auto model = std::make_shared<const sim::SimModel>(file ? sim::make_sim_model(file->file, options)
-                                                          : sim::make_sim_model(kind, options));
-  models[key] = model;
-  return model;
-}
-
-}  // namespace
 
 std::string sim_argument(const std::string& key) {
   if (key == "scene.tunnel") return "tunnel";
@@ -99,29 +76,25 @@ void set_body(sim::SimOptions& options, py::handle model, py::handle body) {
 
 }  // namespace
 
-std::shared_ptr<Robot> robot_of(robot::RobotKind kind, const sim::SimOptions& options,
-                                std::shared_ptr<const experiments::RunRobotFile> file) {
+std::shared_ptr<Robot> robot_of(experiments::RobotSpec spec) {
   try {
-    sim::validate(options, kind);
-    if (file) {
-      experiments::RunSpec walk;
-      walk.robot = kind;
-      walk.robot_file = file;
-      walk.sim = options;
-      experiments::validate(walk);
-    }
+    experiments::validate(spec);
   } catch (const OptionError& e) {
     value_error(sim_argument(e.key().starts_with("sim.") ? e.key().substr(4) : e.key()), e.what());
   }
+  // Equal robots share one compiled model while any of them lives (unpickled states each need
+  // their robot's).
+  static experiments::ModelCache models;
   auto r = std::make_shared<Robot>();
-  r->kind = kind;
-  r->file = std::move(file);
-  r->options = options;
-  Json key{{"robot", std::string(robot::to_string(kind))}, {"sim", options}};
-  if (r->file) key["robot_file"] = r->file->record;
-  r->key = key.dump();
-  r->model = shared_model(kind, r->file.get(), options, r->key);
+  r->model = models.model(spec);
+  r->spec = std::move(spec);
   return r;
+}
+
+Json robot_key(const experiments::RobotSpec& spec) {
+  Json key{{"robot", std::string(robot::to_string(spec.kind))}, {"sim", spec.sim}};
+  experiments::record_robot_file(key, spec);
+  return key;
 }
 
 // Robot.from_file: a robot file (docs/robots.md "Your robot: robot files"); a bad one is a
@@ -170,7 +143,7 @@ std::shared_ptr<Robot> make_robot(const Keywords& k) {
   const sim::SimOptions options = sim_options(k, flag(k["tunnel"], "tunnel"));
   if (sim::is_robot_file(name)) {
     auto file = load_robot_file(name);
-    return robot_of(file->file.layout, options, file);
+    return robot_of({file->file.layout, file, options});
   }
   const robot::RobotKind kind = named("name", [&] {
     try {
@@ -179,14 +152,14 @@ std::shared_ptr<Robot> make_robot(const Keywords& k) {
       throw BadInput(std::string(e.what()) + ", or a robot file FILE.toml");
     }
   });
-  return robot_of(kind, options);
+  return robot_of({kind, nullptr, options});
 }
 
 std::shared_ptr<Robot> with_terrain(const std::shared_ptr<Robot>& robot, py::handle terrain) {
   if (terrain.is_none()) return robot;
-  sim::SimOptions options = robot->options;
-  options.scene.terrain = terrain_arg(terrain, "terrain");
-  return robot_of(robot->kind, options, robot->file);
+  experiments::RobotSpec spec = robot->spec;
+  spec.sim.scene.terrain = terrain_arg(terrain, "terrain");
+  return robot_of(std::move(spec));
 }
 
 // A robot read back from its key (a pickled Robot or State).
@@ -200,11 +173,11 @@ std::shared_ptr<Robot> robot_from_key(const Json& key, std::string_view name) {
       if (file->record != recorded) {
         value_error(name, "'" + recorded.path + "' has changed since the robot was pickled");
       }
-      return robot_of(file->file.layout, options, file);
+      return robot_of({file->file.layout, file, options});
     }
     const robot::RobotKind kind =
         named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
-    return robot_of(kind, options);
+    return robot_of({kind, nullptr, options});
   } catch (const Json::exception& e) {
     value_error(name, std::string("not a multicpg robot: ") + e.what());
   }
@@ -222,32 +195,33 @@ std::shared_ptr<Robot> robot_arg(py::handle robot, std::string_view name) {
   const std::string text = robot.cast<std::string>();
   if (sim::is_robot_file(text)) {
     auto file = load_robot_file(text);
-    return robot_of(file->file.layout, sim::SimOptions{}, file);
+    return robot_of({file->file.layout, file, sim::SimOptions{}});
   }
   const robot::RobotKind kind = named(name, [&] { return robot::parse_robot(text); });
-  return robot_of(kind, sim::SimOptions{});
+  return robot_of({kind, nullptr, sim::SimOptions{}});
 }
 
 std::string robot_repr(const Robot& r) {
   const sim::SimOptions defaults;
-  std::string out = "multicpg.Robot('" + (r.file ? r.file->record.path : r.morph().name) + "'";
-  if (r.options.scene.tunnel) out += ", tunnel=True";
-  if (r.options.control_dt != defaults.control_dt) {
-    out += ", control_dt=" + py::repr(py::float_(r.options.control_dt)).cast<std::string>();
+  std::string out =
+      "multicpg.Robot('" + (r.spec.file ? r.spec.file->record.path : r.morph().name) + "'";
+  if (r.spec.sim.scene.tunnel) out += ", tunnel=True";
+  if (r.spec.sim.control_dt != defaults.control_dt) {
+    out += ", control_dt=" + py::repr(py::float_(r.spec.sim.control_dt)).cast<std::string>();
   }
-  if (r.options.physics_dt != defaults.physics_dt) {
-    out += ", physics_dt=" + py::repr(py::float_(r.options.physics_dt)).cast<std::string>();
+  if (r.spec.sim.physics_dt != defaults.physics_dt) {
+    out += ", physics_dt=" + py::repr(py::float_(r.spec.sim.physics_dt)).cast<std::string>();
   }
-  if (r.options.servo_gain != defaults.servo_gain) {
-    out += ", servo_gain=" + py::repr(py::float_(r.options.servo_gain)).cast<std::string>();
+  if (r.spec.sim.servo_gain != defaults.servo_gain) {
+    out += ", servo_gain=" + py::repr(py::float_(r.spec.sim.servo_gain)).cast<std::string>();
   }
-  if (r.options.scene.terrain != robot::Terrain{}) {
-    out += ", terrain='" + robot::terrain_text(r.options.scene.terrain) + "'";
+  if (r.spec.sim.scene.terrain != robot::Terrain{}) {
+    out += ", terrain='" + robot::terrain_text(r.spec.sim.scene.terrain) + "'";
   }
-  if (r.options.model != defaults.model) {
-    out += ", model='" + std::string(robot::to_string(r.options.model)) + "'";
+  if (r.spec.sim.model != defaults.model) {
+    out += ", model='" + std::string(robot::to_string(r.spec.sim.model)) + "'";
   }
-  if (Json(r.options.body) != Json(robot::body_params(r.options.model))) out += ", body=...";
+  if (r.spec.sim.body != robot::body_params(r.spec.sim.model)) out += ", body=...";
   return out + ")";
 }
 
@@ -345,7 +319,7 @@ void register_robots(py::module_& m) {
           "from_file",
           [](const std::string& path) {
             auto file = mp::load_robot_file(path);
-            return mp::robot_of(file->file.layout, {}, file);
+            return mp::robot_of({file->file.layout, file, {}});
           },
           arg("path"),
           "The robot of a robot file (a TOML leg map over an MJCF, docs/robots.md \"Your robot:\n"
@@ -355,8 +329,8 @@ void register_robots(py::module_& m) {
       .def_property_readonly(
           "file",
           [](const mp::Robot& r) -> py::object {
-            if (!r.file) return py::none();
-            return py::str(r.file->record.path);
+            if (!r.spec.file) return py::none();
+            return py::str(r.spec.file->record.path);
           },
           "the robot file it was read from, or None for a built-in robot")
       .def_property_readonly(
@@ -390,20 +364,20 @@ void register_robots(py::module_& m) {
           },
           "every joint's MJCF name, R1_TC, R1_CTr, R1_FTi, R2_TC, ...")
       .def_property_readonly(
-          "tunnel", [](const mp::Robot& r) { return r.options.scene.tunnel; },
+          "tunnel", [](const mp::Robot& r) { return r.spec.sim.scene.tunnel; },
           "whether the corridor of paper §5 is in the scene")
       .def_property_readonly(
-          "terrain", [](const mp::Robot& r) { return r.options.scene.terrain; }, "the ground")
+          "terrain", [](const mp::Robot& r) { return r.spec.sim.scene.terrain; }, "the ground")
       .def_property_readonly(
           "model",
           [](const mp::Robot& r) {
-            return std::string(multicpg::robot::to_string(r.options.model));
+            return std::string(multicpg::robot::to_string(r.spec.sim.model));
           },
           "the body model its parameters started from: 'paper-sim' or 'real' (docs/fidelity.md)")
       .def_property_readonly(
           "body",
           [](const mp::Robot& r) {
-            const nlohmann::json params = r.options.body;
+            const nlohmann::json params = r.spec.sim.body;
             return py::module_::import("json").attr("loads")(params.dump());
           },
           "the body's parameters (robot/body_params.h), as a dict")
@@ -435,21 +409,30 @@ void register_robots(py::module_& m) {
            [](const mp::Robot& a, py::object b) -> py::object {
              if (!py::isinstance<mp::Robot>(b))
                return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-             return py::bool_(a.key == b.cast<const mp::Robot&>().key);
+             return py::bool_(a.spec == b.cast<const mp::Robot&>().spec);
            })
-      .def("__hash__", [](const mp::Robot& r) { return py::hash(py::str(r.key)); })
+      // Of what equality compares exactly (no floating-point number), so equal robots hash
+      // equal.
+      .def("__hash__",
+           [](const mp::Robot& r) {
+             const multicpg::experiments::RobotSpec& s = r.spec;
+             return py::hash(py::make_tuple(std::string(multicpg::robot::to_string(s.kind)),
+                                            s.file ? s.file->record.checksum_toml : std::string(),
+                                            s.sim.scene.tunnel,
+                                            std::string(multicpg::robot::to_string(s.sim.model))));
+           })
       .def("__repr__", [](const mp::Robot& r) { return mp::robot_repr(r); })
       .def("__copy__", [](py::object self) { return self; })
       .def("__deepcopy__", [](py::object self, py::object) { return self; })
-      .def(py::pickle([](const mp::Robot& r) -> py::object { return py::str(r.key); },
-                      [](const py::object& key) {
-                        const std::string text = mp::text(key, "Robot");
-                        const nlohmann::json j =
-                            nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-                        if (j.is_discarded())
-                          mp::value_error("Robot", "not a pickled multicpg.Robot");
-                        return mp::robot_from_key(j, "Robot");
-                      }));
+      .def(py::pickle(
+          [](const mp::Robot& r) -> py::object { return py::str(mp::robot_key(r.spec).dump()); },
+          [](const py::object& key) {
+            const std::string text = mp::text(key, "Robot");
+            const nlohmann::json j =
+                nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+            if (j.is_discarded()) mp::value_error("Robot", "not a pickled multicpg.Robot");
+            return mp::robot_from_key(j, "Robot");
+          }));
 }
 
 }  // namespace multicpg::python

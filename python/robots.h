@@ -19,14 +19,10 @@ namespace multicpg::python {
 namespace py = pybind11;
 
 // A robot and its simulation model, shared read-only by every Simulation of it. Two robots are
-// equal when they are made of the same kind, robot file and options (`key`), whichever object
-// holds them.
+// equal when their specs are (the same kind, robot file and options), whichever object holds them.
 struct Robot {
-  robot::RobotKind kind;                                  // with a robot file, its layout
-  std::shared_ptr<const experiments::RunRobotFile> file;  // null: the built-in robot
-  sim::SimOptions options;
-  std::string key;  // {"robot": name, "robot_file": its record, "sim": options} as JSON text
-  std::shared_ptr<const sim::SimModel> model;
+  experiments::RobotSpec spec;
+  std::shared_ptr<const sim::SimModel> model;  // of every robot equal to it (ModelCache)
 
   const robot::Morphology& morph() const { return model->controller.morphology; }
 };
@@ -42,10 +38,12 @@ Params sim_params();
 sim::SimOptions sim_options(const Keywords& k, bool tunnel);
 
 // A robot checked whole; a bad option is a ValueError naming its argument.
-std::shared_ptr<Robot> robot_of(robot::RobotKind kind, const sim::SimOptions& options,
-                                std::shared_ptr<const experiments::RunRobotFile> file = nullptr);
+std::shared_ptr<Robot> robot_of(experiments::RobotSpec spec);
 // Robot.from_file: a bad file is a ValueError with the CLI's one line.
 std::shared_ptr<const experiments::RunRobotFile> load_robot_file(const std::string& path);
+// A robot's key, its pickled form (and a State's "robot"): {"robot": its layout's name,
+// "robot_file": the file's record (with a robot file), "sim": its options}.
+nlohmann::json robot_key(const experiments::RobotSpec& spec);
 // A robot read back from its key (a pickled Robot or State).
 std::shared_ptr<Robot> robot_from_key(const nlohmann::json& key, std::string_view name);
 // A robot argument: a Robot, a robot name or a robot file, the latter two with default options.

@@ -135,9 +135,7 @@ Params progress_params() {
 experiments::RunSpec run_spec(const Robot& robot, sim::StartSpec start, sim::FaultTimeline faults,
                               std::optional<learning::CompensationOptions> learning) {
   experiments::RunSpec spec;
-  spec.robot = robot.kind;
-  spec.robot_file = robot.file;
-  spec.sim = robot.options;
+  spec.robot = robot.spec;
   spec.faults = std::move(faults);
   if (learning) {
     spec.start = experiments::learning_start(learning->mode);

@@ -169,7 +169,7 @@ class Simulation {
   void restore(py::handle value) {
     if (!py::isinstance<State>(value)) type_error("state", "a multicpg.State", value);
     const State& s = value.cast<const State&>();
-    if (s.robot->key != robot_->key) {
+    if (s.robot->spec != robot_->spec) {
       value_error("state", "it comes from a simulation of " + robot_repr(*s.robot) +
                                ", this one walks " + robot_repr(*robot_));
     }

@@ -22,7 +22,7 @@ constexpr int kStateVersion = 1;
 py::bytes state_bytes(const State& s) {
   const Json document{{"format", kStateFormat},
                       {"version", kStateVersion},
-                      {"robot", Json::parse(s.robot->key)},
+                      {"robot", robot_key(s.robot->spec)},
                       {"checkpoint", sim::checkpoint_json(*s.robot->model, *s.checkpoint)},
                       {"steering", s.steering ? Json(*s.steering) : Json()}};
   std::string bytes;

@@ -12,7 +12,7 @@ FigureFiles draw_landscape(const experiments::Landscape& landscape,
                            const std::vector<learning::Periods>& learned,
                            const std::filesystem::path& out_dir) {
   const experiments::LandscapeSpec& spec = landscape.spec;
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   const std::optional<std::size_t> best = experiments::best_combination(landscape);
   std::vector<LandscapePoint> points;
   for (std::size_t i = 0; i < landscape.combinations.size(); ++i) {

@@ -26,6 +26,8 @@ struct LegPosture {
   double tc = 0.0;
   double ctr = 0.7;
   double fti = -0.7;
+
+  bool operator==(const LegPosture&) const = default;
 };
 inline constexpr LegPosture kReferenceDisabledPosture{};
 
@@ -37,6 +39,8 @@ struct LegPostureOverride {
   std::optional<double> tc;
   std::optional<double> ctr;
   std::optional<double> fti;
+
+  bool operator==(const LegPostureOverride&) const = default;
 };
 
 // --- Defaults: the paper's simulator, lpzrobots AMOSII v2 (docs/robots.md) ---
@@ -114,6 +118,8 @@ struct BodyParams {
   // Every leg servo's stall torque (N m) and no-load speed (rad/s).
   double servo_torque = kSimServoTorque;
   double servo_speed = kSimServoSpeed;
+
+  bool operator==(const BodyParams&) const = default;
 };
 
 // One number of BodyParams named by its key ("slip", or a joint of the all-legs posture:

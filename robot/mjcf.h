@@ -26,6 +26,8 @@ struct Scene {
   double tunnel_length = 3.0;  // m
   double tunnel_width = 1.2;   // m
   Terrain terrain;             // the ground (robot/terrain.h); the walls stand on it
+
+  bool operator==(const Scene&) const = default;
 };
 
 // A file the MJCF refers to, beside it (rough ground's heightfield): its name and bytes.

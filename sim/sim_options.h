@@ -57,6 +57,8 @@ struct SimOptions {
   // (robot/body_models.h; recorded, the values are what counts).
   robot::BodyModel model = robot::kDefaultBodyModel;
   robot::BodyParams body;
+
+  bool operator==(const SimOptions&) const = default;
 };
 
 // The physics step the options give: theirs, or with 0 the default for their control step.

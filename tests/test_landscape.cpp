@@ -119,7 +119,7 @@ class LandscapeCli : public ::testing::Test {
 
 TEST(Landscape, CombinationsCoverEveryWorkingLegPeriod) {
   experiments::LandscapeSpec spec;
-  spec.kind = robot::RobotKind::hexapod;
+  spec.robot.kind = robot::RobotKind::hexapod;
   spec.disabled = {0};
   const std::vector<learning::Periods> all = experiments::landscape_combinations(spec);
   ASSERT_EQ(all.size(), 3125u);
@@ -129,11 +129,11 @@ TEST(Landscape, CombinationsCoverEveryWorkingLegPeriod) {
   std::vector<learning::Periods> sorted = all;
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(std::unique(sorted.begin(), sorted.end()), sorted.end());
-  const robot::Morphology& hexapod = robot::morphology(spec.kind);
+  const robot::Morphology& hexapod = experiments::morphology(spec.robot);
   EXPECT_EQ(experiments::combination_key(hexapod, spec.disabled, all[1]),
             "R2-4_R3-4_L1-4_L2-4_L3-5");
 
-  spec.kind = robot::RobotKind::quadruped;
+  spec.robot.kind = robot::RobotKind::quadruped;
   spec.disabled = {3};
   spec.period_set = {4, 5};
   EXPECT_EQ(experiments::landscape_combinations(spec).size(), 8u);

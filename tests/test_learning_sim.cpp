@@ -1,12 +1,14 @@
 // Learning on the real MuJoCo hexapod: R1 disabled converges, runs are reproducible,
-// beta = 0 (random search) needs the most trials.
+// beta = 0 (random search) needs the most trials; the models runs share (experiments::ModelCache).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 
 #include "experiments/learning_experiments.h"
 #include "experiments/learning_run.h"
+#include "experiments/run_robot.h"
 #include "tests/cli_runner.h"
 
 namespace {
@@ -78,6 +80,26 @@ TEST(LearningSim, RandomSearchNeedsTheMostTrials) {
   EXPECT_GT(table.rows[0].trials.mean, table.rows[1].trials.mean);
   EXPECT_GT(table.rows[0].trials.mean, table.rows[2].trials.mean);
   std::filesystem::remove_all(dir);
+}
+
+// Equal robots share one model while a user holds it; another kind or option makes another, and
+// a model no one holds is let go (experiments/run_robot.h).
+TEST(ModelCache, EqualRobotsShareOneModel) {
+  experiments::ModelCache cache;
+  const experiments::RobotSpec hexapod;
+  const auto first = cache.model(hexapod);
+  EXPECT_EQ(cache.model(experiments::RobotSpec{}), first);
+  experiments::RobotSpec stiffer = hexapod;
+  stiffer.sim.servo_gain = 20.0;
+  EXPECT_FALSE(stiffer == hexapod);
+  EXPECT_NE(cache.model(stiffer), first);
+  experiments::RobotSpec quadruped;
+  quadruped.kind = robot::RobotKind::quadruped;
+  const std::weak_ptr<const sim::SimModel> dropped = cache.model(quadruped);
+  EXPECT_TRUE(dropped.expired());
+  const auto again = cache.model(quadruped);
+  EXPECT_EQ(again->controller.morphology.name, "quadruped");
+  EXPECT_EQ(cache.model(quadruped), again);
 }
 
 }  // namespace

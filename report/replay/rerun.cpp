@@ -61,15 +61,15 @@ json read_json(const fs::path& path) {
 void set_robot(experiments::RunSpec& spec, const json& result, const std::string& name) {
   if (result.contains("robot_file")) {
     const auto recorded = result.at("robot_file").get<experiments::RobotFileRecord>();
-    spec.robot_file = experiments::load_run_robot_file(recorded.path);
-    if (spec.robot_file->record != recorded) {
+    spec.robot.file = experiments::load_run_robot_file(recorded.path);
+    if (spec.robot.file->record != recorded) {
       throw BadInput(name + " was walked by the robot file " + quoted(recorded.path) +
                      ", which has changed since");
     }
-    spec.robot = spec.robot_file->file.layout;
+    spec.robot.kind = spec.robot.file->file.layout;
     return;
   }
-  spec.robot = robot::parse_robot(result.at("robot").get<std::string>());
+  spec.robot.kind = robot::parse_robot(result.at("robot").get<std::string>());
 }
 
 // Checks the run as validate does, its errors naming the file.
@@ -123,18 +123,18 @@ RerunReplay rerun_experiment_run(const fs::path& file) {
   if (saved->at("result") != result) differs(quoted(file.string()));
   out.recording = recorder.recording();
   out.title = "run " + id + " of " + dir.filename().string() + ": " +
-              experiments::morphology(spec).name + ", " +
-              faults_title(experiments::morphology(spec), spec.faults);
+              experiments::morphology(spec.robot).name + ", " +
+              faults_title(experiments::morphology(spec.robot), spec.faults);
   return out;
 }
 
 RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::SimOptions& sim) {
   experiments::RunSpec spec;
   set_robot(spec, saved, name);
-  spec.sim = sim;
-  spec.sim.control_dt = saved.at("control_dt_s").get<double>();
-  spec.sim.physics_dt = saved.at("physics_dt_s").get<double>();
-  const robot::Morphology& morph = experiments::morphology(spec);
+  spec.robot.sim = sim;
+  spec.robot.sim.control_dt = saved.at("control_dt_s").get<double>();
+  spec.robot.sim.physics_dt = saved.at("physics_dt_s").get<double>();
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   spec.start.periods = robot::period_map_from_json(morph, saved.at("periods"));
   spec.start.warmup = saved.at("warmup").get<long>();
   for (const json& f : saved.at("faults")) {
@@ -146,7 +146,7 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   }
   sim::sort_timeline(spec.faults);
   check(spec, name);
-  const sim::SimModel model = experiments::make_run_model(spec);
+  const sim::SimModel model = experiments::make_model(spec.robot);
   ReplayRecorder recorder;
   sim::WalkSpec walk;
   walk.start = spec.start;
@@ -196,7 +196,7 @@ RerunReplay rerun_learning(const json& saved, const std::string& name, const sim
   try {
     experiments::RunSpec spec;
     set_robot(spec, saved, name);
-    spec.sim = sim;
+    spec.robot.sim = sim;
     const json& recorded = saved.at("options");
     const learning::CompensationOptions& options =
         spec.learning.emplace(learning_options(recorded));
@@ -208,11 +208,11 @@ RerunReplay rerun_learning(const json& saved, const std::string& name, const sim
     }
     spec.start = experiments::learning_start(options.mode);
     check(spec, name);
-    const sim::SimModel model = experiments::make_run_model(spec);
+    const sim::SimModel model = experiments::make_model(spec.robot);
     ReplayRecorder recorder;
     const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &recorder);
     if (!reruns_as_saved(saved, experiments::learn_json(spec, run.result))) differs(name);
-    const robot::Morphology& morph = experiments::morphology(spec);
+    const robot::Morphology& morph = experiments::morphology(spec.robot);
     return {recorder.recording(), "learn: " + morph.name + ", " + faults_title(morph, spec.faults) +
                                       ", " + std::string(learning::to_string(options.mode)) +
                                       " mode"};

@@ -43,11 +43,11 @@ std::vector<learning::Periods> learned_periods(const std::filesystem::path& dir,
 
 Section landscape_stage(const StageContext& ctx) {
   experiments::LandscapeSpec spec;
-  spec.kind = robot::RobotKind::quadruped;
-  const robot::Morphology& morph = robot::morphology(spec.kind);
+  spec.robot.kind = robot::RobotKind::quadruped;
+  const robot::Morphology& morph = experiments::morphology(spec.robot);
   spec.disabled = robot::parse_leg_set(morph, kScenario);
   spec.windows = ctx.sizes.landscape_windows;
-  spec.sim = ctx.options.sim;
+  spec.robot.sim = ctx.options.sim;
   if (!ctx.sizes.landscape_periods.empty()) {
     spec.period_set.assign(ctx.sizes.landscape_periods.begin(), ctx.sizes.landscape_periods.end());
   }

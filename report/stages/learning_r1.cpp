@@ -59,7 +59,7 @@ Section learning_r1_stage(const StageContext& ctx) {
   const robot::Morphology& morph = hexapod.controller.morphology;
   const std::size_t legs = morph.size();
   experiments::RunSpec spec;
-  spec.sim = ctx.options.sim;
+  spec.robot.sim = ctx.options.sim;
   learning::CompensationOptions& options = spec.learning.emplace();
   options.mode = learning::Mode::paper;  // the paper's figures show the paper's algorithm
   options.seed = ctx.options.seed;

@@ -48,14 +48,14 @@ std::string StageContext::rel(const std::filesystem::path& file) const {
 experiments::ExperimentSpec StageContext::experiment(robot::RobotKind kind, const std::string& name,
                                                      int runs) const {
   experiments::ExperimentSpec spec;
-  spec.kind = kind;
+  spec.robot.kind = kind;
   spec.runs = runs;
   spec.seed = options.seed;
   spec.jobs = options.jobs;
   spec.out = dir("experiments/" + name);
   spec.progress = options.progress;
   spec.progress_label = "experiment " + name;
-  spec.sim = options.sim;
+  spec.robot.sim = options.sim;
   spec.base.mode = learning::Mode::paper;  // the paper's experiments, its algorithm
   return spec;
 }

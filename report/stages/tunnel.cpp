@@ -102,7 +102,7 @@ experiments::TunnelOutcome learn_and_walk(const StageContext& ctx, const sim::Si
                                           const std::vector<std::size_t>& disabled,
                                           bool periods_alone) {
   experiments::RunSpec spec;
-  spec.sim = body;
+  spec.robot.sim = body;
   learning::CompensationOptions& l = spec.learning.emplace();
   l.seed = ctx.options.seed;
   if (periods_alone) {
