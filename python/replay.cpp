@@ -20,10 +20,14 @@
 
 // GCC 12 warns that the type macro's default object's std::optional may be uninitialized where
 // it inlines from_json (a known false positive with std::optional), as report/replay/rerun.cpp.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include "learning/json.h"
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 namespace multicpg::python {
 namespace {
