@@ -35,7 +35,7 @@ void register_reproduce(CLI::App& app) {
       "reproduce", "run every experiment of the paper and write DIR/index.html (resumable)");
   cmd->add_option("--out", o->run.out, "folder for the report")->required();
   cmd->add_flag("--quick", o->run.quick,
-                "one learning run per scenario and per β, faster videos (measured: 148 s on 2 "
+                "one learning run per scenario and per β, faster videos (measured: 98 s on 2 "
                 "idle cores; docs/benchmarks.md)");
   cmd->add_option("--jobs", o->jobs, "parallel learning runs (default: every core)")
       ->check(in(experiments::kJobsLimits));
