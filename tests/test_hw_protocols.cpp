@@ -305,6 +305,7 @@ TEST(HardwareFile, EveryMistakeIsOneLineNamingFileAndKey) {
       EXPECT_NE(what.find(c.mentions), std::string::npos) << what;
       EXPECT_EQ(count_lines(what), 1) << what;
     }
+    std::filesystem::remove_all(std::filesystem::path(path).parent_path());
   }
   try {
     load_hardware_file(kAmosii, robot::morphology(robot::RobotKind::quadruped));
@@ -336,6 +337,7 @@ TEST(HardwareFile, CommandsRefuseABadFileBeforeAnythingMoves) {
                    "no servo of the hardware file has ID 40");
   expect_bad_input("emulate --inject wobble@3 --hardware " + kDynamixel.string(),
                    "KIND[=VALUE]@STEP");
+  std::filesystem::remove_all(std::filesystem::path(unmapped).parent_path());
 }
 
 }  // namespace
