@@ -3,6 +3,7 @@
 // beside the paper.
 #include <iostream>
 #include <optional>
+#include <utility>
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
@@ -15,7 +16,6 @@
 #include "experiments/processes.h"
 #include "experiments/results_page.h"
 #include "experiments/scenarios.h"
-#include "sim/robot_file.h"
 
 namespace multicpg::apps {
 namespace {
@@ -32,16 +32,16 @@ struct ExperimentOptions {
   std::int64_t max_runs = experiments::kDefaultMaxRuns;
 };
 
-experiments::ExperimentSpec spec_of(const ExperimentOptions& o, robot::RobotKind kind) {
+experiments::ExperimentSpec spec_of(const ExperimentOptions& o, experiments::RobotSpec robot) {
   experiments::ExperimentSpec spec;
-  spec.robot.kind = kind;
+  spec.robot = std::move(robot);
   spec.runs = o.runs;
   spec.seed = o.learning.options.seed;
   spec.jobs = o.jobs.value_or(0);
   spec.out = o.out;
   spec.base = learning_options(o.learning);  // checked with each run (resolve_sweep)
   spec.check_windows = o.check_windows;
-  spec.robot.sim = sim_options(o.sim, o.body, kind);
+  spec.robot.sim = sim_options(o.sim, o.body, spec.robot.kind);
   spec.limits.max_runs = o.max_runs;
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
@@ -93,20 +93,13 @@ void register_experiment(CLI::App& app) {
       ->capture_default_str();
   add_common(*t, *table, experiments::kScenarioRuns, true);
   t->callback([table] {
-    if (sim::is_robot_file(table->robot)) {
-      const auto file = experiments::load_run_robot_file(table->robot);
-      experiments::ExperimentSpec spec = spec_of(*table, file->file.layout);
-      spec.robot.file = file;
-      print_table(experiments::run_scenario_table(spec), table->out);
-      return;
-    }
-    const robot::RobotKind kind = robot::parse_robot(table->robot);
-    if (kind == robot::RobotKind::octopod) {
+    const experiments::RobotSpec chosen = experiments::named_robot(table->robot);
+    if (!chosen.file && chosen.kind == robot::RobotKind::octopod) {
       throw BadInput(
           "--robot octopod: the paper has scenario tables for the hexapod and "
           "quadruped only");
     }
-    print_table(experiments::run_scenario_table(spec_of(*table, kind)), table->out);
+    print_table(experiments::run_scenario_table(spec_of(*table, chosen)), table->out);
   });
 
   auto beta = std::make_shared<ExperimentOptions>();
@@ -114,9 +107,10 @@ void register_experiment(CLI::App& app) {
       "beta", "R1+R2 disabled, N runs per beta in 0, 0.1, 0.3, 0.5, 1, 5, 10 (paper Fig. 14)");
   add_common(*b, *beta, experiments::kBetaRuns, false);
   b->callback([beta] {
-    print_table(experiments::run_beta_study(spec_of(*beta, robot::RobotKind::hexapod),
-                                            experiments::kBetaStudyValues),
-                beta->out);
+    print_table(
+        experiments::run_beta_study(spec_of(*beta, {robot::RobotKind::hexapod, nullptr, {}}),
+                                    experiments::kBetaStudyValues),
+        beta->out);
   });
 
   struct ResultsOptions {

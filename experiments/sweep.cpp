@@ -441,7 +441,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
                                    : ExperimentKind::grid;
   const bool name_scenario = sweep.grid.empty() || scenarios.size() > 1;
   const std::vector<std::string> names = axis_names(sweep.grid);
-  std::set<std::string> sims_checked;
+  std::vector<RobotSpec> checked;  // each distinct robot of the grid is validated once
   for (const std::vector<json>& point : grid_points(sweep.grid)) {
     json learning_point = learning;
     json sim_point = sim_doc;
@@ -464,7 +464,10 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(canonical_sim(sim_point), "sim");
     const RobotSpec robot_point{sweep.robot, sweep.robot_file, sim_options};
-    if (sims_checked.insert(json(sim_options).dump()).second) validate(robot_point);
+    if (std::find(checked.begin(), checked.end(), robot_point) == checked.end()) {
+      validate(robot_point);
+      checked.push_back(robot_point);
+    }
     for (const ScenarioSpec& s : scenarios) {
       RunSpec spec;
       spec.robot = robot_point;
