@@ -17,18 +17,17 @@ AdditiveModel::AdditiveModel(const SearchSpace& space, const AdditiveModelParams
       prior_mean_[1].size() != space.size()) {
     throw std::logic_error("AdditiveModel: a prior mean per output and combination");
   }
-  precision_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(features_),
-                                     static_cast<Eigen::Index>(features_));
-  b_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(features_), kOutputs);
+  const auto d = static_cast<Eigen::Index>(features_);
+  covariance_ = Eigen::MatrixXd::Zero(d, d);
+  mean_ = Eigen::MatrixXd::Zero(d, kOutputs);
   const auto var = [](double sd) { return sd * sd; };
-  precision_(0, 0) = 1.0 / var(params.intercept_deg);
+  covariance_(0, 0) = var(params.intercept_deg);
   for (std::size_t f = 1; f < 1 + legs * q; ++f) {
-    precision_(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(f)) =
-        1.0 / var(params.effect_deg);
+    covariance_(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(f)) =
+        var(params.effect_deg);
   }
   for (std::size_t f = 1 + legs * q; f < features_; ++f) {
-    precision_(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(f)) =
-        1.0 / var(params.pair_deg);
+    covariance_(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(f)) = var(params.pair_deg);
   }
 }
 
@@ -51,29 +50,26 @@ std::vector<std::size_t> AdditiveModel::active(std::size_t combination) const {
 }
 
 void AdditiveModel::observe(std::size_t combination, double yaw_deg, double path_deg) {
+  // The window is y = x^T weights + noise with x the combination's active features (0/1):
+  // u = Sigma x, gain k = u / (noise^2 + x^T u), mean += k (y - x^T mean), Sigma -= k u^T.
   const std::vector<std::size_t> a = active(combination);
-  const double w = 1.0 / (params_.noise_deg * params_.noise_deg);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(covariance_.rows());
+  for (std::size_t i : a) u += covariance_.col(static_cast<Eigen::Index>(i));
+  double xu = 0.0;
+  for (std::size_t i : a) xu += u(static_cast<Eigen::Index>(i));
+  const Eigen::VectorXd gain = u / (params_.noise_deg * params_.noise_deg + xu);
   const double y[kOutputs] = {yaw_deg - prior_mean_[0][combination],
                               path_deg - prior_mean_[1][combination]};
-  for (std::size_t i : a) {
-    for (std::size_t j : a) {
-      precision_(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) += w;
-    }
-    for (std::size_t o = 0; o < kOutputs; ++o) {
-      b_(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(o)) += w * y[o];
-    }
+  for (std::size_t o = 0; o < kOutputs; ++o) {
+    const auto oo = static_cast<Eigen::Index>(o);
+    double predicted = 0.0;
+    for (std::size_t i : a) predicted += mean_(static_cast<Eigen::Index>(i), oo);
+    mean_.col(oo) += gain * (y[o] - predicted);
   }
-  solved_ = false;
+  covariance_.noalias() -= gain * u.transpose();
 }
 
 void AdditiveModel::predict(std::vector<Prediction>& yaw, std::vector<Prediction>& path) const {
-  if (!solved_) {
-    // The precision is symmetric positive definite (a diagonal prior plus X^T X).
-    const Eigen::LLT<Eigen::MatrixXd> llt(precision_);
-    covariance_ = llt.solve(Eigen::MatrixXd::Identity(precision_.rows(), precision_.cols()));
-    mean_ = llt.solve(b_);
-    solved_ = true;
-  }
   yaw.resize(space_.size());
   path.resize(space_.size());
   for (std::size_t c = 0; c < space_.size(); ++c) {

@@ -53,11 +53,10 @@ class AdditiveModel {
   AdditiveModelParams params_;
   std::vector<std::vector<double>> prior_mean_;
   std::size_t features_ = 0;
-  Eigen::MatrixXd precision_;  // A = Sigma0^-1 + X^T X / noise^2
-  Eigen::MatrixXd b_;          // Sigma0^-1 m0 (= 0) + X^T (y - prior mean) / noise^2, per output
-  mutable bool solved_ = false;
-  mutable Eigen::MatrixXd covariance_;  // A^-1
-  mutable Eigen::MatrixXd mean_;        // A^-1 b, per output
+  // The weights' posterior, updated by each window (a Kalman, i.e. rank-one, update: O(D^2)
+  // instead of refactoring the D x D precision matrix, O(D^3)).
+  Eigen::MatrixXd covariance_;  // Sigma
+  Eigen::MatrixXd mean_;        // of the weights, per output (of y - prior mean)
 };
 
 }  // namespace multicpg::learning

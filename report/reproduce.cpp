@@ -44,7 +44,8 @@ constexpr Sizes kFull{experiments::kScenarioRuns,
                       {},
                       kPeriodsAloneMaxTrials,
                       learning::kDefaultMaxEpisodes,
-                      experiments::kDefaultBenchmarkSeeds};
+                      experiments::kDefaultBenchmarkSeeds,
+                      true};
 // The quick landscape: 27 of the 125 combinations (the fastest and the two slowest gaits), two
 // windows each, so that it adds seconds, not a minute.
 constexpr std::array<int, 3> kQuickLandscapePeriods{4, 8, 9};
@@ -61,19 +62,26 @@ constexpr int kQuickPeriodsAloneTrials = 10;
 constexpr int kQuickPeriodsAloneEpisodes = 1;
 // The quick learner benchmark: 3 seeds per scenario and learner (the full one: 100), seconds.
 constexpr int kQuickBenchmarkSeeds = 3;
+// Quick films: the learning film and the tunnel's at 16 and 32 controller steps per frame (the
+// full: 4 and 2), the walking films 4 s of real time (108 steps at 27 Hz; the full: 400 steps).
+// A frame costs about 37 ms of software rendering (docs/benchmarks.md).
+constexpr int kQuickLearningFilmSpeed = 16;
+constexpr int kQuickTunnelFilmSpeed = 32;
+constexpr long kQuickWalkFilmSteps = 108;
 constexpr Sizes kQuick{1,
                        1,
                        1,
                        kQuickBetaMaxTrials,
                        kQuickBetaValues,
-                       16,
-                       16,
-                       160,
+                       kQuickLearningFilmSpeed,
+                       kQuickTunnelFilmSpeed,
+                       kQuickWalkFilmSteps,
                        2,
                        kQuickLandscapePeriods,
                        kQuickPeriodsAloneTrials,
                        kQuickPeriodsAloneEpisodes,
-                       kQuickBenchmarkSeeds};
+                       kQuickBenchmarkSeeds,
+                       false};
 
 // The stages asked for and every stage they need, in the table's (the report's) order.
 std::vector<const Stage*> selected(const std::vector<std::string>& only) {

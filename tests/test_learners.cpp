@@ -2,6 +2,7 @@
 // known, the landscape files (learning/landscapes.h), and the CLI that chooses and benchmarks them.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -13,6 +14,7 @@
 
 #include "common/errors.h"
 #include "experiments/learner_benchmark.h"
+#include "learning/additive_model.h"
 #include "learning/benchmark.h"
 #include "learning/landscapes.h"
 #include "learning/learners.h"
@@ -295,6 +297,69 @@ TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
   EXPECT_THROW(learning::check_learner(learning::resolve_learner(missing),
                                        robot::RobotKind::quadruped, {kL2}),
                BadInput);
+}
+
+TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
+  // Its weight-space update, window by window, against the function-space posterior of the
+  // kernel it stands for: a constant, plus per working leg the same period, plus per pair of
+  // legs the same two periods, each scaled by its prior variance.
+  learning::LearnerSetup setup;
+  setup.robot = robot::RobotKind::quadruped;
+  setup.start.assign(4, learning::kStartPeriod);
+  setup.fixed = {kR2};
+  setup.search = search(60);
+  const learning::SearchSpace space(setup);
+  const learning::AdditiveModelParams params{1.5, 8.0, 4.0, 2.0};
+  std::vector<std::vector<double>> prior_mean(2, std::vector<double>(space.size()));
+  for (std::size_t c = 0; c < space.size(); ++c) {
+    prior_mean[0][c] = 0.1 * static_cast<double>(c % 7);
+    prior_mean[1][c] = -0.2 * static_cast<double>(c % 5);
+  }
+  learning::AdditiveModel model(space, params, prior_mean);
+  const auto kernel = [&](std::size_t a, std::size_t b) {
+    const std::size_t legs = space.working().size();
+    double k = params.intercept_deg * params.intercept_deg;
+    for (std::size_t i = 0; i < legs; ++i) {
+      if (space.digit(a, i) != space.digit(b, i)) continue;
+      k += params.effect_deg * params.effect_deg;
+      for (std::size_t j = i + 1; j < legs; ++j) {
+        if (space.digit(a, j) == space.digit(b, j)) k += params.pair_deg * params.pair_deg;
+      }
+    }
+    return k;
+  };
+  // Windows of a few combinations, one of them three times.
+  const std::vector<std::size_t> seen{0, 7, 7, 7, 31, 64, 100, 124, 55};
+  std::vector<double> yaw, path;
+  for (std::size_t n = 0; n < seen.size(); ++n) {
+    yaw.push_back(3.0 * std::sin(static_cast<double>(n)) + static_cast<double>(seen[n] % 11));
+    path.push_back(0.5 * yaw.back() - 1.0);
+    model.observe(seen[n], yaw.back(), path.back());
+  }
+  const auto n = static_cast<Eigen::Index>(seen.size());
+  Eigen::MatrixXd gram(n, n);
+  Eigen::MatrixXd residual(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const std::size_t ci = seen[static_cast<std::size_t>(i)];
+    for (Eigen::Index j = 0; j < n; ++j) gram(i, j) = kernel(ci, seen[static_cast<std::size_t>(j)]);
+    gram(i, i) += params.noise_deg * params.noise_deg;
+    residual(i, 0) = yaw[static_cast<std::size_t>(i)] - prior_mean[0][ci];
+    residual(i, 1) = path[static_cast<std::size_t>(i)] - prior_mean[1][ci];
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> solve(gram);
+  const Eigen::MatrixXd alpha = solve.solve(residual);
+  std::vector<learning::Prediction> yaw_pred, path_pred;
+  model.predict(yaw_pred, path_pred);
+  ASSERT_EQ(yaw_pred.size(), space.size());
+  for (std::size_t c = 0; c < space.size(); ++c) {
+    Eigen::VectorXd k(n);
+    for (Eigen::Index i = 0; i < n; ++i) k(i) = kernel(c, seen[static_cast<std::size_t>(i)]);
+    const double var = kernel(c, c) - k.dot(solve.solve(k));
+    EXPECT_NEAR(yaw_pred[c].mean, prior_mean[0][c] + k.dot(alpha.col(0)), 1e-9) << c;
+    EXPECT_NEAR(path_pred[c].mean, prior_mean[1][c] + k.dot(alpha.col(1)), 1e-9) << c;
+    EXPECT_NEAR(yaw_pred[c].sd, std::sqrt(var), 1e-9) << c;
+    EXPECT_EQ(path_pred[c].sd, yaw_pred[c].sd) << c;
+  }
 }
 
 TEST(Learners, AShareOfNoneOrAllLiesInsideItsInterval) {

@@ -36,6 +36,9 @@ struct Sizes {
   int periods_alone_max_episodes;
   // Seeds per scenario and learner of the learner benchmark.
   int benchmark_seeds;
+  // Table 1 side by side walks every named body model (paper-sim and real) and this run's own
+  // if it is neither; false: this run's body alone.
+  bool tunnel_every_body;
 };
 
 // What a stage gets: the options, the sizes and the report folder.

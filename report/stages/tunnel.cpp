@@ -76,7 +76,8 @@ struct Body {
 };
 
 // The named models paper-sim and real (with the run's time steps), and the run's own body when
-// it is neither.
+// it is neither; or (Sizes::tunnel_every_body false) the run's own body alone, under its model's
+// name when it is one.
 std::vector<Body> table_bodies(const StageContext& ctx) {
   std::vector<Body> out;
   bool own = false;
@@ -84,8 +85,10 @@ std::vector<Body> table_bodies(const StageContext& ctx) {
     sim::SimOptions s = ctx.options.sim;
     s.model = m;
     s.body = robot::body_params(m);
-    own = own || nlohmann::json(s) == nlohmann::json(ctx.options.sim);
-    out.push_back({std::string(robot::to_string(m)), s});
+    const bool this_run = nlohmann::json(s) == nlohmann::json(ctx.options.sim);
+    own = own || this_run;
+    if (ctx.sizes.tunnel_every_body || this_run)
+      out.push_back({std::string(robot::to_string(m)), s});
   }
   if (!own) out.push_back({"this run's body", ctx.options.sim});
   return out;
@@ -345,11 +348,17 @@ Section tunnel_stage(const StageContext& ctx) {
           " with all periods 4: the robot deviated right and hit the wall (≈" + paper_before +
           "); with the periods learned in the paper's simulator (periods " +
           "alone, no reflex) it passed (≈" + paper_after + ").",
-      "First table: Table 1 on the real robot beside our two bodies, paper-sim (the paper's "
-      "simulator) and real (calibrated against the real robot's before-learning column, "
-      "docs/fidelity.md), deviation = atan(lateral / forward) of the trunk from the entrance "
-      "to the end or to the wall it touched, + = left. \"Periods-alone learning\" learns "
-      "with --mode robust --steering off (--max-trials " +
+      std::string(ctx.sizes.tunnel_every_body
+                      ? "First table: Table 1 on the real robot beside our two bodies, paper-sim "
+                        "(the paper's simulator) and real (calibrated against the real robot's "
+                        "before-learning column, docs/fidelity.md)"
+                      : "First table: Table 1 on the real robot beside this run's body (a quick "
+                        "run walks it alone; the full run adds paper-sim, the paper's "
+                        "simulator, and real, calibrated against the real robot's "
+                        "before-learning column, docs/fidelity.md)") +
+          ", deviation = atan(lateral / forward) of the trunk from the entrance "
+          "to the end or to the wall it touched, + = left. \"Periods-alone learning\" learns "
+          "with --mode robust --steering off (--max-trials " +
           std::to_string(ctx.sizes.periods_alone_max_trials) + " per episode, at most " +
           counted(ctx.sizes.periods_alone_max_episodes, "episode") +
           ") in the open field from a walking robot and walks the learned periods through "
