@@ -35,8 +35,9 @@ void register_reproduce(CLI::App& app) {
       "reproduce", "run every experiment of the paper and write DIR/index.html (resumable)");
   cmd->add_option("--out", o->run.out, "folder for the report")->required();
   cmd->add_flag("--quick", o->run.quick,
-                "one learning run per scenario and per β, faster videos (measured: 98 s on 2 "
-                "idle cores; docs/benchmarks.md)");
+                "one learning run per scenario and per β, Table 1 side by side on this run's body "
+                "alone, shorter and faster videos (measured: 71 s on 2 idle cores; "
+                "docs/benchmarks.md)");
   cmd->add_option("--jobs", o->jobs, "parallel learning runs (default: every core)")
       ->check(in(experiments::kJobsLimits));
   cmd->add_option("--seed", o->run.seed, "base seed of every learning run")
