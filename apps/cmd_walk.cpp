@@ -21,6 +21,7 @@
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
+#include "sim/course_json.h"
 #include "sim/fault_spec.h"
 #include "sim/record_csv.h"
 #include "sim/walk.h"
@@ -55,11 +56,9 @@ nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
   const nlohmann::json periods = robot::period_map_json(morph, run.spec.start.periods);
   nlohmann::json faults = nlohmann::json::array();
   for (const sim::Fault& f : run.spec.faults) {
-    nlohmann::json fault{
-        {"step", f.step}, {"legs", robot::leg_set_name(morph, f.legs)}, {"recover", f.recover}};
-    if (!std::holds_alternative<sim::LegFault>(f.kind) || f.joint) {
-      fault["fault"] = sim::malfunction_text(morph, f);
-    }
+    // A fault's one shape (sim/course_json.h), its legs named as --disable names them.
+    nlohmann::json fault = f;
+    fault["legs"] = robot::leg_set_name(morph, f.legs);
     faults.push_back(fault);
   }
   nlohmann::json windows = nlohmann::json::array();

@@ -8,6 +8,7 @@
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "robot/leg_sets.h"
+#include "sim/course_json.h"
 #include "sim/fault_spec.h"
 
 namespace multicpg::experiments {
@@ -80,16 +81,11 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
   return fault;
 }
 
-// A timeline fault as the resolved document records it: leg names, and kind, joint and value
-// only for kinds other than a whole leg.
+// A timeline fault as the resolved document records it: a fault's one shape (sim/course_json.h)
+// with its legs named, as the document names them.
 json timeline_fault_json(const robot::Morphology& morph, const sim::Fault& fault) {
-  json j{{"step", fault.step},
-         {"legs", robot::leg_set_json(morph, fault.legs)},
-         {"recover", fault.recover}};
-  if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) return j;
-  j["kind"] = sim::kind_name(fault.kind);
-  if (fault.joint) j["joint"] = robot::to_string(*fault.joint);
-  if (const std::optional<double> v = sim::value_of(fault.kind)) j["value"] = *v;
+  json j = fault;
+  j["legs"] = robot::leg_set_json(morph, fault.legs);
   return j;
 }
 

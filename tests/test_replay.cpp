@@ -249,6 +249,26 @@ TEST(Replay, WalkShowsTheSimulatedPosesAndEventsInChromium) {
 
   // Compact: 301 steps of 26 bodies take well under a kilobyte a step.
   EXPECT_LT(fs::file_size(page), 2'000'000u);
+
+  // The walk's record (its faults in their one JSON shape) replays as the same recording.
+  const CliResult saved =
+      run_cli("walk --steps 300 --disable R1 --fault R2.CTr:locked@100 --recover R1@200 --json");
+  ASSERT_EQ(saved.exit_code, 0) << saved.err;
+  const json faults = json::parse(saved.out).at("faults");
+  ASSERT_EQ(faults.size(), 3u);
+  EXPECT_EQ(faults[1], json::parse(R"({"step": 100, "legs": "R2", "recover": false,
+                                       "kind": "locked", "joint": "CTr"})"));
+  write_text(dir / "walk.json", saved.out);
+  const fs::path again = dir / "again.html";
+  const CliResult re =
+      run_cli("replay " + (dir / "walk.json").string() + " --out " + again.string());
+  ASSERT_EQ(re.exit_code, 0) << re.err;
+  json a = page_data(page);
+  json b = page_data(again);
+  ASSERT_TRUE(a.is_object() && b.is_object());
+  a.erase("title");
+  b.erase("title");
+  EXPECT_TRUE(a == b) << "the replay of walk.json differs from the walk's own";
   fs::remove_all(dir);
 }
 

@@ -138,11 +138,16 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   spec.start.periods = robot::period_map_from_json(morph, saved.at("periods"));
   spec.start.warmup = saved.at("warmup").get<long>();
   for (const json& f : saved.at("faults")) {
-    std::string text =
-        f.contains("fault") ? f.at("fault").get<std::string>() : f.at("legs").get<std::string>();
-    text += '@';
-    text += std::to_string(f.at("step").get<long>());
-    spec.faults.push_back(sim::parse_fault(morph, text, f.at("recover").get<bool>()));
+    if (f.contains("fault")) {
+      // Walk records before the fault's one shape gave any other kind as its text.
+      spec.faults.push_back(sim::parse_fault(
+          morph, f.at("fault").get<std::string>() + '@' + std::to_string(f.at("step").get<long>()),
+          f.at("recover").get<bool>()));
+      continue;
+    }
+    json indexed = f;  // sim/course_json.h, its legs named as walk --json names them
+    indexed["legs"] = robot::parse_leg_set(morph, f.at("legs").get<std::string>());
+    spec.faults.push_back(indexed.get<sim::Fault>());
   }
   sim::sort_timeline(spec.faults);
   check(spec, name);
