@@ -63,11 +63,11 @@ constexpr int kQuickPeriodsAloneEpisodes = 1;
 // The quick learner benchmark: 3 seeds per scenario and learner (the full one: 100), seconds.
 constexpr int kQuickBenchmarkSeeds = 3;
 // Quick films: the learning film and the tunnel's at 16 and 32 controller steps per frame (the
-// full: 4 and 2), the walking films 4 s of real time (108 steps at 27 Hz; the full: 400 steps).
+// full: 4 and 2), the walking films 6 s of real time (160 steps at 27 Hz; the full: 400 steps).
 // A frame costs about 37 ms of software rendering (docs/benchmarks.md).
 constexpr int kQuickLearningFilmSpeed = 16;
 constexpr int kQuickTunnelFilmSpeed = 32;
-constexpr long kQuickWalkFilmSteps = 108;
+constexpr long kQuickWalkFilmSteps = 160;
 constexpr Sizes kQuick{1,
                        1,
                        1,

@@ -50,8 +50,8 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
         << stem;
     EXPECT_TRUE(fs::exists(root / "figures" / (std::string(stem) + ".csv"))) << stem;
   }
-  // The tripod video plays the quick run's 108 steps in real time: one frame per step.
-  EXPECT_EQ(video_frames(root / "videos/walk-tripod.mp4"), 108);
+  // The tripod video plays the quick run's 160 steps in real time: one frame per step.
+  EXPECT_EQ(video_frames(root / "videos/walk-tripod.mp4"), 160);
   EXPECT_TRUE(fs::exists(root / "results.md"));
   // Fig. 8's learning run and each Table 1 tunnel film have their 3D replay beside them
   // (tests/test_replay.cpp opens replays in Chromium).
