@@ -210,8 +210,8 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
   const double threshold = options.annealing.threshold_deg;
   const bool robust = r.mode == learning::Mode::robust;
   const bool reflex = robust && options.steering == learning::Steering::reflex;
-  out << "\n";
   if (robust) {
+    out << "\n";
     for (std::size_t i = 0; i < r.episodes.size(); ++i) {
       const learning::Episode& e = r.episodes[i];
       out << "episode " << i + 1 << ": detected " << degrees(e.detection_deg) << " at step "
