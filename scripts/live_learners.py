@@ -9,6 +9,9 @@ Each (scenario, learner, seed) learns in the open field and walks the tunnel:
 share for the same scenario and learner. Resumable: finished runs are kept in OUT/runs.
 
     /usr/bin/python3 scripts/live_learners.py --out live --jobs 2    # ≈32 min on 2 cores
+
+`--learners` and `--scenarios` choose a part (default: annealing and prior on every scenario);
+the tables list the scenario and learner pairs whose seeds have all finished.
 """
 
 import argparse
@@ -28,6 +31,7 @@ LEGS = ["R1", "R2", "R3", "L1", "L2", "L3"]
 SCENARIOS = ["R1", "R1+R3", "R1+R3+L2", "R2", "R1+L1", "R2+L2", "R3+L3", "R1+R3+L1", "R2+R3+L3",
              "R1.CTr:locked"]
 LEARNERS = ["annealing", "prior"]
+KNOWN_LEARNERS = ["annealing", "random", "greedy", "bayes", "prior"]
 SEEDS = range(1, 11)
 BUDGET = 20  # trials: the benchmark's budget (docs/learning.md "Learner benchmark")
 STEP_BUDGET = 50_000  # ends a robust run that keeps starting episodes
@@ -67,17 +71,29 @@ def main():
     parser.add_argument("--out", required=True, help="folder for the runs and the tables")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--multicpg", default=str(ROOT / "build" / "multicpg"))
+    parser.add_argument("--learners", default=",".join(LEARNERS),
+                        help="comma-separated, of " + ", ".join(KNOWN_LEARNERS))
+    parser.add_argument("--scenarios", default=",".join(SCENARIOS),
+                        help="comma-separated, of " + ", ".join(SCENARIOS))
     args = parser.parse_args()
+    learners = args.learners.split(",")
+    scenarios = args.scenarios.split(",")
+    for name, asked, known in (("learner", learners, KNOWN_LEARNERS),
+                               ("scenario", scenarios, SCENARIOS)):
+        for item in asked:
+            if item not in known:
+                parser.error(f"unknown {name} '{item}' (known: {', '.join(known)})")
     out = pathlib.Path(args.out)
     runs_dir = out / "runs"
     runs_dir.mkdir(parents=True, exist_ok=True)
     bench = out / "benchmark"
     if not (bench / "runs.csv").exists():
-        subprocess.run([args.multicpg, "learner-benchmark", "--learners", ",".join(LEARNERS),
-                        "--out", str(bench)], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([args.multicpg, "learner-benchmark", "--learners",
+                        ",".join(KNOWN_LEARNERS), "--out", str(bench)], check=True,
+                       stdout=subprocess.DEVNULL)
     with ThreadPoolExecutor(args.jobs) as pool:
         for f in [pool.submit(run, args.multicpg, runs_dir, s, l, k)
-                  for s in SCENARIOS for l in LEARNERS for k in SEEDS]:
+                  for s in scenarios for l in learners for k in SEEDS]:
             f.result()
 
     replay = defaultdict(lambda: [0, 0])
@@ -91,8 +107,12 @@ def main():
              "landscape | replay: held within 20 | robust run converged | tunnel passed | "
              "median trials (first episode) |", "|---|---|---|---|---|---|---|---|---|"]
     pooled = defaultdict(lambda: [0, 0, 0.0, 0, 0])
+    done = [(s, l) for s in SCENARIOS for l in KNOWN_LEARNERS
+            if all((runs_dir / f"{s}_{l}_{k}.json").exists() for k in SEEDS)]
     for s in SCENARIOS:
-        for l in LEARNERS:
+        for l in KNOWN_LEARNERS:
+            if (s, l) not in done:
+                continue
             first_held = truth = converged = passed = 0
             trials = []
             for k in SEEDS:
@@ -124,7 +144,9 @@ def main():
     lines += ["", "| learner | live: held within 20, holds in the landscape | replay predicted "
               "(same scenarios) | difference | tunnel passed | robust run converged |",
               "|---|---|---|---|---|---|"]
-    for l in LEARNERS:
+    for l in KNOWN_LEARNERS:
+        if l not in pooled:
+            continue
         p = pooled[l]
         lines.append(f"| {l} | {p[0]}/{p[1]} ({100 * p[0] / p[1]:.0f} %) | "
                      f"{100 * p[2] / p[1]:.0f} % | {100 * (p[0] - p[2]) / p[1]:+.0f} pp | "
