@@ -127,6 +127,19 @@ json page_data(const fs::path& page) {
   return json::parse(html.substr(from + open.size(), to - from - open.size()));
 }
 
+// `multicpg replay SAVED` makes the recording `page` holds, its title aside.
+void expect_same_replay(const fs::path& saved, const fs::path& page) {
+  const fs::path again = saved.parent_path() / (saved.stem().string() + "-again.html");
+  const CliResult re = run_cli("replay " + saved.string() + " --out " + again.string());
+  ASSERT_EQ(re.exit_code, 0) << re.err;
+  json a = page_data(page);
+  json b = page_data(again);
+  ASSERT_TRUE(a.is_object() && b.is_object());
+  a.erase("title");
+  b.erase("title");
+  EXPECT_TRUE(a == b) << "the replay of " << saved << " differs from the run's own";
+}
+
 // The trunk (x, y, z) of each row of a `walk --csv` record.
 std::vector<std::array<double, 3>> csv_trunk(const fs::path& csv) {
   std::istringstream in(slurp(csv));
@@ -259,16 +272,7 @@ TEST(Replay, WalkShowsTheSimulatedPosesAndEventsInChromium) {
   EXPECT_EQ(faults[1], json::parse(R"({"step": 100, "legs": "R2", "recover": false,
                                        "kind": "locked", "joint": "CTr"})"));
   write_text(dir / "walk.json", saved.out);
-  const fs::path again = dir / "again.html";
-  const CliResult re =
-      run_cli("replay " + (dir / "walk.json").string() + " --out " + again.string());
-  ASSERT_EQ(re.exit_code, 0) << re.err;
-  json a = page_data(page);
-  json b = page_data(again);
-  ASSERT_TRUE(a.is_object() && b.is_object());
-  a.erase("title");
-  b.erase("title");
-  EXPECT_TRUE(a == b) << "the replay of walk.json differs from the walk's own";
+  expect_same_replay(dir / "walk.json", page);
   fs::remove_all(dir);
 }
 
@@ -344,16 +348,7 @@ TEST(Replay, LearningTimelineHoldsEveryEventOfTheRun) {
   EXPECT_EQ(result.at("trials").size(), trace.size());
 
   // `multicpg replay` of the saved result makes the same recording.
-  const fs::path again = dir / "again.html";
-  const CliResult re =
-      run_cli("replay " + (dir / "learn.json").string() + " --out " + again.string());
-  ASSERT_EQ(re.exit_code, 0) << re.err;
-  json a = page_data(page);
-  json b = page_data(again);
-  ASSERT_TRUE(a.is_object() && b.is_object());
-  a.erase("title");
-  b.erase("title");
-  EXPECT_TRUE(a == b) << "the replay of learn.json differs from the run's own";
+  expect_same_replay(dir / "learn.json", page);
 
   // A result this simulation does not make again (other ground) is refused, one line.
   expect_bad_input("replay " + (dir / "learn.json").string() + " --terrain rough:0.02 --out " +
