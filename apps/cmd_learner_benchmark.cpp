@@ -29,10 +29,12 @@ struct BenchmarkOptions {
   std::vector<std::string> scenarios;
   int seeds = experiments::kDefaultBenchmarkSeeds;
   std::uint64_t seed = 1;
+  bool live_seeds = false;
   int budget = experiments::kDefaultBenchmarkBudget;
   int max_trials = learning::kDefaultMaxTrials;
   std::string mode = "robust";
   int hold_windows = learning::kDefaultHoldWindows;
+  std::string window_order = "drawn";
   std::optional<int> jobs;
   std::string out;
 };
@@ -46,11 +48,13 @@ void run(const BenchmarkOptions& o) {
   const robot::Morphology& morph = robot::morphology(probe.robot);
   spec.seeds = o.seeds;
   spec.seed = o.seed;
+  spec.live_seeds = o.live_seeds;
   spec.budget = o.budget;
   spec.search.max_trials = o.max_trials;
   const learning::Mode mode = learning::parse_mode(o.mode);
   spec.protocol.yaw_only = mode == learning::Mode::paper;
   spec.protocol.hold_windows = o.hold_windows;
+  spec.protocol.window_order = learning::parse_window_order(o.window_order);
   if (o.hold_windows > probe.windows) {
     throw BadInput("--hold-windows: the dataset measured " + std::to_string(probe.windows) +
                    " windows per combination, got " + std::to_string(o.hold_windows));
@@ -141,6 +145,9 @@ void register_learner_benchmark(CLI::App& app) {
   cmd->add_option("--seed", o->seed, "base seed of the runs")
       ->check(seed_value())
       ->capture_default_str();
+  cmd->add_flag("--live-seeds", o->live_seeds,
+                "seed run k's learner with --seed + k, as `learn --seed` seeds a live run's (with "
+                "--window-order walked a replay then retraces that run)");
   cmd->add_option("--budget", o->budget, "trials within which a run counts as held")
       ->check(in(experiments::kBenchmarkBudgetLimits))
       ->capture_default_str();
@@ -153,6 +160,11 @@ void register_learner_benchmark(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--hold-windows", o->hold_windows, "robust mode: windows a trial must hold")
       ->check(in(learning::kHoldWindowsLimits))
+      ->capture_default_str();
+  cmd->add_option("--window-order", o->window_order,
+                  "which measured windows a trial walks: drawn (a permutation drawn by the seed, "
+                  "trial noise) or walked (in the order the landscape walked them, as the "
+                  "simulation does)")
       ->capture_default_str();
   cmd->add_option("--jobs", o->jobs, "threads (default: every core)")
       ->check(in(experiments::kJobsLimits));

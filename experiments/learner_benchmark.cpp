@@ -113,7 +113,10 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
         std::vector<learning::ReplayRun> runs;
         for (int k = 0; k < spec.seeds; ++k) {
           const std::uint64_t seed = derive_seed(spec.seed, name + "#" + std::to_string(k));
-          runs.push_back(learning::replay_run(b.dataset, s, l, spec.search, spec.protocol, seed));
+          std::optional<std::uint64_t> learner_seed;
+          if (spec.live_seeds) learner_seed = spec.seed + static_cast<std::uint64_t>(k);
+          runs.push_back(learning::replay_run(b.dataset, s, l, spec.search, spec.protocol, seed,
+                                              learner_seed));
         }
         b.cells[i] = score(s, name, l.name, std::move(runs), spec.budget);
       } catch (...) {
@@ -252,11 +255,13 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
           {"robot", robot::to_string(b.dataset.robot)},
           {"seeds", s.seeds},
           {"seed", s.seed},
+          {"live_seeds", s.live_seeds},
           {"budget", s.budget},
           {"max_trials", s.search.max_trials},
           {"threshold_deg", s.search.threshold_deg},
           {"yaw_only", s.protocol.yaw_only},
           {"hold_windows", s.protocol.hold_windows},
+          {"window_order", learning::to_string(s.protocol.window_order)},
           {"scenarios", b.cells.size() / std::max<std::size_t>(1, s.learners.size())},
           {"learners", learners}};
 }

@@ -31,6 +31,9 @@ struct LearnerBenchmarkSpec {
   std::vector<learning::LearnerChoice> learners;  // resolved
   int seeds = kDefaultBenchmarkSeeds;
   std::uint64_t seed = 1;  // run k of a scenario has seed derive_seed(seed, "<scenario>#k")
+  // Run k's learner is seeded with seed + k, as `learn --seed <seed + k>` seeds a live run's,
+  // instead of from its run seed (learning::replay_run's learner_seed).
+  bool live_seeds = false;
   int budget = kDefaultBenchmarkBudget;
   learning::AnnealingParams search;  // the dataset's period set and threshold; the trial cap
   learning::TrialProtocol protocol;

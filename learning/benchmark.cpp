@@ -41,9 +41,20 @@ std::vector<std::size_t> drawn_windows(std::uint64_t seed, std::size_t combinati
 
 }  // namespace
 
+std::string_view to_string(WindowOrder order) {
+  return order == WindowOrder::walked ? "walked" : "drawn";
+}
+
+WindowOrder parse_window_order(std::string_view text) {
+  if (text == "drawn") return WindowOrder::drawn;
+  if (text == "walked") return WindowOrder::walked;
+  throw BadInput("unknown window order '" + std::string(text) + "' (drawn or walked)");
+}
+
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
                      const LearnerChoice& choice, const AnnealingParams& search,
-                     const TrialProtocol& protocol, std::uint64_t seed) {
+                     const TrialProtocol& protocol, std::uint64_t seed,
+                     std::optional<std::uint64_t> learner_seed) {
   if (search.period_set != dataset.period_set) {
     throw BadInput("the search's period set is not the landscape's");
   }
@@ -60,12 +71,20 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   if (!c0) throw BadInput("the landscape lacks the start combination (every leg at 4)");
 
   std::map<std::size_t, int> visits;
+  const auto windows_of = [&](std::size_t point) {
+    const auto n = static_cast<std::size_t>(dataset.windows);
+    if (protocol.window_order == WindowOrder::drawn) {
+      return drawn_windows(seed, point, visits[point]++, n);
+    }
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    return order;
+  };
   const auto window_error = [&](std::size_t point, std::size_t window) {
     return scenario.points[point].window_error(window, protocol.yaw_only);
   };
   const auto measure = [&](std::size_t point) {
-    const std::vector<std::size_t> order =
-        drawn_windows(seed, point, visits[point]++, static_cast<std::size_t>(dataset.windows));
+    const std::vector<std::size_t> order = windows_of(point);
     Measurement m;
     const int windows = protocol.yaw_only ? 1 : protocol.hold_windows;
     for (int w = 0; w < windows; ++w) {
@@ -89,8 +108,7 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
     return run;
   };
   // Detection: one window (paper §3 step 2; robust mode judges its windows one at a time).
-  const std::size_t first =
-      drawn_windows(seed, *c0, visits[*c0]++, static_cast<std::size_t>(dataset.windows)).front();
+  const std::size_t first = windows_of(*c0).front();
   const double e0 = window_error(*c0, first);
   if (sim::holds(e0, search.threshold_deg)) return finish({start, e0});
   run.deviated = true;
@@ -104,7 +122,7 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
       {scenario.points[*c0].yaw_deg[first], scenario.points[*c0].path_deg[first]}};
   setup.yaw_only = protocol.yaw_only;
   setup.search = search;
-  setup.seed = mix(seed ^ kLearnerStream);
+  setup.seed = learner_seed.value_or(mix(seed ^ kLearnerStream));
   const std::unique_ptr<Learner> learner = make_learner(choice, setup);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {

@@ -1,14 +1,16 @@
 // Learners scored against the truth (docs/learning.md "Learner benchmark"): a learner learns on
 // a scenario's landscape (learning/landscapes.h) instead of a walking robot. A trial is a lookup:
-// each window it walks is one of the combination's measured windows, drawn by the run's seed,
-// so trial noise is the landscape's own; whether its final combination holds is read from every
-// window the landscape measured.
+// each window it walks is one of the combination's measured windows, drawn by the run's seed
+// (trial noise is the landscape's own) or taken in the order they were walked (what the
+// deterministic simulation measures, docs/learning.md "Live physics"); whether its final
+// combination holds is read from every window the landscape measured.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "learning/landscapes.h"
@@ -16,17 +18,28 @@
 
 namespace multicpg::learning {
 
+// Which of a combination's measured windows a trial walks. drawn: a permutation drawn anew for
+// each measurement, so a combination near the threshold may pass one trial and fail the next, as
+// a real robot's noisy trials would. walked: the landscape's windows in the order it walked them,
+// the same at every visit, which is what the simulation measures: a live trial after a settle
+// walks the landscape's windows to within their 0.001° rounding, whatever the robot did before
+// (docs/learning.md "Live physics").
+enum class WindowOrder { drawn, walked };
+std::string_view to_string(WindowOrder order);
+WindowOrder parse_window_order(std::string_view text);  // throws BadInput naming the choices
+
 // How a trial is measured, as the online loop does (learning/compensation.h) with the steering
 // reflex off: the paper's one window of |yaw change|, or robust mode's worst error of up to
 // hold_windows windows, stopping at the first over the threshold.
 struct TrialProtocol {
   bool yaw_only = false;  // paper mode
   int hold_windows = 3;   // robust mode (kDefaultHoldWindows)
+  WindowOrder window_order = WindowOrder::drawn;
 };
 
 // One learning run replayed on one scenario.
 struct ReplayRun {
-  bool deviated = false;  // the start (all 4) deviated in its drawn window, so learning ran
+  bool deviated = false;  // the start (all 4) deviated in the window it walked, so learning ran
   int trials = 0;
   StopReason reason = StopReason::running;
   Periods answer;                 // the combination the learner ended with
@@ -40,16 +53,19 @@ struct ReplayRun {
   std::vector<TrialRecord> trace;
 };
 
-// Replays `choice` on `scenario` of `dataset` with run seed `seed`: the start's E is one drawn
-// window of the all-4 combination; if it is under the threshold the run ends there (no
-// deviation). The learner's seed and every window draw derive from `seed`; the window drawn for
-// a combination at its k-th measurement depends only on (seed, combination, k), so every learner
-// sees the same noise for the same combination (common random numbers). `search` bounds the
-// search (period set and threshold must be the dataset's). Throws BadInput when the choice or
-// the bounds do not fit the dataset.
+// Replays `choice` on `scenario` of `dataset` with run seed `seed`: the start's E is one window
+// of the all-4 combination (drawn, or its first with WindowOrder::walked); if it is under the
+// threshold the run ends there (no deviation). The learner's seed and every window draw derive from
+// `seed`; the window drawn for a combination at its k-th measurement depends only on (seed,
+// combination, k), so every learner sees the same noise for the same combination (common random
+// numbers). `search` bounds the search (period set and threshold must be the dataset's). Throws
+// BadInput when the choice or the bounds do not fit the dataset.
+// `learner_seed`, when given, seeds the learner instead (as `learn --seed` seeds a live run's
+// first episode), so a walked replay can retrace a live run trial by trial.
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
                      const LearnerChoice& choice, const AnnealingParams& search,
-                     const TrialProtocol& protocol, std::uint64_t seed);
+                     const TrialProtocol& protocol, std::uint64_t seed,
+                     std::optional<std::uint64_t> learner_seed = std::nullopt);
 
 // The two exact baselines of a scenario: random search without replacement needs (N+1)/(K+1)
 // trials on average to draw the first of K holding combinations among N (the start excluded);

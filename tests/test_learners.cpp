@@ -362,6 +362,61 @@ TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
   }
 }
 
+// With windows walked in order a trial measures the landscape's first windows, the same at every
+// visit, as the simulation does; drawn windows differ between visits and from that order.
+TEST_F(Dataset, AWalkedReplayMeasuresTheLandscapesWindowsInTheirOrder) {
+  const ScenarioLandscape& s = *data_.find({kL2});
+  TrialProtocol walked;
+  walked.window_order = learning::WindowOrder::walked;
+  const auto in_order = [&](const learning::Periods& periods) {
+    const LandscapePoint& p = s.points[*s.find(periods)];
+    double e = 0.0;
+    for (int w = 0; w < walked.hold_windows; ++w) {
+      e = std::max(e, p.window_error(static_cast<std::size_t>(w), false));
+      if (!sim::holds(e, learning::kDefaultThresholdDeg)) break;
+    }
+    return e;
+  };
+  int drawn_differs = 0;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const learning::LearnerChoice random = learning::resolve_learner(choice("random"));
+    const ReplayRun run = learning::replay_run(data_, s, random, search(60), walked, seed);
+    ASSERT_FALSE(run.trace.empty()) << seed;
+    for (const learning::TrialRecord& t : run.trace) {
+      EXPECT_EQ(t.deviation_deg, in_order(t.periods)) << "seed " << seed << " trial " << t.trial;
+    }
+    const ReplayRun drawn =
+        learning::replay_run(data_, s, random, search(60), TrialProtocol{}, seed);
+    for (const learning::TrialRecord& t : drawn.trace) {
+      drawn_differs += t.deviation_deg != in_order(t.periods) ? 1 : 0;
+    }
+  }
+  EXPECT_GT(drawn_differs, 0) << "drawn windows must not be the walked order";
+  EXPECT_EQ(learning::parse_window_order("walked"), learning::WindowOrder::walked);
+  EXPECT_EQ(learning::to_string(learning::WindowOrder::drawn), "drawn");
+}
+
+// With windows walked in order the run seed draws nothing, so a learner seed given as a live run
+// gives it (learn --seed) decides the replay alone, as it decides that live run.
+TEST_F(Dataset, AWalkedReplayWithALearnerSeedIsThatSeedsRun) {
+  const ScenarioLandscape& s = *data_.find({kL2});
+  TrialProtocol walked;
+  walked.window_order = learning::WindowOrder::walked;
+  const learning::LearnerChoice random = learning::resolve_learner(choice("random"));
+  const auto periods = [&](std::uint64_t run_seed, std::uint64_t learner_seed) {
+    std::vector<Periods> out;
+    for (const learning::TrialRecord& t :
+         learning::replay_run(data_, s, random, search(60), walked, run_seed, learner_seed).trace) {
+      out.push_back(t.periods);
+    }
+    return out;
+  };
+  const std::vector<Periods> seven = periods(1, 7);
+  ASSERT_GT(seven.size(), 1u);
+  EXPECT_EQ(periods(2, 7), seven);
+  EXPECT_NE(periods(1, 8), seven);
+}
+
 TEST(Learners, AShareOfNoneOrAllLiesInsideItsInterval) {
   // Every run held (or none): the interval's bound is the share itself, not a rounding below it.
   for (int n = 1; n <= 5000; ++n) {
@@ -397,12 +452,15 @@ TEST_F(Dataset, TheBenchmarkCommandScoresLearnersTheSameOnAnyThreadCount) {
   EXPECT_GT(fs::file_size(dir_ + "/one/benchmark-figure.svg"), 1000u);
   const auto summary = nlohmann::json::parse(read_file(dir_ + "/one/summary.json"));
   EXPECT_EQ(summary.at("seeds"), 12);
+  EXPECT_EQ(summary.at("window_order"), "drawn");
+  EXPECT_EQ(summary.at("live_seeds"), false);
 
   for (const auto& [args, mention] : std::vector<std::pair<std::string, std::string>>{
            {"--learners simplex", "unknown learner 'simplex'"},
            {"--learners random --scenarios R1+R2+L1+L2", "R1+R2+L1+L2"},
            {"--learners random --seeds 0", "--seeds"},
            {"--learners random --budget -1", "--budget"},
+           {"--learners random --window-order sorted", "window order 'sorted'"},
        }) {
     const CliResult bad =
         run_cli("learner-benchmark --dataset " + stem() + " " + args + " --out " + dir_ + "/bad");
