@@ -22,7 +22,7 @@ namespace multicpg::learning {
 // each measurement, so a combination near the threshold may pass one trial and fail the next, as
 // a real robot's noisy trials would. walked: the landscape's windows in the order it walked them,
 // the same at every visit, which is what the simulation measures: a live trial after a settle
-// walks the landscape's windows to within their 0.001° rounding, whatever the robot did before
+// walks the landscape's windows to about 1e-12 deg, whatever the robot did before
 // (docs/learning.md "Live physics").
 enum class WindowOrder { drawn, walked };
 std::string_view to_string(WindowOrder order);

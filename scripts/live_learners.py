@@ -10,7 +10,9 @@ shares for the same scenario and learner, with the windows a trial walks taken i
 order (`--window-order walked`: what the simulation measures) and drawn by the seed (the default:
 trial noise). Resumable: finished runs are kept in OUT/runs.
 
-    /usr/bin/python3 scripts/live_learners.py --out live --jobs 2    # ≈32 min on 2 cores
+    /usr/bin/python3 scripts/live_learners.py --out live --learners annealing,random,greedy,bayes,prior
+
+runs 500 learning runs in about 29 min on 2 cores.
 
 `--learners` and `--scenarios` choose a part (default: annealing and prior on every scenario);
 `--seeds N` runs seeds 1..N (default 10); the tables list each scenario and learner pair with
