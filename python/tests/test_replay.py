@@ -108,16 +108,28 @@ def test_jupyter_shows_the_page_inline_in_an_iframe(tmp_path):
     # The notebook's cell as a page: Chromium draws the robot inside it, R1 failed in red.
     cell = tmp_path / "cell.html"
     cell.write_text("<!doctype html><html><body style='margin:0'>" + frame + "</body></html>")
-    shot = tmp_path / "cell.png"
-    with tempfile.TemporaryDirectory() as profile:
-        subprocess.run(["chromium", "--headless", "--no-sandbox", "--disable-gpu",
-                        "--enable-unsafe-swiftshader", "--disable-quic", "--no-first-run",
-                        "--disable-background-networking", "--disable-component-update",
-                        "--disable-sync", f"--user-data-dir={profile}", "--window-size=1000,900",
-                        "--virtual-time-budget=3000", f"--screenshot={shot}",
-                        cell.as_uri()], capture_output=True, check=False, timeout=120)
     import matplotlib.image
-    pixels = (matplotlib.image.imread(shot)[..., :3] * 255).astype(int)
-    red = (pixels[..., 0] > 90) & (pixels[..., 1] < pixels[..., 0] // 3) & \
-        (pixels[..., 2] < pixels[..., 0] // 3)
-    assert red.sum() > 30, "the failed leg R1 is not drawn in the notebook's cell"
+
+    def red_pixels(shot):
+        with tempfile.TemporaryDirectory() as profile:
+            subprocess.run(["chromium", "--headless", "--no-sandbox", "--disable-gpu",
+                            "--enable-unsafe-swiftshader", "--disable-quic", "--no-first-run",
+                            "--disable-background-networking", "--disable-component-update",
+                            "--disable-sync", f"--user-data-dir={profile}",
+                            "--window-size=1000,900", "--virtual-time-budget=3000",
+                            f"--screenshot={shot}", cell.as_uri()],
+                           capture_output=True, check=False, timeout=120)
+        pixels = (matplotlib.image.imread(shot)[..., :3] * 255).astype(int)
+        return int(((pixels[..., 0] > 90) & (pixels[..., 1] < pixels[..., 0] // 3) &
+                    (pixels[..., 2] < pixels[..., 0] // 3)).sum())
+
+    # Headless Chromium now and then captures the cell before its software WebGL has presented
+    # the first frame: the page's controls drawn, the 3D view still its empty sky (measured: one
+    # screenshot of about 20 on 2 busy cores). The page is the same each time, so a blank view
+    # is shot again, at most three times in all.
+    counts = []
+    for attempt in range(3):
+        counts.append(red_pixels(tmp_path / f"cell{attempt}.png"))
+        if counts[-1] > 30:
+            break
+    assert counts[-1] > 30, f"the failed leg R1 is not drawn in the notebook's cell ({counts})"
