@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "common/enum_names.h"
 #include "common/errors.h"
 #include "sim/deviation.h"
 
@@ -20,6 +21,9 @@ std::uint64_t mix(std::uint64_t x) {
   x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
 }
+
+constexpr auto kWindowOrderNames =
+    enum_names<WindowOrder>({{WindowOrder::drawn, "drawn"}, {WindowOrder::walked, "walked"}});
 
 // Keys of the two streams a run draws from.
 constexpr std::uint64_t kLearnerStream = 1;
@@ -42,13 +46,13 @@ std::vector<std::size_t> drawn_windows(std::uint64_t seed, std::size_t combinati
 }  // namespace
 
 std::string_view to_string(WindowOrder order) {
-  return order == WindowOrder::walked ? "walked" : "drawn";
+  return kWindowOrderNames.name(order);
 }
 
 WindowOrder parse_window_order(std::string_view text) {
-  if (text == "drawn") return WindowOrder::drawn;
-  if (text == "walked") return WindowOrder::walked;
-  throw BadInput("unknown window order '" + std::string(text) + "' (drawn or walked)");
+  if (const std::optional<WindowOrder> order = kWindowOrderNames.find(text)) return *order;
+  throw BadInput("unknown window order '" + std::string(text) + "' (" +
+                 kWindowOrderNames.list(" or ") + ")");
 }
 
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
@@ -71,14 +75,12 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   if (!c0) throw BadInput("the landscape lacks the start combination (every leg at 4)");
 
   std::map<std::size_t, int> visits;
+  std::vector<std::size_t> walked(static_cast<std::size_t>(dataset.windows));
+  std::iota(walked.begin(), walked.end(), 0);
   const auto windows_of = [&](std::size_t point) {
-    const auto n = static_cast<std::size_t>(dataset.windows);
-    if (protocol.window_order == WindowOrder::drawn) {
-      return drawn_windows(seed, point, visits[point]++, n);
-    }
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    return order;
+    return protocol.window_order == WindowOrder::walked
+               ? walked
+               : drawn_windows(seed, point, visits[point]++, walked.size());
   };
   const auto window_error = [&](std::size_t point, std::size_t window) {
     return scenario.points[point].window_error(window, protocol.yaw_only);
