@@ -32,6 +32,7 @@ struct LandscapeOptions {
   int windows = experiments::kDefaultLandscapeWindows;
   double threshold = learning::kDefaultThresholdDeg;
   std::vector<int> period_set = learning::AnnealingParams{}.period_set;
+  learning::Steering steering = learning::Steering::off;
   std::string learned;
   sim::SimOptions sim;
   BodyFlags body;
@@ -68,6 +69,7 @@ void run(const LandscapeOptions& o) {
   spec.period_set = o.period_set;
   spec.windows = o.windows;
   spec.threshold_deg = o.threshold;
+  spec.steering = o.steering;
   spec.robot.sim = sim_options(o.sim, o.body, spec.robot.kind);
   if (!o.every_loss) experiments::validate(spec);
   if (o.jobs && *o.jobs < 1) {
@@ -167,6 +169,13 @@ void register_landscape(CLI::App& app) {
   cmd->add_option("--periods-set", o->period_set, "periods each working leg takes")
       ->delimiter(',')
       ->capture_default_str();
+  cmd->add_option_function<std::string>(
+         "--steering",
+         [o](const std::string& text) { o->steering = learning::parse_steering(text); },
+         "off: periods alone, every window walked; reflex: as the default robust run walks, each "
+         "combination a first trial with the steering reflex, until its first window over the "
+         "threshold (docs/learning.md \"The landscape dataset\")")
+      ->default_str(std::string(learning::to_string(o->steering)));
   cmd->add_option("--learned", o->learned,
                   "JSON array of learned combinations ({leg: period} objects) to mark");
   add_sim_flags(*cmd, o->sim, o->body);

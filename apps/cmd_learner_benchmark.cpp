@@ -23,7 +23,7 @@ namespace multicpg::apps {
 namespace {
 
 struct BenchmarkOptions {
-  std::string dataset;  // empty: the repository's hexapod dataset
+  std::string dataset;  // empty: the repository's hexapod dataset walked as --steering says
   std::vector<std::string> learners = experiments::kBenchmarkLearners;
   std::vector<std::string> learner_options;  // LEARNER.KEY=VALUE
   std::vector<std::string> scenarios;
@@ -33,16 +33,30 @@ struct BenchmarkOptions {
   int budget = experiments::kDefaultBenchmarkBudget;
   int max_trials = learning::kDefaultMaxTrials;
   std::string mode = "robust";
+  std::optional<learning::Steering> steering;  // empty: reflex in robust mode, off in paper mode
   int hold_windows = learning::kDefaultHoldWindows;
-  std::string window_order = "drawn";
+  std::string window_order;  // empty: the dataset's (drawn, or walked for a reflex dataset)
   std::optional<int> jobs;
   std::string out;
 };
 
 void run(const BenchmarkOptions& o) {
-  const std::filesystem::path path = o.dataset.empty()
-                                         ? learning::repository_dataset(robot::RobotKind::hexapod)
-                                         : std::filesystem::path(o.dataset);
+  const learning::Mode mode = learning::parse_mode(o.mode);
+  if (mode == learning::Mode::paper && o.steering == learning::Steering::reflex) {
+    throw BadInput("--steering reflex: paper mode walks without the reflex");
+  }
+  if (!o.dataset.empty() && o.steering) {
+    throw BadInput(
+        "--steering picks the repository's dataset; --dataset names one (leave out "
+        "one of them)");
+  }
+  const bool reflex =
+      o.steering.value_or(mode == learning::Mode::paper
+                              ? learning::Steering::off
+                              : learning::Steering::reflex) == learning::Steering::reflex;
+  const std::filesystem::path path =
+      o.dataset.empty() ? learning::repository_dataset(robot::RobotKind::hexapod, reflex)
+                        : std::filesystem::path(o.dataset);
   const learning::LandscapeDataset probe = learning::read_landscape_dataset(path);
   experiments::LearnerBenchmarkSpec spec = experiments::benchmark_spec(path, probe);
   const robot::Morphology& morph = robot::morphology(probe.robot);
@@ -51,10 +65,12 @@ void run(const BenchmarkOptions& o) {
   spec.live_seeds = o.live_seeds;
   spec.budget = o.budget;
   spec.search.max_trials = o.max_trials;
-  const learning::Mode mode = learning::parse_mode(o.mode);
   spec.protocol.yaw_only = mode == learning::Mode::paper;
   spec.protocol.hold_windows = o.hold_windows;
-  spec.protocol.window_order = learning::parse_window_order(o.window_order);
+  spec.protocol.window_order =
+      o.window_order.empty()
+          ? (probe.reflex ? learning::WindowOrder::walked : learning::WindowOrder::drawn)
+          : learning::parse_window_order(o.window_order);
   if (o.hold_windows > probe.windows) {
     throw BadInput("--hold-windows: the dataset measured " + std::to_string(probe.windows) +
                    " windows per combination, got " + std::to_string(o.hold_windows));
@@ -158,14 +174,19 @@ void register_learner_benchmark(CLI::App& app) {
                   "how a trial is measured: robust (worst of yaw and path over up to "
                   "--hold-windows windows) or paper (one window's yaw)")
       ->capture_default_str();
+  cmd->add_option_function<std::string>(
+      "--steering", [o](const std::string& text) { o->steering = learning::parse_steering(text); },
+      "which of the repository's hexapod datasets: reflex (walked as the default robust run "
+      "walks, the default in robust mode) or off (periods alone; paper mode's)");
   cmd->add_option("--hold-windows", o->hold_windows, "robust mode: windows a trial must hold")
       ->check(in(learning::kHoldWindowsLimits))
       ->capture_default_str();
   cmd->add_option("--window-order", o->window_order,
                   "which measured windows a trial walks: drawn (a permutation drawn by the seed, "
                   "trial noise) or walked (in the order the landscape walked them, as the "
-                  "simulation does)")
-      ->capture_default_str();
+                  "simulation does); default: drawn, walked for a dataset walked with the "
+                  "reflex (it holds each combination's windows only up to the first over the "
+                  "threshold)");
   cmd->add_option("--jobs", o->jobs, "threads (default: every core)")
       ->check(in(experiments::kJobsLimits));
   cmd->add_option(

@@ -1,16 +1,12 @@
 #include "experiments/experiment_file.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
 #include <toml++/toml.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <map>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "experiments/experiment_limits.h"
 #include "sim/robot_file.h"
 
@@ -272,14 +268,6 @@ class NestingScan {
   long line_ = 1;
 };
 
-std::string file_kind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "no regular file";
-}
-
 std::string too_large(const std::string& name, const std::string& size) {
   return name + ": is " + size + ", more than the " + std::string(kMaxExperimentFileText) +
          " an experiment file may have";
@@ -292,35 +280,8 @@ std::optional<long> line_nested_deeper(std::string_view text, int limit) {
 }
 
 std::string read_experiment_file(const std::filesystem::path& file) {
-  const std::string name = file.string();
-  // O_NONBLOCK: opening a FIFO never waits for a writer; the kind is checked on the open file,
-  // so nothing can be swapped in between.
-  const int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-  if (fd < 0) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
-  struct Closer {
-    int fd;
-    ~Closer() { ::close(fd); }
-  } closer{fd};
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
-  if (S_ISDIR(st.st_mode)) throw BadInput(name + ": is a directory, not a file");
-  if (!S_ISREG(st.st_mode)) throw BadInput(name + ": is " + file_kind(st.st_mode) + ", not a file");
-  if (static_cast<std::uintmax_t>(st.st_size) > kMaxExperimentFileBytes) {
-    throw BadInput(too_large(name, std::to_string(st.st_size) + " bytes"));
-  }
-  // Read to the end, but never past the limit (a file may grow, /proc files say size 0).
-  std::string text(kMaxExperimentFileBytes + 1, '\0');
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::read(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw BadInput(name + ": cannot read (" + std::strerror(errno) + ")");
-    if (n == 0) break;
-    done += static_cast<std::size_t>(n);
-  }
-  if (done > kMaxExperimentFileBytes) throw BadInput(too_large(name, "larger"));
-  text.resize(done);
-  return text;
+  return read_input_file(file, kMaxExperimentFileBytes, kMaxExperimentFileText,
+                         "an experiment file");
 }
 
 Sweep parse_experiment_text(std::string_view text, const std::string& name, std::optional<int> runs,

@@ -8,10 +8,12 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "experiments/learning_run.h"
 #include "experiments/processes.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "learning/compensation.h"
+#include "learning/json.h"
 #include "robot/leg_sets.h"
 #include "sim/json.h"
 #include "sim/stepper.h"
@@ -59,8 +61,24 @@ nlohmann::json arguments(const LandscapeSpec& spec) {
                       {"threshold_deg", spec.threshold_deg},
                       {"controller_warmup", sim::kControllerWarmup},
                       {"sim", spec.robot.sim}};
+  // Only a reflex landscape names its walk, so landscapes walked before there was one resume.
+  if (spec.steering == learning::Steering::reflex) {
+    const learning::CompensationOptions o = landscape_options(spec);
+    args["steering"] = learning::to_string(o.steering);
+    args["steering_params"] = o.steering_params;
+    args["monitor_windows"] = o.monitor_windows;
+  }
   record_robot_file(args, spec.robot);
   return args;
+}
+
+nlohmann::json window_json(const sim::WindowMeasure& w, learning::Steering steering) {
+  nlohmann::json j{{"yaw_deg", w.yaw_deg},
+                   {"path_deg", w.path_deg},
+                   {"forward_m", w.forward_m},
+                   {"lateral_m", w.lateral_m}};
+  if (steering == learning::Steering::reflex) j["steering_effort"] = w.steering_effort;
+  return j;
 }
 
 double share(std::size_t part, std::size_t whole) {
@@ -128,6 +146,54 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
   return m;
 }
 
+learning::CompensationOptions landscape_options(const LandscapeSpec& spec) {
+  learning::CompensationOptions o;
+  o.mode = learning::Mode::robust;
+  o.steering = spec.steering;
+  o.annealing.period_set = spec.period_set;
+  o.annealing.threshold_deg = spec.threshold_deg;
+  o.window_steps = spec.window_steps;
+  o.hold_windows = spec.windows;
+  return o;
+}
+
+LandscapeStart walk_landscape_start(const sim::SimModel& model, const LandscapeSpec& spec) {
+  if (spec.steering != learning::Steering::reflex) {
+    throw std::logic_error("walk_landscape_start: a landscape of periods alone has no start walk");
+  }
+  const learning::CompensationOptions options = landscape_options(spec);
+  sim::FaultTimeline faults;
+  if (!spec.disabled.empty()) faults.push_back({0, spec.disabled, false});
+  sim::Stepper stepper(model, learning_start(options.mode), std::move(faults));
+  SimWalker walker(stepper);
+  learning::CourseWalk walk(walker, options);
+  LandscapeStart start;
+  start.windows = learning::watch_until_deviation(walk, options);
+  start.body = stepper.checkpoint();
+  start.walk = walk.state();
+  return start;
+}
+
+CombinationMeasure measure_from_start(const sim::SimModel& model, const LandscapeSpec& spec,
+                                      const LandscapeStart& start,
+                                      const learning::Periods& periods) {
+  const learning::CompensationOptions options = landscape_options(spec);
+  sim::Stepper stepper = sim::Stepper::resume(model, start.body);
+  SimWalker walker(stepper);
+  learning::CourseWalk walk(walker, options, start.walk);
+  neural::set_synchronised(stepper.state().controller, false);  // paper §2.3, as a detection
+  CombinationMeasure m;
+  m.periods = periods;
+  m.settle_steps = learning::locked_settle_steps(model.controller, periods);
+  const learning::Measurement trial = learning::robust_trial(walk, options, periods, spec.windows);
+  m.windows = trial.windows;
+  m.worst_deg = trial.deviation_deg;
+  m.holds = static_cast<int>(m.windows.size()) == spec.windows &&
+            sim::holds(m.worst_deg, spec.threshold_deg);
+  m.first_window_passes = sim::holds(std::abs(m.windows.front().yaw_deg), spec.threshold_deg);
+  return m;
+}
+
 std::vector<learning::Periods> landscape_combinations(const LandscapeSpec& spec) {
   const robot::Morphology& morph = morphology(spec.robot);
   const std::vector<std::size_t> working = working_legs(morph, spec.disabled);
@@ -157,14 +223,10 @@ std::string combination_key(const robot::Morphology& morph,
   return out;
 }
 
-nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph) {
+nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph,
+                       learning::Steering steering) {
   nlohmann::json windows = nlohmann::json::array();
-  for (const sim::WindowMeasure& w : m.windows) {
-    windows.push_back({{"yaw_deg", w.yaw_deg},
-                       {"path_deg", w.path_deg},
-                       {"forward_m", w.forward_m},
-                       {"lateral_m", w.lateral_m}});
-  }
+  for (const sim::WindowMeasure& w : m.windows) windows.push_back(window_json(w, steering));
   return {{"periods", robot::period_map_json(morph, m.periods)},
           {"settle_steps", m.settle_steps},
           {"windows", windows},
@@ -178,7 +240,8 @@ CombinationMeasure combination_from_json(const nlohmann::json& j, const robot::M
   m.periods = robot::period_map_from_json(morph, j.at("periods"));
   m.settle_steps = j.at("settle_steps");
   for (const nlohmann::json& w : j.at("windows")) {
-    m.windows.push_back({w.at("yaw_deg"), w.at("path_deg"), w.at("forward_m"), w.at("lateral_m")});
+    m.windows.push_back({w.at("yaw_deg"), w.at("path_deg"), w.at("forward_m"), w.at("lateral_m"),
+                         w.value("steering_effort", 0.0)});
   }
   m.worst_deg = j.at("worst_deg");
   m.holds = j.at("holds");
@@ -226,17 +289,22 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
     tasks.push_back(std::move(task));
   }
   const sim::SimModel model = make_model(spec.robot);  // shared, read-only
+  // A reflex landscape's one start, walked by every process (it is the same for all).
+  std::optional<LandscapeStart> start;
+  if (spec.steering == learning::Steering::reflex) start = walk_landscape_start(model, spec);
   const RunnerOutcome outcome = run_tasks(
       tasks,
       [&](const Task& task) {
         const learning::Periods periods = task.params.at("periods");
-        return to_json(measure_combination(model, spec.disabled, periods, spec.windows,
-                                           spec.window_steps, spec.threshold_deg),
-                       morph);
+        const CombinationMeasure m =
+            start ? measure_from_start(model, spec, *start, periods)
+                  : measure_combination(model, spec.disabled, periods, spec.windows,
+                                        spec.window_steps, spec.threshold_deg);
+        return to_json(m, morph, spec.steering);
       },
       runner);
 
-  Landscape landscape{spec, {}};
+  Landscape landscape{spec, {}, start ? start->windows : std::vector<sim::WindowMeasure>{}};
   for (const nlohmann::json& result : outcome.results) {
     landscape.combinations.push_back(combination_from_json(result, morph));
   }
@@ -279,19 +347,17 @@ learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& lands
   d.window_steps = first.window_steps;
   d.threshold_deg = first.threshold_deg;
   d.sim = first.robot.sim;
+  if (first.steering == learning::Steering::reflex) {
+    const learning::CompensationOptions o = landscape_options(first);
+    d.reflex = o.steering_params;
+    d.monitor_windows = o.monitor_windows;
+  }
   for (const Landscape& l : landscapes) {
     learning::ScenarioLandscape s;
     s.failed = l.spec.disabled;
+    s.start_windows = l.start_windows;
     for (const CombinationMeasure& m : l.combinations) {
-      learning::LandscapePoint p;
-      p.periods = m.periods;
-      for (const sim::WindowMeasure& w : m.windows) {
-        p.yaw_deg.push_back(w.yaw_deg);
-        p.path_deg.push_back(w.path_deg);
-      }
-      p.worst_deg = m.worst_deg;
-      p.holds = m.holds;
-      s.points.push_back(std::move(p));
+      s.points.push_back({m.periods, m.windows, m.worst_deg, m.holds});
     }
     d.scenarios.push_back(std::move(s));
   }
@@ -299,19 +365,29 @@ learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& lands
 }
 
 std::string landscape_csv(const Landscape& landscape) {
-  const robot::Morphology& morph = morphology(landscape.spec.robot);
-  const std::vector<std::size_t> working = working_legs(morph, landscape.spec.disabled);
+  const LandscapeSpec& spec = landscape.spec;
+  const robot::Morphology& morph = morphology(spec.robot);
+  const std::vector<std::size_t> working = working_legs(morph, spec.disabled);
+  const bool reflex = spec.steering == learning::Steering::reflex;
   std::string out;
   for (std::size_t leg : working) out += morph.legs[leg].name + ",";
-  for (int w = 1; w <= landscape.spec.windows; ++w) {
+  for (int w = 1; w <= spec.windows; ++w) {
     const std::string n = std::to_string(w);
     out += "w" + n + "_yaw_deg,w" + n + "_path_deg,";
+    if (reflex) out += "w" + n + "_steering_effort,";
   }
   out += "worst_deg,holds,first_window_passes\n";
   for (const CombinationMeasure& m : landscape.combinations) {
     for (std::size_t leg : working) out += std::to_string(m.periods[leg]) + ",";
-    for (const sim::WindowMeasure& w : m.windows) {
-      out += format_number(w.yaw_deg) + "," + format_number(w.path_deg) + ",";
+    for (std::size_t w = 0; w < static_cast<std::size_t>(spec.windows); ++w) {
+      // A window not walked (after the first over the threshold) is an empty cell.
+      if (w < m.windows.size()) {
+        out +=
+            format_number(m.windows[w].yaw_deg) + "," + format_number(m.windows[w].path_deg) + ",";
+        if (reflex) out += format_number(m.windows[w].steering_effort) + ",";
+      } else {
+        out += reflex ? ",,," : ",,";
+      }
     }
     out += format_number(m.worst_deg) + "," + (m.holds ? "1," : "0,") +
            (m.first_window_passes ? "1\n" : "0\n");
@@ -354,6 +430,13 @@ nlohmann::json landscape_summary(const Landscape& landscape,
   const std::optional<std::size_t> best = best_combination(landscape);
 
   nlohmann::json summary = arguments(spec);
+  if (spec.steering == learning::Steering::reflex) {
+    nlohmann::json start = nlohmann::json::array();
+    for (const sim::WindowMeasure& w : landscape.start_windows) {
+      start.push_back(window_json(w, spec.steering));
+    }
+    summary["start_windows"] = start;
+  }
   summary["count"] = c.size();
   summary["holding"] = holding;
   summary["share_holding"] = share(holding, c.size());

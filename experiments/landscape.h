@@ -1,7 +1,13 @@
 // The landscape of one leg-failure scenario: every combination of working-leg periods,
-// each walked and measured the same way, so the learners can be scored against the truth. A
-// combination is measured from a robot already walking (warmed-up, locked controller with the
-// legs failed), set to the combination, settled, then measured over W windows of 400 steps.
+// each walked and measured the same way, so the learners can be scored against the truth. Two
+// ways of walking (docs/learning.md "The landscape dataset"):
+// - periods alone (steering off): from a robot already walking (warmed-up, locked controller with
+//   the legs failed), set to the combination, settled, then measured over W windows of 400 steps;
+// - as the default robust run walks (steering reflex): the robot walks with every leg at 4 and
+//   the reflex on until robust mode would start learning (learning::watch_until_deviation); from
+//   that one state each combination is set, settled and judged as robust mode judges a trial
+//   (learning::robust_trial), window by window until the first over the threshold or W held: the
+//   first trial of a live run, exactly.
 #pragma once
 
 #include <cstddef>
@@ -16,9 +22,11 @@
 #include "experiments/run_robot.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
+#include "learning/course_walk.h"
 #include "learning/landscapes.h"
 #include "sim/deviation.h"
 #include "sim/sim.h"
+#include "sim/stepper.h"
 
 namespace multicpg::experiments {
 
@@ -37,6 +45,8 @@ struct LandscapeSpec {
   int windows = kDefaultLandscapeWindows;
   long window_steps = learning::kDefaultWindowSteps;
   double threshold_deg = learning::kDefaultThresholdDeg;
+  // off: periods alone, every window walked; reflex: as robust mode's first trial (above).
+  learning::Steering steering = learning::Steering::off;
 };
 
 // Throws BadInput (one line) for an unknown or repeated leg, every leg disabled, an empty period
@@ -47,9 +57,12 @@ void validate(const LandscapeSpec& spec);
 struct CombinationMeasure {
   learning::Periods periods;  // every leg; disabled legs keep 4
   long settle_steps = 0;      // walked unmeasured after the periods were set
+  // Every window walked; with the reflex, up to the first over the threshold.
   std::vector<sim::WindowMeasure> windows;
-  double worst_deg = 0.0;            // largest worst_deg() of the windows
-  bool holds = false;                // every window's worst_deg() under the threshold
+  // Largest window error: worst_deg() of the windows, with the reflex robust mode's E
+  // (learning::robust_deviation: its effort too).
+  double worst_deg = 0.0;
+  bool holds = false;  // every one of the spec's windows walked and under the threshold
   bool first_window_passes = false;  // the paper's criterion on the first window: |yaw| < threshold
 };
 
@@ -62,6 +75,31 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
                                        const learning::Periods& periods, int windows,
                                        long window_steps, double threshold_deg);
 
+// The options a reflex landscape walks with: robust mode, the steering reflex with its default
+// gains, the spec's threshold, window and period set, every other option at its default.
+learning::CompensationOptions landscape_options(const LandscapeSpec& spec);
+
+// Where a reflex landscape's combinations start: the robot and its walk saved when robust mode
+// would start learning, and the windows walked to there after the faults' own window.
+struct LandscapeStart {
+  sim::StepperCheckpoint body;
+  learning::CourseWalkState walk;
+  // The last one deviated (learning would start with it), or all monitor_windows held (the
+  // reflex alone holds: a live run learns nothing).
+  std::vector<sim::WindowMeasure> windows;
+};
+
+// The start of `spec`'s combinations (spec.steering must be reflex): a sim::Stepper started as a
+// learning run starts (every leg at 4, warmed up, spec.disabled failed at step 0), walked by
+// learning::watch_until_deviation.
+LandscapeStart walk_landscape_start(const sim::SimModel& model, const LandscapeSpec& spec);
+
+// One combination of a reflex landscape, from `start`: every client freed (as at a detection),
+// then learning::robust_trial over spec.windows windows.
+CombinationMeasure measure_from_start(const sim::SimModel& model, const LandscapeSpec& spec,
+                                      const LandscapeStart& start,
+                                      const learning::Periods& periods);
+
 // Every combination of the period set over the working legs, disabled legs at 4; the first
 // working leg varies slowest (5 periods, 5 working legs: 3,125).
 std::vector<learning::Periods> landscape_combinations(const LandscapeSpec& spec);
@@ -71,12 +109,16 @@ std::string combination_key(const robot::Morphology& morph,
                             const std::vector<std::size_t>& disabled,
                             const learning::Periods& periods);
 
-nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph);
+// Its windows' steering_effort only with the reflex (landscapes of periods alone read as before).
+nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph,
+                       learning::Steering steering);
 CombinationMeasure combination_from_json(const nlohmann::json& j, const robot::Morphology& morph);
 
 struct Landscape {
   LandscapeSpec spec;
   std::vector<CombinationMeasure> combinations;  // in landscape_combinations order
+  // With the reflex: the windows of its start (LandscapeStart::windows).
+  std::vector<sim::WindowMeasure> start_windows;
 };
 
 // Index of the best combination: the one that holds with the smallest worst deviation (the

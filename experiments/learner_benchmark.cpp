@@ -93,7 +93,9 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
   }
   for (const learning::LearnerChoice& l : spec.learners) {
     for (const learning::ScenarioLandscape* s : scenarios) {
-      learning::check_learner(l, b.dataset.robot, s->failed);
+      learning::check_learner(
+          l, b.dataset.robot, s->failed,
+          spec.protocol.yaw_only ? learning::kPaperCriterion : b.dataset.criterion());
     }
   }
 

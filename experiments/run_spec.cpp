@@ -42,7 +42,7 @@ void validate(const RunSpec& spec) {
     learning::validate_faults(*spec.learning, spec.faults);
     within("learner", [&] {
       learning::check_learner(spec.learning->learner, spec.robot.kind,
-                              sim::failing_legs(spec.faults));
+                              sim::failing_legs(spec.faults), learning::criterion(*spec.learning));
     });
   });
   if (spec.faults.empty()) {

@@ -227,7 +227,8 @@ json landscape_json(const LandscapeSpec& spec) {
   return {{"period_set", spec.period_set},
           {"windows", spec.windows},
           {"window_steps", spec.window_steps},
-          {"threshold_deg", spec.threshold_deg}};
+          {"threshold_deg", spec.threshold_deg},
+          {"steering", learning::to_string(spec.steering)}};
 }
 
 // Options of a kind that takes no grid: a list where one value belongs is refused.
@@ -265,6 +266,11 @@ Sweep resolve_landscape(const json& doc, const DocumentRobot& robot, const Sweep
   spec.windows = landscape.at("windows").get<int>();
   spec.window_steps = landscape.at("window_steps").get<long>();
   spec.threshold_deg = landscape.at("threshold_deg").get<double>();
+  try {
+    spec.steering = learning::parse_steering(landscape.at("steering").get<std::string>());
+  } catch (const BadInput& e) {
+    throw OptionError("landscape.steering", e.what());
+  }
   const json sim_default = sim_defaults(doc);
   json sim_doc = sim_default;
   merge_checked(doc.value("sim", json::object()), sim_default, "sim", sim_doc, grid);

@@ -1,5 +1,6 @@
 #include "learning/additive_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -13,8 +14,9 @@ AdditiveModel::AdditiveModel(const SearchSpace& space, const AdditiveModelParams
   const std::size_t pairs = params.pair_deg > 0.0 ? legs * (legs - 1) / 2 : 0;
   features_ = 1 + legs * q + pairs * q * q;
   if (prior_mean_.empty()) prior_mean_.assign(kOutputs, std::vector<double>(space.size(), 0.0));
-  if (prior_mean_.size() != kOutputs || prior_mean_[0].size() != space.size() ||
-      prior_mean_[1].size() != space.size()) {
+  if (prior_mean_.size() != kOutputs ||
+      std::any_of(prior_mean_.begin(), prior_mean_.end(),
+                  [&](const std::vector<double>& m) { return m.size() != space.size(); })) {
     throw std::logic_error("AdditiveModel: a prior mean per output and combination");
   }
   const auto d = static_cast<Eigen::Index>(features_);
@@ -49,7 +51,7 @@ std::vector<std::size_t> AdditiveModel::active(std::size_t combination) const {
   return out;
 }
 
-void AdditiveModel::observe(std::size_t combination, double yaw_deg, double path_deg) {
+void AdditiveModel::observe(std::size_t combination, const WindowOutputs& window) {
   // The window is y = x^T weights + noise with x the combination's active features (0/1):
   // u = Sigma x, gain k = u / (noise^2 + x^T u), mean += k (y - x^T mean), Sigma -= k u^T.
   const std::vector<std::size_t> a = active(combination);
@@ -58,33 +60,37 @@ void AdditiveModel::observe(std::size_t combination, double yaw_deg, double path
   double xu = 0.0;
   for (std::size_t i : a) xu += u(static_cast<Eigen::Index>(i));
   const Eigen::VectorXd gain = u / (params_.noise_deg * params_.noise_deg + xu);
-  const double y[kOutputs] = {yaw_deg - prior_mean_[0][combination],
-                              path_deg - prior_mean_[1][combination]};
   for (std::size_t o = 0; o < kOutputs; ++o) {
     const auto oo = static_cast<Eigen::Index>(o);
+    const double y = window[o] - prior_mean_[o][combination];
     double predicted = 0.0;
     for (std::size_t i : a) predicted += mean_(static_cast<Eigen::Index>(i), oo);
-    mean_.col(oo) += gain * (y[o] - predicted);
+    mean_.col(oo) += gain * (y - predicted);
   }
   covariance_.noalias() -= gain * u.transpose();
 }
 
-void AdditiveModel::predict(std::vector<Prediction>& yaw, std::vector<Prediction>& path) const {
-  yaw.resize(space_.size());
-  path.resize(space_.size());
+std::array<Prediction, kOutputs> AdditiveModel::predict(std::size_t c) const {
+  const std::vector<std::size_t> a = active(c);
+  std::array<double, kOutputs> m{};
+  for (std::size_t o = 0; o < kOutputs; ++o) m[o] = prior_mean_[o][c];
+  double var = 0.0;
+  for (std::size_t i : a) {
+    const auto ii = static_cast<Eigen::Index>(i);
+    for (std::size_t o = 0; o < kOutputs; ++o) m[o] += mean_(ii, static_cast<Eigen::Index>(o));
+    for (std::size_t j : a) var += covariance_(ii, static_cast<Eigen::Index>(j));
+  }
+  const double sd = std::sqrt(std::max(var, 0.0));
+  std::array<Prediction, kOutputs> out;
+  for (std::size_t o = 0; o < kOutputs; ++o) out[o] = {m[o], sd};
+  return out;
+}
+
+void AdditiveModel::predict(Predictions& out) const {
+  for (std::vector<Prediction>& v : out) v.resize(space_.size());
   for (std::size_t c = 0; c < space_.size(); ++c) {
-    const std::vector<std::size_t> a = active(c);
-    double m[kOutputs] = {prior_mean_[0][c], prior_mean_[1][c]};
-    double var = 0.0;
-    for (std::size_t i : a) {
-      const auto ii = static_cast<Eigen::Index>(i);
-      m[0] += mean_(ii, 0);
-      m[1] += mean_(ii, 1);
-      for (std::size_t j : a) var += covariance_(ii, static_cast<Eigen::Index>(j));
-    }
-    const double sd = std::sqrt(std::max(var, 0.0));
-    yaw[c] = {m[0], sd};
-    path[c] = {m[1], sd};
+    const std::array<Prediction, kOutputs> p = predict(c);
+    for (std::size_t o = 0; o < kOutputs; ++o) out[o][c] = p[o];
   }
 }
 

@@ -1,5 +1,6 @@
-// A Gaussian-process model of a window's signed yaw change and path angle over the combinations
-// of a search space, for the model-based learners (learning/bayes.cpp, learning/prior.cpp).
+// A Gaussian-process model of a window's signed yaw change, path angle and (with the steering
+// reflex) the reflex's effort in degrees of E (learning/criterion.h) over the combinations of a
+// search space, for the model-based learners (learning/bayes.cpp, learning/prior.cpp).
 //
 // The kernel is a sum over working legs of a categorical kernel on each leg's period, plus a
 // constant and, optionally, a sum over pairs of legs of the product of their categorical
@@ -11,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -31,19 +33,27 @@ struct Prediction {
   double sd = 0.0;
 };
 
+// What the model predicts of a window: the three parts of E (learning/criterion.h).
+enum Output : std::size_t { kYaw, kPath, kEffort, kOutputs };
+// One window as the model sees it: yaw change and path angle in degrees, the reflex's effort in
+// degrees of E (Criterion::effort_deg of its share; 0 without the reflex).
+using WindowOutputs = std::array<double, kOutputs>;
+// Every combination's prediction of each output.
+using Predictions = std::array<std::vector<Prediction>, kOutputs>;
+
 class AdditiveModel {
  public:
   // `prior_mean[output][combination]`: a mean the weights correct (empty: zero), for each of the
-  // outputs (yaw, path).
+  // outputs.
   AdditiveModel(const SearchSpace& space, const AdditiveModelParams& params,
                 std::vector<std::vector<double>> prior_mean = {});
 
-  static constexpr std::size_t kOutputs = 2;  // yaw change, path angle
-
-  // One window of `combination`: its yaw change and path angle.
-  void observe(std::size_t combination, double yaw_deg, double path_deg);
-  // Both outputs for every combination.
-  void predict(std::vector<Prediction>& yaw, std::vector<Prediction>& path) const;
+  // One window of `combination`.
+  void observe(std::size_t combination, const WindowOutputs& window);
+  // Every output for every combination.
+  void predict(Predictions& out) const;
+  // Every output for one combination.
+  std::array<Prediction, kOutputs> predict(std::size_t combination) const;
   double noise_deg() const { return params_.noise_deg; }
 
  private:

@@ -69,6 +69,17 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   if (protocol.hold_windows < 1 || protocol.hold_windows > dataset.windows) {
     throw BadInput("hold windows must be in 1.." + std::to_string(dataset.windows));
   }
+  if (dataset.reflex && protocol.yaw_only) {
+    throw BadInput("the dataset was walked with " + dataset.walked() +
+                   ", which paper mode does not use: replay paper mode on a dataset of periods "
+                   "alone");
+  }
+  if (dataset.reflex && protocol.window_order == WindowOrder::drawn) {
+    throw BadInput("the dataset was walked with " + dataset.walked() +
+                   " up to each combination's first window over the threshold, so its windows "
+                   "replay only in the order walked (--window-order walked)");
+  }
+  const Criterion criterion = protocol.yaw_only ? kPaperCriterion : dataset.criterion();
   const robot::Morphology& morph = robot::morphology(dataset.robot);
   const Periods start(morph.size(), kStartPeriod);
   const std::optional<std::size_t> c0 = scenario.find(start);
@@ -82,20 +93,16 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
                ? walked
                : drawn_windows(seed, point, visits[point]++, walked.size());
   };
-  const auto window_error = [&](std::size_t point, std::size_t window) {
-    return scenario.points[point].window_error(window, protocol.yaw_only);
-  };
   const auto measure = [&](std::size_t point) {
     const std::vector<std::size_t> order = windows_of(point);
+    const LandscapePoint& p = scenario.points[point];
     Measurement m;
     const int windows = protocol.yaw_only ? 1 : protocol.hold_windows;
     for (int w = 0; w < windows; ++w) {
-      const LandscapePoint& p = scenario.points[point];
-      sim::WindowMeasure window;
-      window.yaw_deg = p.yaw_deg[order[w]];
-      window.path_deg = p.path_deg[order[w]];
+      // A window not walked follows one over the threshold, where the trial has stopped.
+      const sim::WindowMeasure& window = p.windows.at(order[w]);
       m.windows.push_back(window);
-      m.deviation_deg = std::max(m.deviation_deg, window_error(point, order[w]));
+      m.deviation_deg = std::max(m.deviation_deg, criterion.error(window));
       if (!sim::holds(m.deviation_deg, search.threshold_deg)) break;
     }
     return m;
@@ -109,10 +116,25 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
     run.answer_worst_deg = p.worst_deg;
     return run;
   };
-  // Detection: one window (paper §3 step 2; robust mode judges its windows one at a time).
-  const std::size_t first = windows_of(*c0).front();
-  const double e0 = window_error(*c0, first);
-  if (sim::holds(e0, search.threshold_deg)) return finish({start, e0});
+  // Detection: one window (paper §3 step 2; robust mode judges its windows one at a time): with
+  // the reflex the window its start walk ended with, else one of the start combination's.
+  const sim::WindowMeasure detecting =
+      dataset.reflex ? scenario.start_windows.back()
+                     : scenario.points[*c0].windows.at(windows_of(*c0).front());
+  const double e0 = criterion.error(detecting);
+  if (sim::holds(e0, search.threshold_deg)) {
+    finish({start, e0});
+    if (dataset.reflex) {
+      // The start walk itself is the truth: every one of its windows held, so the live run
+      // walks on as it was, learning nothing.
+      run.answer_holds = true;
+      run.answer_worst_deg = 0.0;
+      for (const sim::WindowMeasure& w : scenario.start_windows) {
+        run.answer_worst_deg = std::max(run.answer_worst_deg, criterion.error(w));
+      }
+    }
+    return run;
+  }
   run.deviated = true;
 
   LearnerSetup setup;
@@ -120,9 +142,8 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   setup.start = start;
   setup.fixed = scenario.failed;
   setup.start_deviation_deg = e0;
-  setup.start_windows = {
-      {scenario.points[*c0].yaw_deg[first], scenario.points[*c0].path_deg[first]}};
-  setup.yaw_only = protocol.yaw_only;
+  setup.start_windows = {detecting};
+  setup.criterion = criterion;
   setup.search = search;
   setup.seed = learner_seed.value_or(mix(seed ^ kLearnerStream));
   const std::unique_ptr<Learner> learner = make_learner(choice, setup);

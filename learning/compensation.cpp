@@ -11,85 +11,10 @@
 #include "common/angles.h"
 #include "common/errors.h"
 #include "common/limits.h"
+#include "learning/course_walk.h"
 
 namespace multicpg::learning {
 namespace {
-
-// Walks the robot on (the walker applies the faults) and, when asked, steers it with the reflex
-// on every step; keeps count of the faults that came.
-class Walk {
- public:
-  Walk(Walker& walker, const CompensationOptions& options) : walker_(walker), options_(options) {
-    if (options.mode == Mode::robust && options.steering == Steering::reflex) {
-      steering_ = start_steering(walker.pose());
-    }
-    take_faults();  // those due at the start came with the walker's start
-  }
-
-  void steps(long n) {
-    for (long i = 0; i < n; ++i) {
-      if (steering_) {
-        neural::ControllerState& c = walker_.controller();
-        c.drive = steer(options_.steering_params, *steering_, walker_.pose(), c.drive);
-        cut_sum_ += std::abs(steering_->last_cut);
-      }
-      walker_.step();
-      take_faults();
-    }
-  }
-
-  // Yaw change and path angle of one window (robust mode).
-  sim::WindowMeasure measured_window() {
-    const sim::Pose2 start = walker_.pose();
-    cut_sum_ = 0.0;
-    steps(options_.window_steps);
-    const sim::WindowMeasure m =
-        sim::measure_window(start, walker_.pose(), course_yaw_deg(steering_));
-    if (!std::isfinite(m.yaw_deg) || !std::isfinite(m.path_deg)) {
-      throw RuntimeFailure("the walker's pose is not a finite number");
-    }
-    effort_ = cut_sum_ / static_cast<double>(options_.window_steps);
-    sim::WindowMeasure out = m;
-    out.steering_effort = effort_;
-    return out;
-  }
-
-  long walked() const { return walker_.step_count(); }
-  // Paper mode's "after the failure": a leg has failed (a healthy robot's run, with no fault,
-  // counts its windows from the start).
-  bool failed() const { return any_failed_ever_ || walker_.faults().timeline().empty(); }
-  std::vector<std::size_t> failed_now() const { return walker_.faults().failed_legs(); }
-  bool faults_pending() const { return walker_.faults().pending(); }
-  // Faults and recoveries since the last call.
-  int take_fault_count() { return std::exchange(fault_count_, 0); }
-  // A recovery that left no fault in force, since the last call.
-  bool take_full_recovery() { return std::exchange(full_recovery_, false); }
-  double effort() const { return effort_; }
-  const std::optional<SteeringState>& steering() const { return steering_; }
-
- private:
-  void take_faults() {
-    const std::vector<sim::Fault>& came = walker_.faults().applied();
-    if (seen_ == came.size()) return;
-    bool recovered = false;
-    for (; seen_ < came.size(); ++seen_) {
-      any_failed_ever_ = any_failed_ever_ || !came[seen_].recover;
-      recovered = recovered || came[seen_].recover;
-      ++fault_count_;
-    }
-    if (recovered && walker_.faults().in_force().empty()) full_recovery_ = true;
-  }
-
-  Walker& walker_;
-  const CompensationOptions& options_;
-  std::size_t seen_ = 0;
-  bool any_failed_ever_ = false;
-  int fault_count_ = 0;
-  bool full_recovery_ = false;
-  std::optional<SteeringState> steering_;
-  double cut_sum_ = 0.0;
-  double effort_ = 0.0;
-};
 
 Periods current_periods(Walker& walker) {
   Periods periods;
@@ -117,13 +42,18 @@ long locked_settle_steps(const neural::ControllerModel& model, const Periods& pe
   return slowest + longest_delay(model);
 }
 
-double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window) {
-  double e = window.worst_deg();
+Criterion criterion(const CompensationOptions& options) {
+  if (options.mode == Mode::paper) return kPaperCriterion;
   if (options.steering == Steering::reflex) {
-    e = std::max(e, options.annealing.threshold_deg * window.steering_effort /
-                        options.steering_params.max_effort);
+    return reflex_criterion(options.annealing.threshold_deg, options.steering_params.max_effort);
   }
-  return e;
+  return kPeriodsAloneCriterion;
+}
+
+double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window) {
+  Criterion c = criterion(options);
+  c.path = true;
+  return c.error(window);
 }
 
 long start_settle_steps(const CompensationOptions& options, const neural::ControllerModel& model) {
@@ -280,7 +210,7 @@ LearnerSetup learner_setup(const Walker& walker, const CompensationOptions& opti
   setup.fixed = std::move(fixed);
   setup.start_deviation_deg = start_deviation_deg;
   setup.start_windows = std::move(start_windows);
-  setup.yaw_only = options.mode == Mode::paper;
+  setup.criterion = criterion(options);
   setup.search = options.annealing;
   setup.seed = seed;
   return setup;
@@ -292,7 +222,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   result.mode = Mode::paper;
   result.settle_steps = start_settle_steps(options, model);
   const AnnealingParams& params = options.annealing;
-  Walk walk(walker, options);
+  CourseWalk walk(walker, options);
 
   // docs/learning.md "Detection": consecutive windows until one deviates more than the threshold.
   walk.steps(result.settle_steps);
@@ -439,18 +369,6 @@ class RobustRun {
     walk_.take_fault_count();
   }
 
-  // Measures up to hold_windows windows; E is the worst, and the trial stops at the first
-  // window over the threshold.
-  Measurement judge() {
-    Measurement m;
-    for (int w = 0; w < options_.hold_windows; ++w) {
-      m.windows.push_back(walk_.measured_window());
-      m.deviation_deg = std::max(m.deviation_deg, error(m.windows.back()));
-      if (!sim::holds(m.deviation_deg, params_.threshold_deg)) break;
-    }
-    return m;
-  }
-
   void episode(const sim::WindowMeasure& detecting) {
     const double detection_deg = error(detecting);
     const int number = static_cast<int>(result_.episodes.size()) + 1;
@@ -473,10 +391,8 @@ class RobustRun {
     EpisodeHooks hooks;
     hooks.measure = [&](int trial, const Periods& candidate) {
       emit_trial_start(walker_, number, trial, candidate);
-      return budget_.count(walker_, [&] {
-        set(candidate);
-        return judge();
-      });
+      return budget_.count(
+          walker_, [&] { return robust_trial(walk_, options_, candidate, options_.hold_windows); });
     };
     hooks.decided = [&](const TrialRecord& t) {
       walker_.emit(trial_end_event(number, t));
@@ -526,7 +442,7 @@ class RobustRun {
   const CompensationOptions& options_;
   const neural::ControllerModel& model_;
   const AnnealingParams& params_;
-  Walk walk_;
+  CourseWalk walk_;
   Budget budget_;
   LearningResult result_;
 };

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "learning/annealing.h"
+#include "learning/criterion.h"
 #include "learning/learner.h"
 #include "learning/learners.h"
 #include "learning/steering.h"
@@ -124,6 +125,10 @@ struct CompensationOptions {
 // The settle a run of `options` starts with (LearningResult::settle_steps): the given one, else
 // paper mode's default_settle_steps, robust mode's locked_settle_steps for all periods at 4.
 long start_settle_steps(const CompensationOptions& options, const neural::ControllerModel& model);
+
+// What a run of `options` makes a trial's E of (learning/criterion.h): paper mode's |yaw change|,
+// robust mode's worst of |yaw change| and |path angle|, and with the reflex its effort.
+Criterion criterion(const CompensationOptions& options);
 
 // A robust-mode window's E, what it compares with the threshold (docs/learning.md "Deviation"):
 // the worse of |yaw change| and |path angle|, and with the reflex its effort scaled so that

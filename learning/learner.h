@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "learning/annealing.h"
+#include "learning/criterion.h"
 #include "robot/morphology.h"
 #include "sim/deviation.h"
 
@@ -40,9 +41,9 @@ struct LearnerSetup {
   std::vector<std::size_t> fixed;
   double start_deviation_deg = 0.0;               // E of C0 (the detecting window)
   std::vector<sim::WindowMeasure> start_windows;  // the detecting window, signed
-  // What E is made of: the paper's |yaw change| alone, or robust mode's worst of |yaw change| and
-  // |path angle| (sim::WindowMeasure::worst_deg).
-  bool yaw_only = false;
+  // What E is made of (learning/criterion.h): the paper's |yaw change| alone, robust mode's worst
+  // of |yaw change| and |path angle|, and with the steering reflex its effort.
+  Criterion criterion = kPeriodsAloneCriterion;
   // The search's bounds, the same for every learner: its period set, the threshold E must get
   // under and the trial cap; beta is the annealing's own (docs/learning.md "The search").
   AnnealingParams search;

@@ -17,7 +17,7 @@ std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::j
 nlohmann::json prior_options(const nlohmann::json& asked);
 std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options);
 void check_prior(const nlohmann::json& options, robot::RobotKind robot,
-                 const std::vector<std::size_t>& failed);
+                 const std::vector<std::size_t>& failed, const Criterion& criterion);
 
 namespace {
 
@@ -27,7 +27,7 @@ struct Entry {
   std::unique_ptr<Learner> (*make)(const LearnerSetup& setup, const nlohmann::json& options);
   // What can be checked of a run before it starts (null: nothing beyond the options).
   void (*check)(const nlohmann::json& options, robot::RobotKind robot,
-                const std::vector<std::size_t>& failed) = nullptr;
+                const std::vector<std::size_t>& failed, const Criterion& criterion) = nullptr;
 };
 
 // The one list of learners.
@@ -108,9 +108,11 @@ LearnerChoice resolve_learner(const LearnerChoice& asked) {
 }
 
 void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
-                   const std::vector<std::size_t>& failed) {
+                   const std::vector<std::size_t>& failed, const Criterion& criterion) {
   const Entry& e = entry(choice.name);
-  if (e.check != nullptr) within("options", [&] { e.check(choice.options, robot, failed); });
+  if (e.check != nullptr) {
+    within("options", [&] { e.check(choice.options, robot, failed, criterion); });
+  }
 }
 
 std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const LearnerSetup& setup) {

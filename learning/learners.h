@@ -50,10 +50,11 @@ std::vector<std::string> detail_columns(std::string_view learner,
 LearnerChoice resolve_learner(const LearnerChoice& asked);
 
 // Checks what a learner needs of a run before it starts, for a run of `robot` whose legs
-// `failed` fail (its data, and that a prior never sees the scenario under test). Throws
-// OptionError ("options.<key>") or BadInput naming the file.
+// `failed` fail and whose trials `criterion` judges (its data, walked the way the run judges,
+// and that a prior never sees the scenario under test). Throws OptionError ("options.<key>") or
+// BadInput naming the file.
 void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
-                   const std::vector<std::size_t>& failed);
+                   const std::vector<std::size_t>& failed, const Criterion& criterion);
 
 // A resolved choice's learner for one episode. Throws BadInput for a setup the learner cannot
 // search (as start_annealing: every leg fixed, a start outside the period set, ...).

@@ -43,8 +43,11 @@ ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& 
       best_(setup) {
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
-  for (const sim::WindowMeasure& w : setup.start_windows)
-    model_.observe(start, w.yaw_deg, w.path_deg);
+  for (const sim::WindowMeasure& w : setup.start_windows) model_.observe(start, outputs(w));
+}
+
+WindowOutputs ModelLearner::outputs(const sim::WindowMeasure& w) const {
+  return {w.yaw_deg, w.path_deg, setup_.criterion.effort_deg(w.steering_effort)};
 }
 
 double ModelLearner::window_holds(const Prediction& p) const {
@@ -54,21 +57,32 @@ double ModelLearner::window_holds(const Prediction& p) const {
   return cdf((t - p.mean) / sd) - cdf((-t - p.mean) / sd);
 }
 
+double ModelLearner::effort_holds(const Prediction& p) const {
+  // The effort is never negative: only its upper side can fail.
+  const double sd = std::sqrt(p.sd * p.sd + params_.model.noise_deg * params_.model.noise_deg);
+  return 0.5 * std::erfc(-(setup_.search.threshold_deg - p.mean) / sd / std::sqrt(2.0));
+}
+
 std::optional<Periods> ModelLearner::propose() {
-  std::vector<Prediction> yaw;
-  std::vector<Prediction> path;
-  model_.predict(yaw, path);
+  Predictions predicted;
+  model_.predict(predicted);
+  const Criterion& judge = setup_.criterion;
   double best_score = -std::numeric_limits<double>::infinity();
   bool found = false;
   for (std::size_t c = 0; c < space_.size(); ++c) {
     if (tried_[c]) continue;
+    const Prediction& yaw = predicted[kYaw][c];
+    const Prediction& path = predicted[kPath][c];
+    const Prediction& effort = predicted[kEffort][c];
     double score = 0.0;
     if (params_.acquisition == Acquisition::pi) {
-      score = window_holds(yaw[c]) * (setup_.yaw_only ? 1.0 : window_holds(path[c]));
+      score = window_holds(yaw) * (judge.path ? window_holds(path) : 1.0);
+      if (judge.steers()) score *= effort_holds(effort);
     } else {
-      double error = std::abs(yaw[c].mean);
-      if (!setup_.yaw_only) error = std::max(error, std::abs(path[c].mean));
-      score = -(error - params_.kappa * yaw[c].sd);
+      double error = std::abs(yaw.mean);
+      if (judge.path) error = std::max(error, std::abs(path.mean));
+      if (judge.steers()) error = std::max(error, effort.mean);
+      score = -(error - params_.kappa * yaw.sd);
     }
     // Ties go to the first combination in order: deterministic without a draw.
     if (score > best_score) {
@@ -87,7 +101,7 @@ std::optional<Periods> ModelLearner::propose() {
 }
 
 TrialRecord ModelLearner::observe(const Measurement& m) {
-  for (const sim::WindowMeasure& w : m.windows) model_.observe(pending_, w.yaw_deg, w.path_deg);
+  for (const sim::WindowMeasure& w : m.windows) model_.observe(pending_, outputs(w));
   const Periods periods = space_.periods(pending_);
   const bool accepted = best_.record(periods, m.deviation_deg);
   return {best_.trials(), periods, m.deviation_deg, accepted, {{"acquisition", pending_score_}}};

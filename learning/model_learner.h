@@ -68,6 +68,10 @@ class ModelLearner final : public Learner {
  private:
   // P(|x| < threshold) for x ~ N(mean, sd^2 + noise^2): one window of the output holds.
   double window_holds(const Prediction& p) const;
+  // P(x < threshold): the reflex's effort, never negative, holds.
+  double effort_holds(const Prediction& p) const;
+  // What the model sees of a window (its effort scaled as the criterion scales it).
+  WindowOutputs outputs(const sim::WindowMeasure& w) const;
 
   LearnerSetup setup_;
   ModelLearnerParams params_;

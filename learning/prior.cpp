@@ -134,59 +134,83 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
   const double ridge = o.ridge;
   const Features f(morph.size(), d.period_set.size());
   const auto n = static_cast<Eigen::Index>(f.size());
+  constexpr auto outputs = static_cast<Eigen::Index>(kOutputs);
   Eigen::MatrixXd xtx = Eigen::MatrixXd::Identity(n, n) * ridge;
-  Eigen::MatrixXd xty = Eigen::MatrixXd::Zero(n, 2);
-  const auto add = [&](const std::vector<std::size_t>& failed, const Periods& periods, double yaw,
-                       double path) {
+  Eigen::MatrixXd xty = Eigen::MatrixXd::Zero(n, outputs);
+  const auto add = [&](const std::vector<std::size_t>& failed, const Periods& periods,
+                       const WindowOutputs& y) {
     const std::vector<std::size_t> a = f.active(failed, digits(periods, d.period_set));
     for (std::size_t i : a) {
       const auto ii = static_cast<Eigen::Index>(i);
       for (std::size_t j : a) xtx(ii, static_cast<Eigen::Index>(j)) += 1.0;
-      xty(ii, 0) += yaw;
-      xty(ii, 1) += path;
+      for (Eigen::Index k = 0; k < outputs; ++k) xty(ii, k) += y[static_cast<std::size_t>(k)];
     }
   };
   for (const ScenarioLandscape* scenario : prior_scenarios(d, o, lost)) {
     const ScenarioLandscape& s = *scenario;
     const std::vector<std::size_t> image = robot::mirror(morph, s.failed);
     for (const LandscapePoint& p : s.points) {
-      double yaw = 0.0;
-      double path = 0.0;
-      for (std::size_t w = 0; w < p.yaw_deg.size(); ++w) {
-        yaw += p.yaw_deg[w];
-        path += p.path_deg[w];
+      WindowOutputs mean{};
+      for (const sim::WindowMeasure& w : p.windows) {
+        mean[kYaw] += w.yaw_deg;
+        mean[kPath] += w.path_deg;
+        mean[kEffort] += setup.criterion.effort_deg(w.steering_effort);
       }
-      yaw /= static_cast<double>(p.yaw_deg.size());
-      path /= static_cast<double>(p.path_deg.size());
-      add(s.failed, p.periods, yaw, path);
-      // Its mirror image turns the other way. It is never the scenario under test: that one's
-      // mirror is not among the scenarios.
-      add(image, robot::mirror_periods(morph, p.periods), -yaw, -path);
+      for (double& m : mean) m /= static_cast<double>(p.windows.size());
+      add(s.failed, p.periods, mean);
+      // Its mirror image turns the other way, with the same effort. It is never the scenario
+      // under test: that one's mirror is not among the scenarios.
+      add(image, robot::mirror_periods(morph, p.periods),
+          {-mean[kYaw], -mean[kPath], mean[kEffort]});
     }
   }
   const Eigen::MatrixXd beta = xtx.ldlt().solve(xty);
-  std::vector<std::vector<double>> out(2, std::vector<double>(space.size()));
+  std::vector<std::vector<double>> out(kOutputs, std::vector<double>(space.size()));
   for (std::size_t c = 0; c < space.size(); ++c) {
     const std::vector<std::size_t> a = f.active(lost, digits(space.periods(c), d.period_set));
     for (std::size_t i : a) {
-      out[0][c] += beta(static_cast<Eigen::Index>(i), 0);
-      out[1][c] += beta(static_cast<Eigen::Index>(i), 1);
+      for (std::size_t k = 0; k < kOutputs; ++k) {
+        out[k][c] += beta(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+      }
     }
   }
   return out;
 }
 
-// Prior means are computed once per dataset, scenario and ridge (the benchmark's seeds share
-// them).
+// The dataset a prior of `robot` learns from: the one its options name, or the repository's
+// walked the way the run judges a trial (with the steering reflex or without). Throws BadInput
+// (key "dataset") when the named one was walked the other way or is of another robot.
+fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
+                            const Criterion& criterion) {
+  return o.dataset.empty() ? repository_dataset(robot, criterion.steers()) : fs::path(o.dataset);
+}
+
+void check_dataset(const LandscapeDataset& d, const fs::path& path, robot::RobotKind robot,
+                   const Criterion& criterion) {
+  if (d.robot != robot) {
+    throw OptionError("dataset", "'" + path.string() + "' is of the " +
+                                     std::string(robot::to_string(d.robot)) + ", not the " +
+                                     std::string(robot::to_string(robot)));
+  }
+  if (d.reflex.has_value() != criterion.steers()) {
+    throw OptionError(
+        "dataset",
+        "'" + path.string() + "' was walked with " + d.walked() +
+            ", but this run judges its trials " +
+            (criterion.steers() ? "with the steering reflex (--steering off, or a dataset "
+                                  "walked with --steering reflex)"
+                                : "without the steering reflex (a dataset walked with "
+                                  "--steering off)"));
+  }
+}
+
+// Prior means are computed once per dataset, scenario, scenario list and ridge (the benchmark's
+// seeds share them); the key holds the ridge exactly.
 std::vector<std::vector<double>> cached_prior_mean(const fs::path& path, const LearnerSetup& setup,
                                                    const SearchSpace& space,
                                                    const PriorOptions& o) {
   const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
-  if (d->robot != setup.robot) {
-    throw BadInput("the prior's dataset '" + path.string() + "' is of the " +
-                   std::string(robot::to_string(d->robot)) + ", not the " +
-                   std::string(robot::to_string(setup.robot)));
-  }
+  check_dataset(*d, path, setup.robot, setup.criterion);
   if (d->period_set != setup.search.period_set) {
     throw BadInput("the prior's dataset '" + path.string() + "' has another period set");
   }
@@ -194,9 +218,11 @@ std::vector<std::vector<double>> cached_prior_mean(const fs::path& path, const L
   static std::map<std::string, std::vector<std::vector<double>>> cache;
   std::vector<std::size_t> lost = setup.fixed;
   std::sort(lost.begin(), lost.end());
-  const std::string key = path.string() + "|" +
-                          robot::leg_set_name(robot::morphology(setup.robot), lost) + "|" +
-                          nlohmann::json(o.scenarios).dump() + "|" + std::to_string(o.ridge);
+  const std::string key =
+      path.string() + "|" + robot::leg_set_name(robot::morphology(setup.robot), lost) + "|" +
+      nlohmann::json(o.scenarios).dump() + "|" + nlohmann::json(o.ridge).dump() + "|" +
+      nlohmann::json(setup.criterion.max_effort).dump() + "|" +
+      nlohmann::json(setup.criterion.threshold_deg).dump();
   {
     const std::lock_guard<std::mutex> lock(mutex);
     const auto it = cache.find(key);
@@ -214,21 +240,17 @@ nlohmann::json prior_options(const nlohmann::json& asked) {
 }
 
 void check_prior(const nlohmann::json& options, robot::RobotKind robot,
-                 const std::vector<std::size_t>& failed) {
+                 const std::vector<std::size_t>& failed, const Criterion& criterion) {
   const PriorOptions o = options.get<PriorOptions>();
-  const fs::path path = o.dataset.empty() ? repository_dataset(robot) : fs::path(o.dataset);
+  const fs::path path = prior_dataset_path(o, robot, criterion);
   const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
-  if (d->robot != robot) {
-    throw OptionError("dataset", "'" + path.string() + "' is of the " +
-                                     std::string(robot::to_string(d->robot)) + ", not the " +
-                                     std::string(robot::to_string(robot)));
-  }
+  check_dataset(*d, path, robot, criterion);
   prior_scenarios(*d, o, failed);
 }
 
 std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options) {
   const PriorOptions o = options.get<PriorOptions>();
-  const fs::path path = o.dataset.empty() ? repository_dataset(setup.robot) : fs::path(o.dataset);
+  const fs::path path = prior_dataset_path(o, setup.robot, setup.criterion);
   const SearchSpace space(setup);
   return std::make_unique<ModelLearner>(setup, model_learner_params(o),
                                         cached_prior_mean(path, setup, space, o));

@@ -315,7 +315,8 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
   const FigureInfo& info = figure_by_name("landscape");
   require(!points.empty(), info.name, "no combinations");
   require(threshold_deg > 0.0, info.name, "threshold must be positive");
-  const std::size_t windows = points.front().window_worst_deg.size();
+  std::size_t windows = 0;
+  for (const LandscapePoint& p : points) windows = std::max(windows, p.window_worst_deg.size());
   require(windows > 0, info.name, "no windows");
   ensure_writable_dir(out_dir);
   std::vector<std::size_t> order(points.size());
@@ -339,9 +340,7 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
   std::size_t learned_holding = 0;
   for (std::size_t r = 0; r < order.size(); ++r) {
     const LandscapePoint& p = points[order[r]];
-    require(p.window_worst_deg.size() == windows, info.name,
-            p.label + " has " + std::to_string(p.window_worst_deg.size()) + " windows, expected " +
-                std::to_string(windows));
+    require(!p.window_worst_deg.empty(), info.name, p.label + " has no window");
     holding += p.holds ? 1 : 0;
     first += p.first_window_passes ? 1 : 0;
     learned += static_cast<std::size_t>(p.learned);
@@ -354,6 +353,8 @@ FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::strin
                                  std::to_string(p.learned),
                                  p.label};
     for (double d : p.window_worst_deg) row.push_back(shortest(d));
+    // A window not walked (after the first over the threshold): gnuplot skips NaN.
+    row.resize(header.size(), "NaN");
     csv.row(row);
   }
   const auto percent = [&](std::size_t n) {

@@ -155,13 +155,15 @@ FigureFiles plot_trunk_paths(const TrunkPaths& paths, const std::filesystem::pat
 // own worst deviation behind it, the threshold, the best holding combination and where the
 // learned combinations fall.
 struct LandscapePoint {
-  std::string label;                     // e.g. "R2=5 R3=4 L1=5 L2=6 L3=5"
-  std::vector<double> window_worst_deg;  // one per window, the same count for every point
-  double worst_deg;                      // the largest of them
-  bool holds;                            // every window under the threshold
-  bool first_window_passes;              // the paper's yaw criterion on the first window
-  bool best = false;                     // the holding combination with the least worst_deg
-  int learned = 0;                       // how many learned answers are this combination
+  std::string label;  // e.g. "R2=5 R3=4 L1=5 L2=6 L3=5"
+  // One per window walked, as the landscape judges it (with the reflex, its effort too); a
+  // reflex landscape stops at the first window over the threshold, so counts may differ.
+  std::vector<double> window_worst_deg;
+  double worst_deg;          // the largest of them
+  bool holds;                // every window under the threshold
+  bool first_window_passes;  // the paper's yaw criterion on the first window
+  bool best = false;         // the holding combination with the least worst_deg
+  int learned = 0;           // how many learned answers are this combination
 };
 // title: the scenario, e.g. "hexapod, R1 disabled".
 FigureFiles plot_landscape(const std::vector<LandscapePoint>& points, std::string_view title,

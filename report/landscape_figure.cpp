@@ -14,6 +14,7 @@ FigureFiles draw_landscape(const experiments::Landscape& landscape,
   const experiments::LandscapeSpec& spec = landscape.spec;
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   const std::optional<std::size_t> best = experiments::best_combination(landscape);
+  const learning::Criterion criterion = learning::criterion(experiments::landscape_options(spec));
   std::vector<LandscapePoint> points;
   for (std::size_t i = 0; i < landscape.combinations.size(); ++i) {
     const experiments::CombinationMeasure& m = landscape.combinations[i];
@@ -22,7 +23,7 @@ FigureFiles draw_landscape(const experiments::Landscape& landscape,
                      m.worst_deg,
                      m.holds,
                      m.first_window_passes};
-    for (const sim::WindowMeasure& w : m.windows) p.window_worst_deg.push_back(w.worst_deg());
+    for (const sim::WindowMeasure& w : m.windows) p.window_worst_deg.push_back(criterion.error(w));
     p.best = best == i;
     p.learned = static_cast<int>(std::count(learned.begin(), learned.end(), m.periods));
     points.push_back(std::move(p));

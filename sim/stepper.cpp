@@ -49,6 +49,20 @@ Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline fa
   if (observer_ != nullptr) observer_->on_start(model_, state_);
 }
 
+Stepper Stepper::resume(const SimModel& model, const StepperCheckpoint& checkpoint,
+                        Observer* observer) {
+  return Stepper(model, checkpoint, observer, Resumed{});
+}
+
+Stepper::Stepper(const SimModel& model, const StepperCheckpoint& checkpoint, Observer* observer,
+                 Resumed)
+    : model_(model),
+      state_(copy_sim_state(model, checkpoint.state)),
+      observer_(observer),
+      record_(nullptr),
+      record_joints_(false),
+      walked_(checkpoint.walked) {}
+
 void Stepper::apply_due_faults() {
   FaultSchedule& schedule = state_.faults.schedule;
   const std::size_t first = schedule.applied().size();

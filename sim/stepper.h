@@ -92,6 +92,10 @@ class Stepper {
   // `observer` and `record` may be null and must outlive the stepper.
   Stepper(const SimModel& model, const StartSpec& start, FaultTimeline faults = {},
           Observer* observer = nullptr, WalkRecord* record = nullptr, bool record_joints = true);
+  // Goes on from `checkpoint` (of a stepper of the same model), as restore() on a new stepper
+  // but without making and warming up a start state first; nothing recorded.
+  static Stepper resume(const SimModel& model, const StepperCheckpoint& checkpoint,
+                        Observer* observer = nullptr);
 
   // Applies the faults due before this step, then one controller step with its physics
   // (sim_step), records it and shows it to the observer. Throws Interrupted when SIGINT or
@@ -130,6 +134,8 @@ class Stepper {
   const FaultSchedule& faults() const { return state_.faults.schedule; }
 
  private:
+  struct Resumed {};
+  Stepper(const SimModel& model, const StepperCheckpoint& checkpoint, Observer* observer, Resumed);
   void apply_due_faults();
   // Applies the physics of the faults that came from `first` on and shows them to the observer.
   void take_faults(std::size_t first);

@@ -72,8 +72,10 @@ ScenarioLandscape synthetic_scenario(const std::vector<std::size_t>& failed, boo
     }
     p.holds = true;
     for (double noise : kWindowNoiseDeg) {
-      p.yaw_deg.push_back(yaw + noise);
-      p.path_deg.push_back(kPathPerYaw * (yaw + noise));
+      sim::WindowMeasure w;
+      w.yaw_deg = yaw + noise;
+      w.path_deg = kPathPerYaw * (yaw + noise);
+      p.windows.push_back(w);
       const double worst = std::max(std::abs(yaw + noise), std::abs(kPathPerYaw * (yaw + noise)));
       p.worst_deg = std::max(p.worst_deg, worst);
       p.holds = p.holds && worst < learning::kDefaultThresholdDeg;
@@ -169,8 +171,8 @@ TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
     EXPECT_EQ(back.scenarios[i].holding(), data_.scenarios[i].holding());
     ASSERT_EQ(back.scenarios[i].points.size(), data_.scenarios[i].points.size());
     EXPECT_EQ(back.scenarios[i].points.back().periods, data_.scenarios[i].points.back().periods);
-    EXPECT_NEAR(back.scenarios[i].points.back().yaw_deg[2],
-                data_.scenarios[i].points.back().yaw_deg[2],
+    EXPECT_NEAR(back.scenarios[i].points.back().windows[2].yaw_deg,
+                data_.scenarios[i].points.back().windows[2].yaw_deg,
                 learning::kLandscapeAngleResolutionDeg);
   }
   EXPECT_GT(data_.find({kL2})->holding(), 0u);
@@ -190,14 +192,14 @@ TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
 }
 
 TEST(Learners, TheRepositoryDatasetsReadWhole) {
-  const LandscapeDataset q =
-      learning::read_landscape_dataset(learning::repository_dataset(robot::RobotKind::quadruped));
+  const LandscapeDataset q = learning::read_landscape_dataset(
+      learning::repository_dataset(robot::RobotKind::quadruped, false));
   EXPECT_EQ(q.scenarios.size(), 14u);  // every loss of one, two or three legs
   EXPECT_EQ(q.windows, 6);
   EXPECT_EQ(q.find({3})->points.size(), 125u);  // L2
   EXPECT_EQ(q.find({3})->holding(), 2u);        // docs/learning.md "The landscape"
-  const LandscapeDataset h =
-      learning::read_landscape_dataset(learning::repository_dataset(robot::RobotKind::hexapod));
+  const LandscapeDataset h = learning::read_landscape_dataset(
+      learning::repository_dataset(robot::RobotKind::hexapod, false));
   EXPECT_GE(h.scenarios.size(), 35u);  // the two- and three-leg losses at least
   for (const ScenarioLandscape& s : h.scenarios) {
     const std::size_t working = 6 - s.failed.size();
@@ -283,20 +285,22 @@ TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
   for (const char* seen : {"L2", "R2"}) {
     LearnerChoice c = choice("prior");
     c.options["scenarios"] = {"R1", seen};
-    EXPECT_THROW(
-        learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped, {kL2}),
-        BadInput)
+    EXPECT_THROW(learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped,
+                                         {kL2}, learning::kPeriodsAloneCriterion),
+                 BadInput)
         << seen;
   }
   LearnerChoice fine = choice("prior");
   fine.options["scenarios"] = {"R1", "L1"};
-  EXPECT_NO_THROW(
-      learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped, {kL2}));
+  EXPECT_NO_THROW(learning::check_learner(learning::resolve_learner(fine),
+                                          robot::RobotKind::quadruped, {kL2},
+                                          learning::kPeriodsAloneCriterion));
   LearnerChoice missing = choice("prior");
   missing.options["dataset"] = dir_ + "/nothing-here";
-  EXPECT_THROW(learning::check_learner(learning::resolve_learner(missing),
-                                       robot::RobotKind::quadruped, {kL2}),
-               BadInput);
+  EXPECT_THROW(
+      learning::check_learner(learning::resolve_learner(missing), robot::RobotKind::quadruped,
+                              {kL2}, learning::kPeriodsAloneCriterion),
+      BadInput);
 }
 
 TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
@@ -310,10 +314,12 @@ TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
   setup.search = search(60);
   const learning::SearchSpace space(setup);
   const learning::AdditiveModelParams params{1.5, 8.0, 4.0, 2.0};
-  std::vector<std::vector<double>> prior_mean(2, std::vector<double>(space.size()));
+  std::vector<std::vector<double>> prior_mean(learning::kOutputs,
+                                              std::vector<double>(space.size()));
   for (std::size_t c = 0; c < space.size(); ++c) {
-    prior_mean[0][c] = 0.1 * static_cast<double>(c % 7);
-    prior_mean[1][c] = -0.2 * static_cast<double>(c % 5);
+    prior_mean[learning::kYaw][c] = 0.1 * static_cast<double>(c % 7);
+    prior_mean[learning::kPath][c] = -0.2 * static_cast<double>(c % 5);
+    prior_mean[learning::kEffort][c] = 0.3 * static_cast<double>(c % 3);
   }
   learning::AdditiveModel model(space, params, prior_mean);
   const auto kernel = [&](std::size_t a, std::size_t b) {
@@ -330,35 +336,39 @@ TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
   };
   // Windows of a few combinations, one of them three times.
   const std::vector<std::size_t> seen{0, 7, 7, 7, 31, 64, 100, 124, 55};
-  std::vector<double> yaw, path;
+  std::vector<learning::WindowOutputs> windows;
   for (std::size_t n = 0; n < seen.size(); ++n) {
-    yaw.push_back(3.0 * std::sin(static_cast<double>(n)) + static_cast<double>(seen[n] % 11));
-    path.push_back(0.5 * yaw.back() - 1.0);
-    model.observe(seen[n], yaw.back(), path.back());
+    const double yaw = 3.0 * std::sin(static_cast<double>(n)) + static_cast<double>(seen[n] % 11);
+    windows.push_back({yaw, 0.5 * yaw - 1.0, 2.0 + std::cos(static_cast<double>(n))});
+    model.observe(seen[n], windows.back());
   }
   const auto n = static_cast<Eigen::Index>(seen.size());
   Eigen::MatrixXd gram(n, n);
-  Eigen::MatrixXd residual(n, 2);
+  Eigen::MatrixXd residual(n, static_cast<Eigen::Index>(learning::kOutputs));
   for (Eigen::Index i = 0; i < n; ++i) {
     const std::size_t ci = seen[static_cast<std::size_t>(i)];
     for (Eigen::Index j = 0; j < n; ++j) gram(i, j) = kernel(ci, seen[static_cast<std::size_t>(j)]);
     gram(i, i) += params.noise_deg * params.noise_deg;
-    residual(i, 0) = yaw[static_cast<std::size_t>(i)] - prior_mean[0][ci];
-    residual(i, 1) = path[static_cast<std::size_t>(i)] - prior_mean[1][ci];
+    for (std::size_t o = 0; o < learning::kOutputs; ++o) {
+      residual(i, static_cast<Eigen::Index>(o)) =
+          windows[static_cast<std::size_t>(i)][o] - prior_mean[o][ci];
+    }
   }
   const Eigen::LDLT<Eigen::MatrixXd> solve(gram);
   const Eigen::MatrixXd alpha = solve.solve(residual);
-  std::vector<learning::Prediction> yaw_pred, path_pred;
-  model.predict(yaw_pred, path_pred);
-  ASSERT_EQ(yaw_pred.size(), space.size());
+  learning::Predictions predicted;
+  model.predict(predicted);
+  ASSERT_EQ(predicted[learning::kYaw].size(), space.size());
   for (std::size_t c = 0; c < space.size(); ++c) {
     Eigen::VectorXd k(n);
     for (Eigen::Index i = 0; i < n; ++i) k(i) = kernel(c, seen[static_cast<std::size_t>(i)]);
     const double var = kernel(c, c) - k.dot(solve.solve(k));
-    EXPECT_NEAR(yaw_pred[c].mean, prior_mean[0][c] + k.dot(alpha.col(0)), 1e-9) << c;
-    EXPECT_NEAR(path_pred[c].mean, prior_mean[1][c] + k.dot(alpha.col(1)), 1e-9) << c;
-    EXPECT_NEAR(yaw_pred[c].sd, std::sqrt(var), 1e-9) << c;
-    EXPECT_EQ(path_pred[c].sd, yaw_pred[c].sd) << c;
+    for (std::size_t o = 0; o < learning::kOutputs; ++o) {
+      EXPECT_NEAR(predicted[o][c].mean,
+                  prior_mean[o][c] + k.dot(alpha.col(static_cast<Eigen::Index>(o))), 1e-9)
+          << c << " output " << o;
+      EXPECT_NEAR(predicted[o][c].sd, std::sqrt(var), 1e-9) << c;
+    }
   }
 }
 
@@ -372,7 +382,8 @@ TEST_F(Dataset, AWalkedReplayMeasuresTheLandscapesWindowsInTheirOrder) {
     const LandscapePoint& p = s.points[*s.find(periods)];
     double e = 0.0;
     for (int w = 0; w < walked.hold_windows; ++w) {
-      e = std::max(e, p.window_error(static_cast<std::size_t>(w), false));
+      e = std::max(e,
+                   learning::kPeriodsAloneCriterion.error(p.windows[static_cast<std::size_t>(w)]));
       if (!sim::holds(e, learning::kDefaultThresholdDeg)) break;
     }
     return e;

@@ -118,6 +118,46 @@ TEST(LearningSim, ALiveTrialWalksTheLandscapesWindowsWhateverCameBefore) {
   }
 }
 
+// A landscape walked with the reflex (experiments/landscape.h) starts where a default robust run
+// starts learning, from one saved state, and judges each combination as that run judges its
+// first trial: the run's first trial is the landscape's row, to the last bit.
+TEST(LearningSim, AReflexLandscapeRowIsTheLiveRunsFirstTrial) {
+  const robot::Morphology& morph = hexapod().controller.morphology;
+  const std::vector<std::size_t> lost = {robot::leg_index(morph, "R1"),
+                                         robot::leg_index(morph, "R3")};
+  experiments::RunSpec spec;
+  learning::CompensationOptions& o = spec.learning.emplace();  // robust, reflex: the default
+  o.learner = learning::resolve_learner({"random", nlohmann::json::object()});
+  o.seed = 4;
+  o.annealing.max_trials = 2;
+  o.max_episodes = 1;
+  o.monitor_windows = 1;
+  spec.start = experiments::learning_start(o.mode);
+  spec.faults = sim::fail_at(lost, 0);
+  experiments::validate(spec);
+  const auto run = experiments::run_learning(hexapod(), spec);
+  ASSERT_EQ(run.result.episodes.size(), 1u) << "R1+R3 deviates with the reflex alone";
+  ASSERT_GE(run.result.trace.size(), 1u);
+
+  experiments::LandscapeSpec landscape;
+  landscape.disabled = lost;
+  landscape.steering = learning::Steering::reflex;
+  const experiments::LandscapeStart start = experiments::walk_landscape_start(hexapod(), landscape);
+  ASSERT_FALSE(start.windows.empty());
+  EXPECT_EQ(start.body.walked, *run.result.detection_step);
+  EXPECT_EQ(learning::robust_deviation(o, start.windows.back()), run.result.initial_deviation_deg);
+  const learning::TrialRecord& first = run.result.trace.front();
+  const experiments::CombinationMeasure row =
+      experiments::measure_from_start(hexapod(), landscape, start, first.periods);
+  double e = 0.0;  // the first hold_windows windows, stopping at the first over, as the run
+  for (std::size_t w = 0; w < row.windows.size() && w < static_cast<std::size_t>(o.hold_windows);
+       ++w) {
+    e = std::max(e, learning::robust_deviation(o, row.windows[w]));
+    if (!sim::holds(e, o.annealing.threshold_deg)) break;
+  }
+  EXPECT_EQ(e, first.deviation_deg);
+}
+
 // Equal robots share one model while a user holds it; another kind or option makes another, and
 // a model no one holds is let go (experiments/run_robot.h).
 TEST(ModelCache, EqualRobotsShareOneModel) {

@@ -1,6 +1,7 @@
 # The landscape of one leg-failure scenario. Every combination of working-leg periods,
-# sorted by its worst deviation (the largest |yaw change| or |path angle| over its windows); the
-# grey dots are each window's own worst deviation, the dashed line the threshold. A combination
+# sorted by its worst deviation (the largest |yaw change| or |path angle| over its windows, with the
+# steering reflex its effort too); the grey dots are each window's own worst deviation (NaN for a
+# window not walked after one over the threshold), the dashed line the threshold. A combination
 # holds when its curve point is under the line. The green diamond is the best holding
 # combination, red circles the combinations learning answered.
 # Variables: data (rank, worst_deg, holds, first_window_passes, best, learned, label, then one

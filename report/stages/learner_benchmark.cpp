@@ -46,7 +46,8 @@ std::string best_text(const std::map<int, nlohmann::json>& best) {
 }  // namespace
 
 Section learner_benchmark_stage(const StageContext& ctx) {
-  const std::filesystem::path dataset = learning::repository_dataset(robot::RobotKind::hexapod);
+  const std::filesystem::path dataset =
+      learning::repository_dataset(robot::RobotKind::hexapod, false);
   Table table{{{"learner", Align::left},
                {"trial windows"},
                {"held within " + std::to_string(experiments::kDefaultBenchmarkBudget) +
