@@ -113,7 +113,7 @@ void register_cpg(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--uncontrolled", opts->uncontrolled, "no chaos control: both CPGs chaotic");
   cmd->add_option("--steps", opts->steps, "steps to run")
-      ->check(in(sim::kRunStepsLimits))
+      ->check(in(body::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--csv", opts->csv, "write step,master_x1,master_x2,client_x1,client_x2");
   cmd->callback([opts] { run_cpg(*opts); });

@@ -78,10 +78,10 @@ void register_gait(CLI::App& app) {
   cmd->add_option("--period", opts->period, "CPG period: 1 (stop), 4, 5, 6, 8 or 9")
       ->capture_default_str();
   cmd->add_option("--steps", opts->steps, "steps to show")
-      ->check(in(sim::kRunStepsLimits))
+      ->check(in(body::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--warmup", opts->warmup, "steps run first, so the CPG locks and delays fill")
-      ->check(in(sim::kStepLimits))
+      ->check(in(body::kStepLimits))
       ->capture_default_str();
   cmd->add_option("--disable", opts->disable, "legs holding the disabled posture, e.g. R1,L2");
   cmd->add_option("--csv", opts->csv, "write step,<leg>... with 1 = swing, 0 = stance");

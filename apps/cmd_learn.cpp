@@ -15,6 +15,7 @@
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
+#include "body/fault_spec.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/learning_run.h"
@@ -22,7 +23,6 @@
 #include "experiments/scenarios.h"
 #include "learning/learners.h"
 #include "robot/leg_sets.h"
-#include "sim/fault_spec.h"
 #include "sim/record_csv.h"
 
 namespace multicpg::apps {
@@ -62,7 +62,7 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearnerCho
 void print_learning(const experiments::RunSpec& spec, const learning::LearningResult& r) {
   print_learning_header(std::cout, spec, r.settle_steps);
   LearningTable table(std::cout, spec);
-  for (const sim::Event& e : result_events(r)) table.event(e);
+  for (const body::Event& e : result_events(r)) table.event(e);
   print_learning_end(std::cout, spec, r);
 }
 

@@ -88,7 +88,7 @@ void register_render(CLI::App& app) {
   add_replay_flag(*cmd, o->replay);
   add_walk_flags(*cmd, o->run);
   CLI::Option* steps = cmd->add_option("--steps", o->steps, "steps to walk (without --learn)")
-                           ->check(in(sim::kRunStepsLimits))
+                           ->check(in(body::kRunStepsLimits))
                            ->capture_default_str();
   CLI::Option* learn =
       cmd->add_flag("--learn", o->learn, "film a learning run (needs --disable) instead of a walk")

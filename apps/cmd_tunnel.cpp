@@ -52,7 +52,7 @@ void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& 
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   const hw::HardwareTunnel t = hw::tunnel_on_hardware(
       spec, setup, o.max_steps, spec.robot.sim.scene.tunnel_length, stopped_record(o.json, ""));
-  const std::vector<std::size_t> disabled = sim::failed_after(morph, spec.faults);
+  const std::vector<std::size_t> disabled = body::failed_after(morph, spec.faults);
   const auto optional = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
   if (o.json) {
     nlohmann::json j{{"passed", optional(t.passed)},
@@ -199,7 +199,7 @@ void register_tunnel(CLI::App& app) {
   add_learning_flags(*cmd, o->run.learning);
   require_for_options_from(*cmd, learning_flags, learn);
   cmd->add_option("--max-steps", o->max_steps, "steps before giving up")
-      ->check(in(sim::kRunStepsLimits))
+      ->check(in(body::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--video", o->video, "also film the run to FILE.mp4");
   add_replay_flag(*cmd, o->replay);

@@ -27,7 +27,7 @@ void run_view(const ViewOptions& o, bool steps_given) {
   spec.start = run.start;
   spec.faults = run.faults;
   if (steps_given) {
-    for (const sim::Fault& f : spec.faults) {
+    for (const body::Fault& f : spec.faults) {
       if (f.step >= o.steps) {
         throw BadInput(std::string(f.recover ? "--recover" : "--disable-at") + " must be in 0.." +
                        std::to_string(o.steps - 1) + ", got " + std::to_string(f.step));
@@ -51,7 +51,7 @@ void register_view(CLI::App& app) {
   add_walk_flags(*cmd, opts->run);
   add_body_flags(*cmd, opts->run.body);
   CLI::Option* steps = cmd->add_option("--steps", opts->steps, "quit after this many steps")
-                           ->check(in(sim::kRunStepsLimits));
+                           ->check(in(body::kRunStepsLimits));
   cmd->callback([opts, steps] { run_view(*opts, steps->count() > 0); });
 }
 

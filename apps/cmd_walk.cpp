@@ -15,14 +15,14 @@
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
+#include "body/course_json.h"
+#include "body/fault_spec.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "experiments/run_json.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
-#include "sim/course_json.h"
-#include "sim/fault_spec.h"
 #include "sim/record_csv.h"
 #include "sim/walk.h"
 
@@ -55,14 +55,14 @@ nlohmann::json to_json(const Run& run, const sim::WalkResult& result) {
   const robot::Morphology& morph = *run.morph;
   const nlohmann::json periods = robot::period_map_json(morph, run.spec.start.periods);
   nlohmann::json faults = nlohmann::json::array();
-  for (const sim::Fault& f : run.spec.faults) {
+  for (const body::Fault& f : run.spec.faults) {
     // A fault's one shape (sim/course_json.h), its legs named as --disable names them.
     nlohmann::json fault = f;
     fault["legs"] = robot::leg_set_name(morph, f.legs);
     faults.push_back(fault);
   }
   nlohmann::json windows = nlohmann::json::array();
-  for (const sim::WindowMeasure& m : result.windows) {
+  for (const body::WindowMeasure& m : result.windows) {
     windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
   }
   return {{"robot", morph.name},
@@ -98,8 +98,8 @@ void print_summary(std::ostream& out, const Run& run, const sim::WalkResult& r) 
   }
   out << (s.start.warmup > 0 ? " (warmed-up controller)" : " (cold controller)") << "\nfaults: ";
   if (s.faults.empty()) out << "none";
-  for (const sim::Fault& f : s.faults) {
-    out << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << " at step "
+  for (const body::Fault& f : s.faults) {
+    out << body::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << " at step "
         << f.step << "  ";
   }
   out << "\n";
@@ -140,7 +140,7 @@ void run_walk_on_hardware(const WalkOptions& o, const experiments::RunSpec& spec
   if (csv) csv->commit();
   const bool path = setup.file.senses_position();
   nlohmann::json windows = nlohmann::json::array();
-  for (const sim::WindowMeasure& m : w.windows) {
+  for (const body::WindowMeasure& m : w.windows) {
     windows.push_back({{"yaw_deg", m.yaw_deg},
                        {"path_deg", path ? nlohmann::json(m.path_deg) : nlohmann::json()}});
   }
@@ -239,10 +239,10 @@ void register_walk(CLI::App& app) {
   cmd->add_option("--settle", opts->settle,
                   "steps walked before measuring (delay lines fill after 126 steps for the "
                   "hexapod; p = 4 CPGs lock after about 740)")
-      ->check(in(sim::kStepLimits))
+      ->check(in(body::kStepLimits))
       ->capture_default_str();
   cmd->add_option("--steps", opts->steps, "controller steps measured")
-      ->check(in(sim::kRunStepsLimits))
+      ->check(in(body::kRunStepsLimits))
       ->capture_default_str();
   cmd->add_option("--window", opts->window, "steps per yaw-deviation window (paper §4: 400)")
       ->check(in(learning::kWindowStepsLimits))

@@ -5,12 +5,12 @@
 #include <ostream>
 #include <sstream>
 
+#include "body/fault_spec.h"
 #include "experiments/run_json.h"
 #include "learning/learners.h"
 #include "robot/body_models.h"
 #include "robot/leg_sets.h"
 #include "robot/terrain.h"
-#include "sim/fault_spec.h"
 
 namespace multicpg::apps {
 namespace {
@@ -68,7 +68,7 @@ void print_best_trial(std::ostream& out, const experiments::RunSpec& spec,
       [](const auto& a, const auto& b) { return a.deviation_deg < b.deviation_deg; });
   out << "best trial measured: " << (best - r.trace.begin()) + 1 << ", "
       << robot::period_map_text(experiments::morphology(spec.robot), best->periods,
-                                sim::failing_legs(spec.faults))
+                                body::failing_legs(spec.faults))
       << ", E " << degrees(best->deviation_deg) << "\n";
 }
 
@@ -100,8 +100,8 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
         << counted(options.hold_windows, "window") << " to hold)";
   }
   out << ", faults";
-  for (const sim::Fault& f : spec.faults) {
-    out << " " << sim::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
+  for (const body::Fault& f : spec.faults) {
+    out << " " << body::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
         << f.step;
   }
   if (options.learner.name != learning::kDefaultLearner)
@@ -116,26 +116,26 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
 }
 
 LearningTable::LearningTable(std::ostream& out, const experiments::RunSpec& spec)
-    : out_(out), spec_(spec), disabled_(sim::failing_legs(spec.faults)) {}
+    : out_(out), spec_(spec), disabled_(body::failing_legs(spec.faults)) {}
 
-void LearningTable::event(const sim::Event& e) {
+void LearningTable::event(const body::Event& e) {
   const robot::Morphology& morph = experiments::morphology(spec_.robot);
   const double threshold = spec_.learning->annealing.threshold_deg;
   switch (e.kind) {
-    case sim::EventKind::fault:
-    case sim::EventKind::recovery:
+    case body::EventKind::fault:
+    case body::EventKind::recovery:
       if (e.fault) {
-        out_ << "-- step " << e.step << ": " << sim::malfunction_text(morph, *e.fault)
+        out_ << "-- step " << e.step << ": " << body::malfunction_text(morph, *e.fault)
              << (e.fault->recover ? " recovers" : " fails") << std::endl;
       }
       return;
-    case sim::EventKind::detection:
+    case body::EventKind::detection:
       out_ << "-- episode " << e.episode << ": the window ending at step " << e.step << " deviated "
            << degrees(e.deviation_deg) << " (threshold " << degrees(threshold)
            << "): CPGs desynchronised, learning starts" << std::endl;
       row(out_, "start", e.periods, disabled_, e.deviation_deg, "C0, the periods it deviated with");
       return;
-    case sim::EventKind::trial_end: {
+    case body::EventKind::trial_end: {
       ++trials_;
       std::ostringstream decision;
       decision << (e.accepted ? "kept" : "rejected");
@@ -145,13 +145,13 @@ void LearningTable::event(const sim::Event& e) {
       row(out_, std::to_string(trials_), e.periods, disabled_, e.deviation_deg, decision.str());
       return;
     }
-    case sim::EventKind::episode_end:
+    case body::EventKind::episode_end:
       out_ << "-- episode " << e.episode << " ended after " << counted(e.trial, "trial") << ": "
            << (e.accepted ? "held under " + degrees(threshold) : "not held") << "; walks on with "
            << robot::period_map_text(morph, e.periods, disabled_) << " (E "
            << degrees(e.deviation_deg) << ")" << std::endl;
       return;
-    case sim::EventKind::trial_start:
+    case body::EventKind::trial_start:
       return;
   }
 }
@@ -168,29 +168,29 @@ void LearningStream::on_step(const sim::SimModel& /*model*/, const sim::SimState
 }
 
 void LearningStream::on_event(const sim::SimModel& /*model*/, const sim::SimState& /*state*/,
-                              const sim::Event& event) {
+                              const body::Event& event) {
   switch (event.kind) {
-    case sim::EventKind::trial_start:
+    case body::EventKind::trial_start:
       doing_ = "walking trial " + std::to_string(table_.trials() + 1);
       break;
-    case sim::EventKind::episode_end:
+    case body::EventKind::episode_end:
       doing_ = "walking on, watching for a deviation";
       break;
     default:
       break;
   }
   table_.event(event);
-  if (event.kind != sim::EventKind::trial_start) last_line_ = steps_;
+  if (event.kind != body::EventKind::trial_start) last_line_ = steps_;
 }
 
-std::vector<sim::Event> result_events(const learning::LearningResult& r) {
-  std::vector<sim::Event> events;
+std::vector<body::Event> result_events(const learning::LearningResult& r) {
+  std::vector<body::Event> events;
   learning::Periods before(r.periods.size(), learning::kStartPeriod);
   std::size_t next = 0;
   for (std::size_t i = 0; i < r.episodes.size(); ++i) {
     const learning::Episode& episode = r.episodes[i];
     const int number = static_cast<int>(i) + 1;
-    sim::Event detected = learning::detection_event(number, episode.detection_deg, before);
+    body::Event detected = learning::detection_event(number, episode.detection_deg, before);
     detected.step = episode.detection_step;
     events.push_back(std::move(detected));
     for (int k = 0; k < episode.trials && next < r.trace.size(); ++k, ++next) {
@@ -206,7 +206,7 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
                         const learning::LearningResult& r) {
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   const learning::CompensationOptions& options = *spec.learning;
-  const std::vector<std::size_t> failing = sim::failing_legs(spec.faults);
+  const std::vector<std::size_t> failing = body::failing_legs(spec.faults);
   const double threshold = options.annealing.threshold_deg;
   const bool robust = r.mode == learning::Mode::robust;
   const bool reflex = robust && options.steering == learning::Steering::reflex;
@@ -232,7 +232,7 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
     out << "  window  yaw change  path angle" << (reflex ? "  reflex effort" : "")
         << "         E\n";
     for (std::size_t i = 0; i < r.final_windows.size(); ++i) {
-      const sim::WindowMeasure& m = r.final_windows[i];
+      const body::WindowMeasure& m = r.final_windows[i];
       out << std::setw(8) << i + 1 << std::setw(12) << degrees(m.yaw_deg) << std::setw(12)
           << degrees(m.path_deg);
       if (reflex) out << std::setw(15) << number(m.steering_effort);

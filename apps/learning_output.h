@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "body/events.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
-#include "sim/events.h"
 #include "sim/stepper.h"
 
 namespace multicpg::apps {
@@ -41,7 +41,7 @@ class LearningTable {
  public:
   LearningTable(std::ostream& out, const experiments::RunSpec& spec);
   // A detection, trial_end or episode_end prints its line; others print nothing.
-  void event(const sim::Event& event);
+  void event(const body::Event& event);
   int trials() const { return trials_; }
 
  private:
@@ -58,7 +58,7 @@ class LearningStream final : public sim::Observer {
   LearningStream(std::ostream& out, std::ostream& progress, const experiments::RunSpec& spec);
   void on_step(const sim::SimModel& model, const sim::SimState& state) override;
   void on_event(const sim::SimModel& model, const sim::SimState& state,
-                const sim::Event& event) override;
+                const body::Event& event) override;
 
  private:
   LearningTable table_;
@@ -70,7 +70,7 @@ class LearningStream final : public sim::Observer {
 
 // The events a run's result holds (detections, trials, episode ends), for printing a run whose
 // events were not streamed (hardware).
-std::vector<sim::Event> result_events(const learning::LearningResult& result);
+std::vector<body::Event> result_events(const learning::LearningResult& result);
 
 // After the table: the episodes, the windows after learning, the outcome and what its numbers
 // are, and, where the reflex did the work or nothing was learned, how to see period learning.

@@ -6,22 +6,22 @@
 #include "apps/flag_checks.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
+#include "body/fault_spec.h"
 #include "common/errors.h"
 #include "robot/leg_sets.h"
-#include "sim/fault_spec.h"
 #include "sim/walk.h"
 
 namespace multicpg::apps {
 namespace {
 
 // The fault timeline of --disable/--disable-at, --fault and --recover, in step order.
-sim::FaultTimeline parse_faults(const robot::Morphology& morph, const RunFlags& f) {
-  sim::FaultTimeline faults =
-      sim::fail_at(parse_leg_flag(morph, f.disable, "--disable"), f.disable_at);
+body::FaultTimeline parse_faults(const robot::Morphology& morph, const RunFlags& f) {
+  body::FaultTimeline faults =
+      body::fail_at(parse_leg_flag(morph, f.disable, "--disable"), f.disable_at);
   const auto add = [&](const std::vector<std::string>& texts, bool recover) {
     for (const std::string& text : texts) {
       try {
-        faults.push_back(sim::parse_fault(morph, text, recover));
+        faults.push_back(body::parse_fault(morph, text, recover));
       } catch (const BadInput& e) {
         throw BadInput(std::string(recover ? "--recover" : "--fault") + ": " + e.what());
       }
@@ -29,7 +29,7 @@ sim::FaultTimeline parse_faults(const robot::Morphology& morph, const RunFlags& 
   };
   add(f.faults, false);
   add(f.recoveries, true);
-  sim::sort_timeline(faults);
+  body::sort_timeline(faults);
   return faults;
 }
 
@@ -65,7 +65,7 @@ void add_start_flags(CLI::App& cmd, RunFlags& f) {
       cmd.add_option("--warmup", f.warmup,
                      "controller steps run before the robot moves, so it starts walking with "
                      "locked CPGs and full delay lines")
-          ->check(in(sim::kStepLimits))
+          ->check(in(body::kStepLimits))
           ->capture_default_str();
   // Flags that contradict one another or do nothing alone are refused, never silently ignored.
   cmd.add_flag("--cold", f.cold, "start from a cold controller (no warm-up, as --warmup 0)")
@@ -76,7 +76,7 @@ void add_fault_flags(CLI::App& cmd, RunFlags& f) {
   CLI::Option* disable = cmd.add_option("--disable", f.disable, "legs that fail, e.g. R1,R3");
   cmd.add_option("--disable-at", f.disable_at,
                  "controller step (from 0) at which the legs of --disable fail")
-      ->check(in(sim::kStepLimits))
+      ->check(in(body::kStepLimits))
       ->capture_default_str()
       ->needs(disable);
   cmd.add_option("--fault", f.faults,

@@ -18,7 +18,7 @@ namespace multicpg::apps {
 struct RunFlags {
   std::string robot = "hexapod";
   std::string periods = "4";
-  long warmup = sim::kControllerWarmup;
+  long warmup = body::kControllerWarmup;
   bool cold = false;
   std::string disable;
   long disable_at = 0;

@@ -16,7 +16,7 @@ constexpr long kSteps = 10'000;
 sim::WalkSpec walk_spec(sim::Observer* observer) {
   sim::WalkSpec spec;
   spec.steps = kSteps;
-  spec.faults = sim::fail_at({0}, 0);
+  spec.faults = body::fail_at({0}, 0);
   spec.keep_record = false;
   spec.observer = observer;
   return spec;

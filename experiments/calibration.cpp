@@ -107,7 +107,7 @@ TunnelNumbers walk_tunnel(const sim::SimModel& corridor, const Scenario1& sc, lo
   t.max_steps = max_steps;
   t.start.periods = sc.periods;
   t.start.warmup = warmup;
-  t.faults = sim::fail_at(sc.disabled, 0);
+  t.faults = body::fail_at(sc.disabled, 0);
   const TunnelRun run = run_tunnel(corridor, t);
   return {run.deviation_deg, run.passed, run.touched_wall, run.steps, run.forward_m, run.lateral_m};
 }
@@ -301,7 +301,7 @@ CandidateNumbers measure_candidate(const CalibrationSpec& spec, const robot::Bod
       walk.steps = kIntactSteps;
       walk.record = false;
       const sim::WalkResult r = sim::walk(open, walk);
-      for (const sim::WindowMeasure& m : r.windows) n.intact_yaw_deg.push_back(m.yaw_deg);
+      for (const body::WindowMeasure& m : r.windows) n.intact_yaw_deg.push_back(m.yaw_deg);
       n.intact_speed_m_s.push_back(r.speed_m_s);
     }
     candidate.sim.scene.tunnel = true;

@@ -59,7 +59,7 @@ inline constexpr long kIntactSteps = 1200;
 // tripod walks at any setting of the probe (9.97 cm/s at foot friction 0.4), rounded up.
 inline constexpr Limits<double> kPlausibleSpeedMS{0.04, 0.10};
 // Perturbed starts: the tunnel runs and the intact walk are scored as the mean over these
-// controller warm-ups (sim::kControllerWarmup and half a tripod cycle of 36 steps later, so the
+// controller warm-ups (body::kControllerWarmup and half a tripod cycle of 36 steps later, so the
 // other tripod leads), so that a
 // candidate is not chosen for the ~2° a single deterministic run varies with irrelevant changes.
 inline const std::vector<long> kDefaultCalibrationWarmups{1000, 1018};

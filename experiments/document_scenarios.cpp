@@ -2,14 +2,14 @@
 
 #include <algorithm>
 
+#include "body/course_json.h"
+#include "body/fault_spec.h"
 #include "common/errors.h"
 #include "common/limits.h"
 #include "experiments/document_schema.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
 #include "robot/leg_sets.h"
-#include "sim/course_json.h"
-#include "sim/fault_spec.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -42,7 +42,7 @@ robot::LegSet parse_legs(const robot::Morphology& morph, const json& legs,
 
 // One fault of a timeline table: {step, legs, recover} and, for kinds other than a whole leg,
 // {kind, joint, value} (sim/faults.h; the yaw sensor's kinds name no legs).
-sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const std::string& path) {
+body::Fault timeline_fault(const robot::Morphology& morph, const json& f, const std::string& path) {
   if (!f.is_object()) throw OptionError(path, "must be a table {step, legs, recover, kind, ...}");
   const json defaults{{"step", 0},  {"legs", json::array()}, {"recover", false},
                       {"kind", ""}, {"joint", ""},           {"value", 0.0}};
@@ -56,15 +56,15 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
       check_type(item.value(), defaults.at(item.key()), child(path, item.key()));
     }
   }
-  sim::Fault fault;
+  body::Fault fault;
   fault.step = f.value("step", 0L);
-  require_in(child(path, "step"), fault.step, Limits<long>{0, sim::kMaxSteps});
+  require_in(child(path, "step"), fault.step, Limits<long>{0, body::kMaxSteps});
   fault.recover = f.value("recover", false);
   try {
     std::optional<double> value;
     if (f.contains("value")) value = f.at("value").get<double>();
     fault.kind =
-        sim::make_kind(f.value("kind", std::string(sim::LegFault::kName)), value, fault.recover);
+        body::make_kind(f.value("kind", std::string(body::LegFault::kName)), value, fault.recover);
   } catch (const BadInput& e) {
     throw OptionError(child(path, f.contains("value") ? "value" : "kind"), e.what());
   }
@@ -75,7 +75,7 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
       throw OptionError(child(path, "joint"), e.what());
     }
   }
-  if (sim::strikes(fault.kind) != sim::Strikes::sensor || f.contains("legs")) {
+  if (body::strikes(fault.kind) != body::Strikes::sensor || f.contains("legs")) {
     fault.legs = parse_legs(morph, f.value("legs", json()), child(path, "legs"));
   }
   return fault;
@@ -83,7 +83,7 @@ sim::Fault timeline_fault(const robot::Morphology& morph, const json& f, const s
 
 // A timeline fault as the resolved document records it: a fault's one shape (sim/course_json.h)
 // with its legs named, as the document names them.
-json timeline_fault_json(const robot::Morphology& morph, const sim::Fault& fault) {
+json timeline_fault_json(const robot::Morphology& morph, const body::Fault& fault) {
   json j = fault;
   j["legs"] = robot::leg_set_json(morph, fault.legs);
   return j;
@@ -118,12 +118,12 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
   }
   json faults = json::array();
   for (std::size_t i = 0; i < s.at("faults").size(); ++i) {
-    const sim::Fault fault = timeline_fault(morph, s.at("faults")[i], indexed(faults_path, i));
+    const body::Fault fault = timeline_fault(morph, s.at("faults")[i], indexed(faults_path, i));
     out.faults.push_back(fault);
     faults.push_back(timeline_fault_json(morph, fault));
   }
   try {
-    sim::validate(morph, out.faults);
+    body::validate(morph, out.faults);
   } catch (const BadInput& e) {
     throw OptionError(faults_path, e.what());
   }
@@ -136,23 +136,23 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
 // other fault by its text with ':' as '_', so it names a run file.
 ScenarioSpec fault_scenario(const robot::Morphology& morph, const json& text,
                             const std::string& path) {
-  sim::Fault fault;
+  body::Fault fault;
   try {
-    fault = sim::parse_malfunction(morph, text.get<std::string>(), false);
+    fault = body::parse_malfunction(morph, text.get<std::string>(), false);
   } catch (const BadInput& e) {
     throw OptionError(path, e.what());
   }
-  if (std::holds_alternative<sim::LegFault>(fault.kind) && !fault.joint) {
+  if (std::holds_alternative<body::LegFault>(fault.kind) && !fault.joint) {
     const std::vector<std::size_t> legs = parse_legs(morph, text, path);
     const std::string name = robot::leg_set_name(morph, legs);
     return {name, name, legs, std::nullopt, {}};
   }
   try {
-    sim::validate(morph, {fault});
+    body::validate(morph, {fault});
   } catch (const BadInput& e) {
     throw OptionError(path, e.what());
   }
-  const std::string spec = sim::malfunction_text(morph, fault);
+  const std::string spec = body::malfunction_text(morph, fault);
   std::string name = spec;
   std::replace(name.begin(), name.end(), ':', '_');
   return {name, spec, {}, fault, {}};

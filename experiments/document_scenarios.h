@@ -10,18 +10,18 @@
 #include <string>
 #include <vector>
 
+#include "body/events.h"
 #include "robot/morphology.h"
-#include "sim/events.h"
 
 namespace multicpg::experiments {
 
 struct ScenarioSpec {
   std::string name;
   nlohmann::json resolved;  // the name of a leg set or fault, or {name, faults} of a timeline
-  std::vector<std::size_t> disabled;      // a leg set that fails at the document's fail_step
-  std::optional<sim::Fault> malfunction;  // another fault that comes at the fail_step
-  sim::FaultTimeline faults;              // a timeline
-  std::string path = "scenarios";         // where the document gives it ("scenarios[2]")
+  std::vector<std::size_t> disabled;       // a leg set that fails at the document's fail_step
+  std::optional<body::Fault> malfunction;  // another fault that comes at the fail_step
+  body::FaultTimeline faults;              // a timeline
+  std::string path = "scenarios";          // where the document gives it ("scenarios[2]")
 };
 
 // The document's scenarios, in its order. Throws OptionError at the scenario's path

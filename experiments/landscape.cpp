@@ -59,7 +59,7 @@ nlohmann::json arguments(const LandscapeSpec& spec) {
                       {"windows", spec.windows},
                       {"window_steps", spec.window_steps},
                       {"threshold_deg", spec.threshold_deg},
-                      {"controller_warmup", sim::kControllerWarmup},
+                      {"controller_warmup", body::kControllerWarmup},
                       {"sim", spec.robot.sim}};
   // Only a reflex landscape names its walk, so landscapes walked before there was one resume.
   if (spec.steering == learning::Steering::reflex) {
@@ -72,7 +72,7 @@ nlohmann::json arguments(const LandscapeSpec& spec) {
   return args;
 }
 
-nlohmann::json window_json(const sim::WindowMeasure& w, learning::Steering steering) {
+nlohmann::json window_json(const body::WindowMeasure& w, learning::Steering steering) {
   nlohmann::json j{{"yaw_deg", w.yaw_deg},
                    {"path_deg", w.path_deg},
                    {"forward_m", w.forward_m},
@@ -119,7 +119,7 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
                                        long window_steps, double threshold_deg) {
   if (windows < 1) throw BadInput("windows must be at least 1, got " + std::to_string(windows));
   // A robot already walking on its remaining legs: locked controller, full delay lines.
-  sim::FaultTimeline faults;
+  body::FaultTimeline faults;
   if (!disabled.empty()) faults.push_back({0, disabled, false});
   sim::Stepper stepper(model, {}, std::move(faults));
   neural::ControllerState& controller = stepper.state().controller;
@@ -135,14 +135,14 @@ CombinationMeasure measure_combination(const sim::SimModel& model,
 
   m.holds = true;
   for (int w = 0; w < windows; ++w) {
-    const sim::Pose2 start = stepper.pose();
+    const body::Pose2 start = stepper.pose();
     stepper.steps(window_steps);
-    const sim::WindowMeasure window = sim::measure_window(start, stepper.pose());
+    const body::WindowMeasure window = body::measure_window(start, stepper.pose());
     m.worst_deg = std::max(m.worst_deg, window.worst_deg());
-    m.holds = m.holds && sim::holds(window.worst_deg(), threshold_deg);
+    m.holds = m.holds && body::holds(window.worst_deg(), threshold_deg);
     m.windows.push_back(window);
   }
-  m.first_window_passes = sim::holds(std::abs(m.windows.front().yaw_deg), threshold_deg);
+  m.first_window_passes = body::holds(std::abs(m.windows.front().yaw_deg), threshold_deg);
   return m;
 }
 
@@ -162,11 +162,11 @@ LandscapeStart walk_landscape_start(const sim::SimModel& model, const LandscapeS
     throw std::logic_error("walk_landscape_start: a landscape of periods alone has no start walk");
   }
   const learning::CompensationOptions options = landscape_options(spec);
-  sim::FaultTimeline faults;
+  body::FaultTimeline faults;
   if (!spec.disabled.empty()) faults.push_back({0, spec.disabled, false});
   sim::Stepper stepper(model, learning_start(options.mode), std::move(faults));
-  SimWalker walker(stepper);
-  learning::CourseWalk walk(walker, options);
+  sim::SimBody body(stepper);
+  learning::CourseWalk walk(body, options);
   LandscapeStart start;
   start.windows = learning::watch_until_deviation(walk, options);
   start.body = stepper.checkpoint();
@@ -179,8 +179,8 @@ CombinationMeasure measure_from_start(const sim::SimModel& model, const Landscap
                                       const learning::Periods& periods) {
   const learning::CompensationOptions options = landscape_options(spec);
   sim::Stepper stepper = sim::Stepper::resume(model, start.body);
-  SimWalker walker(stepper);
-  learning::CourseWalk walk(walker, options, start.walk);
+  sim::SimBody body(stepper);
+  learning::CourseWalk walk(body, options, start.walk);
   neural::set_synchronised(stepper.state().controller, false);  // paper §2.3, as a detection
   CombinationMeasure m;
   m.periods = periods;
@@ -189,8 +189,8 @@ CombinationMeasure measure_from_start(const sim::SimModel& model, const Landscap
   m.windows = trial.windows;
   m.worst_deg = trial.deviation_deg;
   m.holds = static_cast<int>(m.windows.size()) == spec.windows &&
-            sim::holds(m.worst_deg, spec.threshold_deg);
-  m.first_window_passes = sim::holds(std::abs(m.windows.front().yaw_deg), spec.threshold_deg);
+            body::holds(m.worst_deg, spec.threshold_deg);
+  m.first_window_passes = body::holds(std::abs(m.windows.front().yaw_deg), spec.threshold_deg);
   return m;
 }
 
@@ -226,7 +226,7 @@ std::string combination_key(const robot::Morphology& morph,
 nlohmann::json to_json(const CombinationMeasure& m, const robot::Morphology& morph,
                        learning::Steering steering) {
   nlohmann::json windows = nlohmann::json::array();
-  for (const sim::WindowMeasure& w : m.windows) windows.push_back(window_json(w, steering));
+  for (const body::WindowMeasure& w : m.windows) windows.push_back(window_json(w, steering));
   return {{"periods", robot::period_map_json(morph, m.periods)},
           {"settle_steps", m.settle_steps},
           {"windows", windows},
@@ -304,7 +304,7 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
       },
       runner);
 
-  Landscape landscape{spec, {}, start ? start->windows : std::vector<sim::WindowMeasure>{}};
+  Landscape landscape{spec, {}, start ? start->windows : std::vector<body::WindowMeasure>{}};
   for (const nlohmann::json& result : outcome.results) {
     landscape.combinations.push_back(combination_from_json(result, morph));
   }
@@ -432,7 +432,7 @@ nlohmann::json landscape_summary(const Landscape& landscape,
   nlohmann::json summary = arguments(spec);
   if (spec.steering == learning::Steering::reflex) {
     nlohmann::json start = nlohmann::json::array();
-    for (const sim::WindowMeasure& w : landscape.start_windows) {
+    for (const body::WindowMeasure& w : landscape.start_windows) {
       start.push_back(window_json(w, spec.steering));
     }
     summary["start_windows"] = start;

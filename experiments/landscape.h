@@ -18,13 +18,13 @@
 #include <string>
 #include <vector>
 
+#include "body/deviation.h"
 #include "common/limits.h"
 #include "experiments/run_robot.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "learning/course_walk.h"
 #include "learning/landscapes.h"
-#include "sim/deviation.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
 
@@ -58,7 +58,7 @@ struct CombinationMeasure {
   learning::Periods periods;  // every leg; disabled legs keep 4
   long settle_steps = 0;      // walked unmeasured after the periods were set
   // Every window walked; with the reflex, up to the first over the threshold.
-  std::vector<sim::WindowMeasure> windows;
+  std::vector<body::WindowMeasure> windows;
   // Largest window error: worst_deg() of the windows, with the reflex robust mode's E
   // (learning::robust_deviation: its effort too).
   double worst_deg = 0.0;
@@ -67,9 +67,9 @@ struct CombinationMeasure {
 };
 
 // Measures one combination: a sim::Stepper started with every leg at 4 and `disabled` failed
-// from the start, the controller warmed up (sim::kControllerWarmup steps); then `periods` set with
+// from the start, the controller warmed up (body::kControllerWarmup steps); then `periods` set with
 // every client free (as learning tries a candidate), learning::locked_settle_steps unmeasured,
-// and `windows` windows of `window_steps` steps, each measured by sim::measure_window.
+// and `windows` windows of `window_steps` steps, each measured by body::measure_window.
 CombinationMeasure measure_combination(const sim::SimModel& model,
                                        const std::vector<std::size_t>& disabled,
                                        const learning::Periods& periods, int windows,
@@ -86,7 +86,7 @@ struct LandscapeStart {
   learning::CourseWalkState walk;
   // The last one deviated (learning would start with it), or all monitor_windows held (the
   // reflex alone holds: a live run learns nothing).
-  std::vector<sim::WindowMeasure> windows;
+  std::vector<body::WindowMeasure> windows;
 };
 
 // The start of `spec`'s combinations (spec.steering must be reflex): a sim::Stepper started as a
@@ -118,7 +118,7 @@ struct Landscape {
   LandscapeSpec spec;
   std::vector<CombinationMeasure> combinations;  // in landscape_combinations order
   // With the reflex: the windows of its start (LandscapeStart::windows).
-  std::vector<sim::WindowMeasure> start_windows;
+  std::vector<body::WindowMeasure> start_windows;
 };
 
 // Index of the best combination: the one that holds with the smallest worst deviation (the

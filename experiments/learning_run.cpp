@@ -17,8 +17,8 @@ class TrialEnds final : public sim::Observer {
     if (next_ != nullptr) next_->on_step(model, state);
   }
   void on_event(const sim::SimModel& model, const sim::SimState& state,
-                const sim::Event& event) override {
-    if (event.kind == sim::EventKind::trial_end) ends.push_back(event.step);
+                const body::Event& event) override {
+    if (event.kind == body::EventKind::trial_end) ends.push_back(event.step);
     if (next_ != nullptr) next_->on_event(model, state, event);
   }
   std::vector<long> ends;
@@ -35,11 +35,11 @@ LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long a
   const learning::CompensationOptions& options = *spec.learning;
   LearningRun run;
   TrialEnds ends(observer);
-  sim::StartSpec start = spec.start;
+  body::StartSpec start = spec.start;
   start.seed = options.seed;  // a noisy sensor's draws follow the learning run's seed
   sim::Stepper stepper(model, start, spec.faults, &ends, spec.record.steps ? &run.record : nullptr);
-  SimWalker walker(stepper);
-  run.result = learning::compensate(walker, options);
+  sim::SimBody body(stepper);
+  run.result = learning::compensate(body, options);
   run.learning_end_step = stepper.step_count();
   if (run.result.steering) {
     // Walk on as the learner left the robot: its periods and its steering reflex.
@@ -51,10 +51,10 @@ LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long a
   }
   for (long walked = 0; walked < after_steps;) {
     const long n = std::min(options.window_steps, after_steps - walked);
-    const sim::Pose2 start = stepper.pose();
+    const body::Pose2 start = stepper.pose();
     stepper.steps(n);
     if (n == options.window_steps) {
-      run.after_windows.push_back(sim::measure_window(
+      run.after_windows.push_back(body::measure_window(
           start, stepper.pose(), learning::course_yaw_deg(run.result.steering)));
     }
     walked += n;

@@ -7,30 +7,11 @@
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "sim/sim.h"
+#include "sim/sim_body.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
 namespace multicpg::experiments {
-
-// learning::Walker over a sim::Stepper: the learner's events go to the stepper's observer.
-class SimWalker final : public learning::Walker {
- public:
-  explicit SimWalker(sim::Stepper& stepper) : stepper_(stepper) {}
-
-  void step() override { stepper_.step(); }
-  // What the robot senses: a faulty yaw sensor misleads the learner as it would a real robot.
-  sim::Pose2 pose() const override { return stepper_.sensed_pose(); }
-  long step_count() const override { return stepper_.step_count(); }
-  neural::ControllerState& controller() override { return stepper_.state().controller; }
-  const neural::ControllerModel& controller_model() const override {
-    return stepper_.model().controller;
-  }
-  const sim::FaultSchedule& faults() const override { return stepper_.faults(); }
-  void emit(const sim::Event& event) override { stepper_.emit(event); }
-
- private:
-  sim::Stepper& stepper_;
-};
 
 struct LearningRun {
   learning::LearningResult result;
@@ -39,7 +20,7 @@ struct LearningRun {
   long learning_end_step = 0;         // steps walked when learning stopped
   // Each complete window of the steps walked after learning (does the final
   // controller hold?), measured as robust mode does.
-  std::vector<sim::WindowMeasure> after_windows;
+  std::vector<body::WindowMeasure> after_windows;
   sim::SimState final_state;  // the robot at the end
 };
 

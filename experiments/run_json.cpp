@@ -1,22 +1,22 @@
 #include "experiments/run_json.h"
 
+#include "body/course_json.h"
+#include "body/fault_spec.h"
 #include "learning/json.h"
 #include "robot/leg_sets.h"
-#include "sim/course_json.h"
-#include "sim/fault_spec.h"
 
 namespace multicpg::experiments {
 
 nlohmann::json learning_record(const learning::CompensationOptions& options,
-                               const sim::FaultTimeline& faults) {
+                               const body::FaultTimeline& faults) {
   nlohmann::json j = options;
-  j.update(sim::faults_record(faults));
+  j.update(body::faults_record(faults));
   return j;
 }
 
 nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& result) {
   const robot::Morphology& morph = morphology(spec.robot);
-  nlohmann::json json = learning::to_json(result, morph, sim::failing_legs(spec.faults));
+  nlohmann::json json = learning::to_json(result, morph, body::failing_legs(spec.faults));
   json["robot"] = morph.name;
   json["disable_at"] = spec.faults.empty() ? 0L : spec.faults.front().step;
   json["options"] = learning_record(*spec.learning, spec.faults);
@@ -26,9 +26,9 @@ nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& r
 
 std::string other_faults_text(const RunSpec& spec) {
   std::string out;
-  for (const sim::Fault& f : spec.faults) {
-    if (std::holds_alternative<sim::LegFault>(f.kind) && !f.joint) continue;
-    out += (out.empty() ? "" : ", ") + sim::fault_text(morphology(spec.robot), f);
+  for (const body::Fault& f : spec.faults) {
+    if (std::holds_alternative<body::LegFault>(f.kind) && !f.joint) continue;
+    out += (out.empty() ? "" : ", ") + body::fault_text(morphology(spec.robot), f);
   }
   return out;
 }

@@ -15,7 +15,7 @@ namespace multicpg::experiments {
 // The learning options with the run's faults in the recorded form: one failure as `disabled`
 // (leg indices) and `fail_step`, any other timeline as `faults`.
 nlohmann::json learning_record(const learning::CompensationOptions& options,
-                               const sim::FaultTimeline& faults);
+                               const body::FaultTimeline& faults);
 
 // `learn --json`: learning::to_json of the result (failing legs named), with robot (and
 // robot_file), disable_at (the step of the first fault) and the options (learning_record).

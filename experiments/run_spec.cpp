@@ -9,8 +9,8 @@
 
 namespace multicpg::experiments {
 
-sim::StartSpec learning_start(learning::Mode mode) {
-  sim::StartSpec start;
+body::StartSpec learning_start(learning::Mode mode) {
+  body::StartSpec start;
   if (mode == learning::Mode::paper) start.warmup = 0;
   return start;
 }
@@ -27,9 +27,9 @@ void validate(const RunSpec& spec) {
   for (int p : periods) {
     if (!robot::is_gait_period(p)) throw OptionError("start.periods", robot::no_gait_message(p));
   }
-  require_in("start.warmup", spec.start.warmup, sim::kStepLimits);
+  require_in("start.warmup", spec.start.warmup, body::kStepLimits);
   try {
-    sim::validate(morph, spec.faults);
+    body::validate(morph, spec.faults);
   } catch (const OptionError&) {
     throw;
   } catch (const BadInput& e) {
@@ -42,7 +42,7 @@ void validate(const RunSpec& spec) {
     learning::validate_faults(*spec.learning, spec.faults);
     within("learner", [&] {
       learning::check_learner(spec.learning->learner, spec.robot.kind,
-                              sim::failing_legs(spec.faults), learning::criterion(*spec.learning));
+                              body::failing_legs(spec.faults), learning::criterion(*spec.learning));
     });
   });
   if (spec.faults.empty()) {

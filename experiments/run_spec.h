@@ -6,10 +6,10 @@
 
 #include <optional>
 
+#include "body/events.h"
 #include "experiments/run_robot.h"
 #include "learning/compensation.h"
 #include "robot/morphology.h"
-#include "sim/events.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
 
@@ -26,9 +26,9 @@ struct RecordSpec {
 };
 
 struct RunSpec {
-  RobotSpec robot;            // which robot, in which world (run_robot.h)
-  sim::StartSpec start;       // periods and warm-up
-  sim::FaultTimeline faults;  // what fails, and recovers, when
+  RobotSpec robot;             // which robot, in which world (run_robot.h)
+  body::StartSpec start;       // periods and warm-up
+  body::FaultTimeline faults;  // what fails, and recovers, when
   // How the robot learns to compensate; none = it walks as it started.
   std::optional<learning::CompensationOptions> learning;
   RecordSpec record;
@@ -37,7 +37,7 @@ struct RunSpec {
 // How a learning run starts: paper mode from a cold controller with every CPG reset, as the
 // authors' code did (docs/learning.md "Where the authors' code differs"); robust mode from a
 // running, locked one, as a robot that was walking when a leg failed.
-sim::StartSpec learning_start(learning::Mode mode);
+body::StartSpec learning_start(learning::Mode mode);
 
 // Throws OptionError naming the key of the first bad value: the robot's ("sim.control_dt",
 // "sim.model", validate(const RobotSpec&)), "start.periods", "start.warmup", "faults",

@@ -143,7 +143,7 @@ json run_params(const RunSpec& spec, const RunLabel& label) {
   json params{
       {"robot", robot::to_string(spec.robot.kind)},
       {"scenario", label.scenario},
-      {"disabled", robot::leg_set_json(morphology(spec.robot), sim::failing_legs(spec.faults))},
+      {"disabled", robot::leg_set_json(morphology(spec.robot), body::failing_legs(spec.faults))},
       {"grid", label.grid},
       {"learning", learning_record(*spec.learning, spec.faults)},
       {"sim", spec.robot.sim},
@@ -464,7 +464,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
                                        : names[a] + "=" + value_text(point[a]));
     }
     const long fail_step = learning_point.at(kFailStepKey).get<long>();
-    require_in(std::string("learning.") + kFailStepKey, fail_step, sim::kStepLimits);
+    require_in(std::string("learning.") + kFailStepKey, fail_step, body::kStepLimits);
     learning_point.erase(kFailStepKey);
     check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
@@ -484,7 +484,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
         spec.faults = {*s.malfunction};
         spec.faults.front().step = fail_step;
       } else if (s.faults.empty()) {
-        spec.faults = sim::fail_at(s.disabled, fail_step);
+        spec.faults = body::fail_at(s.disabled, fail_step);
       }
       spec.record.check_windows = check_windows;
       spec.record.trace = trace.get<bool>();

@@ -38,6 +38,7 @@
 #include <string_view>
 #include <vector>
 
+#include "body/events.h"
 #include "experiments/document_schema.h"
 #include "experiments/experiment_limits.h"
 #include "experiments/landscape.h"
@@ -46,7 +47,6 @@
 #include "experiments/tables.h"
 #include "learning/compensation.h"
 #include "robot/morphology.h"
-#include "sim/events.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
 

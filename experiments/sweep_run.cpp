@@ -3,6 +3,7 @@
 #include <map>
 #include <set>
 
+#include "body/deviation.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/json_diff.h"
@@ -11,7 +12,6 @@
 #include "experiments/processes.h"
 #include "experiments/sweep.h"
 #include "experiments/sweep_tables.h"
-#include "sim/deviation.h"
 #include "sim/json.h"
 #include "sim/sim.h"
 
@@ -52,13 +52,13 @@ json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer*
   const learning::CompensationOptions& options = *spec.learning;
   const long check_windows = spec.record.check_windows;
   const LearningRun run = run_learning(model, spec, check_windows * options.window_steps, observer);
-  json out = learning::to_json(run.result, morph, sim::failing_legs(spec.faults));
+  json out = learning::to_json(run.result, morph, body::failing_legs(spec.faults));
   if (check_windows > 0) {
     json windows = json::array();
     bool holds = true;
-    for (const sim::WindowMeasure& m : run.after_windows) {
+    for (const body::WindowMeasure& m : run.after_windows) {
       windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
-      holds = holds && sim::holds(m.worst_deg(), options.annealing.threshold_deg);
+      holds = holds && body::holds(m.worst_deg(), options.annealing.threshold_deg);
     }
     out["after_windows"] = windows;
     out["holds_after"] = holds;

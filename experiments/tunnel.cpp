@@ -45,7 +45,7 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
   TunnelRun run;
   sim::Stepper stepper(model, spec.start, spec.faults, observer, &run.record,
                        /*record_joints=*/false);
-  const sim::Pose2 start = stepper.pose();
+  const body::Pose2 start = stepper.pose();
   if (spec.steering) {
     stepper.set_before_step(
         [params = *spec.steering,
@@ -68,7 +68,7 @@ TunnelRun run_tunnel(const sim::SimModel& model, const TunnelSpec& spec, sim::Ob
       break;
     }
   }
-  const sim::Pose2 end = stepper.pose();
+  const body::Pose2 end = stepper.pose();
   run.forward_m = end.x - start.x;
   run.lateral_m = end.y - start.y;
   run.deviation_deg = std::atan2(run.lateral_m, run.forward_m) * 180.0 / std::numbers::pi;
@@ -102,7 +102,7 @@ TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, lon
   if (!spec.learning) {
     tunnel.start = spec.start;
     tunnel.faults = spec.faults;
-    out.disabled = sim::failed_after(morph, spec.faults);
+    out.disabled = body::failed_after(morph, spec.faults);
     out.periods = spec.start.periods.empty()
                       ? std::vector<int>(morph.size(), learning::kStartPeriod)
                       : spec.start.periods;
@@ -111,10 +111,10 @@ TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, lon
     open_robot.sim.scene.tunnel = false;
     const sim::SimModel open = make_model(open_robot);
     out.learned = run_learning(open, spec, 0, learning_observer).result;
-    out.disabled = sim::failed_after(morph, spec.faults);
+    out.disabled = body::failed_after(morph, spec.faults);
     out.periods = out.learned->periods;
     tunnel.start.periods = out.periods;
-    tunnel.faults = sim::fail_at(out.disabled, 0);
+    tunnel.faults = body::fail_at(out.disabled, 0);
     if (out.learned->steering) tunnel.steering = spec.learning->steering_params;
   }
   out.run = run_tunnel(corridor, tunnel, observer);

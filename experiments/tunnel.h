@@ -24,8 +24,8 @@ inline constexpr long kTunnelMaxSteps = 12000;
 struct TunnelSpec {
   // How the robot starts at the entrance: its periods, its controller running (as the paper's
   // robot was walking before it entered).
-  sim::StartSpec start;
-  sim::FaultTimeline faults;  // legs failed from the entrance on, or later
+  body::StartSpec start;
+  body::FaultTimeline faults;  // legs failed from the entrance on, or later
   long max_steps = kTunnelMaxSteps;
   // The orientation reflex (learning/steering.h) holding the tunnel's axis; none = periods only.
   std::optional<learning::SteeringParams> steering;

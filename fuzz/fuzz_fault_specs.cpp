@@ -8,11 +8,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "body/course_json.h"
+#include "body/fault_spec.h"
 #include "common/errors.h"
 #include "robot/morphology.h"
 #include "robot/terrain.h"
-#include "sim/course_json.h"
-#include "sim/fault_spec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace multicpg;
@@ -21,12 +21,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const robot::Morphology& morph = robot::morphology(kind);
     for (bool recover : {false, true}) {
       try {
-        const sim::Fault f = sim::parse_fault(morph, text, recover);
-        if (sim::parse_fault(morph, sim::fault_text(morph, f), recover) != f) std::abort();
+        const body::Fault f = body::parse_fault(morph, text, recover);
+        if (body::parse_fault(morph, body::fault_text(morph, f), recover) != f) std::abort();
       } catch (const BadInput&) {
       }
       try {
-        sim::parse_malfunction(morph, text, recover);
+        body::parse_malfunction(morph, text, recover);
       } catch (const BadInput&) {
       }
     }
@@ -39,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!j.is_discarded()) {
     try {
-      j.get<sim::Fault>();
+      j.get<body::Fault>();
     } catch (const BadInput&) {
     } catch (const nlohmann::json::exception&) {
     }

@@ -1,7 +1,7 @@
 // The robot's side of a control step over a serial line: send the joints' counts, read back what
 // the hardware reports, and name everything that went wrong (docs/hardware.md "Safety"). One
 // implementation per protocol (the AMOSII board, Dynamixel servos) and the yaw line; the body
-// (hw/hardware_walker.h) decides when errors become a stop.
+// (hw/hardware_body.h) decides when errors become a stop.
 #pragma once
 
 #include <array>

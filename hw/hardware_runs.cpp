@@ -38,10 +38,11 @@ nlohmann::json stop_json(const StopRecord& r) {
 }
 
 // The learner's decided trials so far, from its events (the record of a stopped run).
-nlohmann::json trace_so_far(const robot::Morphology& morph, const std::vector<sim::Event>& events) {
+nlohmann::json trace_so_far(const robot::Morphology& morph,
+                            const std::vector<body::Event>& events) {
   nlohmann::json trace = nlohmann::json::array();
-  for (const sim::Event& e : events) {
-    if (e.kind != sim::EventKind::trial_end) continue;
+  for (const body::Event& e : events) {
+    if (e.kind != body::EventKind::trial_end) continue;
     trace.push_back({{"episode", e.episode},
                      {"trial", e.trial},
                      {"step", e.step},
@@ -52,20 +53,20 @@ nlohmann::json trace_so_far(const robot::Morphology& morph, const std::vector<si
   return trace;
 }
 
-nlohmann::json events_json(const robot::Morphology& morph, const std::vector<sim::Event>& events) {
+nlohmann::json events_json(const robot::Morphology& morph, const std::vector<body::Event>& events) {
   nlohmann::json out = nlohmann::json::array();
-  for (const sim::Event& e : events) {
-    nlohmann::json j{{"event", sim::to_string(e.kind)}, {"step", e.step}};
+  for (const body::Event& e : events) {
+    nlohmann::json j{{"event", body::to_string(e.kind)}, {"step", e.step}};
     if (!e.legs.empty()) j["legs"] = robot::leg_set_name(morph, e.legs);
-    if (e.kind == sim::EventKind::detection) j["deviation_deg"] = e.deviation_deg;
+    if (e.kind == body::EventKind::detection) j["deviation_deg"] = e.deviation_deg;
     out.push_back(std::move(j));
   }
   return out;
 }
 
 // The record a stopped run leaves, handed to `stopped` before the stop goes on.
-void report_stop(const experiments::RunSpec& spec, const HardwareSetup& setup,
-                 HardwareWalker& walker, const std::exception& e, const StoppedSink& stopped,
+void report_stop(const experiments::RunSpec& spec, const HardwareSetup& setup, HardwareBody& walker,
+                 const std::exception& e, const StoppedSink& stopped,
                  nlohmann::json record = nlohmann::json::object()) {
   walker.stop(e.what(), true);
   const robot::Morphology& morph = experiments::morphology(spec.robot);
@@ -81,9 +82,9 @@ void report_stop(const experiments::RunSpec& spec, const HardwareSetup& setup,
 }
 
 // The steering reflex `reflex` on every later step.
-void keep_steering(HardwareWalker& walker, const learning::CompensationOptions& options,
+void keep_steering(HardwareBody& walker, const learning::CompensationOptions& options,
                    learning::SteeringState reflex) {
-  walker.set_before_step([params = options.steering_params, reflex](HardwareWalker& w) mutable {
+  walker.set_before_step([params = options.steering_params, reflex](HardwareBody& w) mutable {
     neural::ControllerState& c = w.controller();
     c.drive = learning::steer(params, reflex, w.pose(), c.drive);
   });
@@ -120,7 +121,7 @@ HardwareSetup hardware_setup(const experiments::RunSpec& spec, const HardwareFla
   return s;
 }
 
-nlohmann::json hardware_json(const HardwareSetup& setup, const HardwareWalker& walker) {
+nlohmann::json hardware_json(const HardwareSetup& setup, const HardwareBody& walker) {
   const HardwareFile& f = setup.file;
   nlohmann::json j{
       {"file", f.path.string()},
@@ -180,7 +181,7 @@ void StepCsv::row(const StepRow& r) {
 HardwareLearning learn_on_hardware(const experiments::RunSpec& spec, const HardwareSetup& setup,
                                    const StoppedSink& stopped, StepSink* steps) {
   const learning::CompensationOptions& options = *spec.learning;
-  HardwareWalker walker(setup.file, setup.body, spec.start, spec.faults, setup.pacing, steps);
+  HardwareBody walker(setup.file, setup.body, spec.start, spec.faults, setup.pacing, steps);
   learning::require_senses(options, walker.pose().has_position());
   HardwareLearning out;
   try {
@@ -197,21 +198,21 @@ HardwareLearning learn_on_hardware(const experiments::RunSpec& spec, const Hardw
 HardwareWalk walk_on_hardware(const experiments::RunSpec& spec, const HardwareSetup& setup,
                               long settle, long steps, long window, const StoppedSink& stopped,
                               StepSink* sink) {
-  HardwareWalker walker(setup.file, setup.body, spec.start, spec.faults, setup.pacing, sink);
+  HardwareBody walker(setup.file, setup.body, spec.start, spec.faults, setup.pacing, sink);
   HardwareWalk out;
   try {
     walker.steps(settle);
     while (out.steps + window <= steps) {
-      const sim::Pose2 start = walker.pose();
+      const body::Pose2 start = walker.pose();
       walker.steps(window);
       out.steps += window;
-      out.windows.push_back(sim::measure_window(start, walker.pose()));
+      out.windows.push_back(body::measure_window(start, walker.pose()));
     }
     walker.steps(steps - out.steps);
     out.steps = steps;
   } catch (const std::exception& e) {
     nlohmann::json windows = nlohmann::json::array();
-    for (const sim::WindowMeasure& m : out.windows) windows.push_back(m.yaw_deg);
+    for (const body::WindowMeasure& m : out.windows) windows.push_back(m.yaw_deg);
     report_stop(spec, setup, walker, e, stopped, {{"window_yaw_deg", windows}});
     throw;
   }
@@ -223,7 +224,7 @@ HardwareWalk walk_on_hardware(const experiments::RunSpec& spec, const HardwareSe
 
 HardwareTunnel tunnel_on_hardware(const experiments::RunSpec& spec, const HardwareSetup& setup,
                                   long max_steps, double length_m, const StoppedSink& stopped) {
-  HardwareWalker walker(setup.file, setup.body, spec.start, spec.faults, setup.pacing);
+  HardwareBody walker(setup.file, setup.body, spec.start, spec.faults, setup.pacing);
   HardwareTunnel out;
   try {
     if (spec.learning) {
@@ -236,12 +237,12 @@ HardwareTunnel tunnel_on_hardware(const experiments::RunSpec& spec, const Hardwa
     }
     for (const neural::LegState& leg : walker.controller().legs)
       out.periods.push_back(leg.cpg.period);
-    const sim::Pose2 start = walker.pose();
+    const body::Pose2 start = walker.pose();
     const double heading = start.yaw_deg / kDegPerRad;
     while (out.steps < max_steps) {
       walker.step();
       ++out.steps;
-      const sim::Pose2 p = walker.pose();
+      const body::Pose2 p = walker.pose();
       if (!p.has_position()) continue;
       out.forward_m = (p.x - start.x) * std::cos(heading) + (p.y - start.y) * std::sin(heading);
       out.lateral_m = -(p.x - start.x) * std::sin(heading) + (p.y - start.y) * std::cos(heading);

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "body/deviation.h"
 #include "experiments/run_spec.h"
+#include "hw/hardware_body.h"
 #include "hw/hardware_file.h"
-#include "hw/hardware_walker.h"
 #include "learning/compensation.h"
-#include "sim/deviation.h"
 #include "sim/sim.h"
 
 namespace multicpg::hw {
@@ -41,7 +41,7 @@ HardwareSetup hardware_setup(const experiments::RunSpec& spec, const HardwareFla
 
 // What the run recorded of the hardware: the file (path, name, checksum, protocol), the pacing,
 // the loop's timing, the link errors by kind, the targets clamped, and how it stopped.
-nlohmann::json hardware_json(const HardwareSetup& setup, const HardwareWalker& walker);
+nlohmann::json hardware_json(const HardwareSetup& setup, const HardwareBody& walker);
 
 // Every step to a CSV: step, time, yaw (and position when sensed), each joint's target and, where
 // the hardware reports them, its angle and each foot's contact.
@@ -72,7 +72,7 @@ HardwareLearning learn_on_hardware(const experiments::RunSpec& spec, const Hardw
 // path angle only where the position is sensed).
 struct HardwareWalk {
   long steps = 0;
-  std::vector<sim::WindowMeasure> windows;
+  std::vector<body::WindowMeasure> windows;
   double final_yaw_deg = 0.0;
   nlohmann::json hardware;
 };

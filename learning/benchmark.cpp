@@ -6,9 +6,9 @@
 #include <random>
 #include <string>
 
+#include "body/deviation.h"
 #include "common/enum_names.h"
 #include "common/errors.h"
-#include "sim/deviation.h"
 
 namespace multicpg::learning {
 namespace {
@@ -100,10 +100,10 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
     const int windows = protocol.yaw_only ? 1 : protocol.hold_windows;
     for (int w = 0; w < windows; ++w) {
       // A window not walked follows one over the threshold, where the trial has stopped.
-      const sim::WindowMeasure& window = p.windows.at(order[w]);
+      const body::WindowMeasure& window = p.windows.at(order[w]);
       m.windows.push_back(window);
       m.deviation_deg = std::max(m.deviation_deg, criterion.error(window));
-      if (!sim::holds(m.deviation_deg, search.threshold_deg)) break;
+      if (!body::holds(m.deviation_deg, search.threshold_deg)) break;
     }
     return m;
   };
@@ -118,18 +118,18 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   };
   // Detection: one window (paper §3 step 2; robust mode judges its windows one at a time): with
   // the reflex the window its start walk ended with, else one of the start combination's.
-  const sim::WindowMeasure detecting =
+  const body::WindowMeasure detecting =
       dataset.reflex ? scenario.start_windows.back()
                      : scenario.points[*c0].windows.at(windows_of(*c0).front());
   const double e0 = criterion.error(detecting);
-  if (sim::holds(e0, search.threshold_deg)) {
+  if (body::holds(e0, search.threshold_deg)) {
     finish({start, e0});
     if (dataset.reflex) {
       // The start walk itself is the truth: every one of its windows held, so the live run
       // walks on as it was, learning nothing.
       run.answer_holds = true;
       run.answer_worst_deg = 0.0;
-      for (const sim::WindowMeasure& w : scenario.start_windows) {
+      for (const body::WindowMeasure& w : scenario.start_windows) {
         run.answer_worst_deg = std::max(run.answer_worst_deg, criterion.error(w));
       }
     }

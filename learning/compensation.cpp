@@ -16,9 +16,9 @@
 namespace multicpg::learning {
 namespace {
 
-Periods current_periods(Walker& walker) {
+Periods current_periods(body::Body& body) {
   Periods periods;
-  for (const neural::LegState& leg : walker.controller().legs) periods.push_back(leg.cpg.period);
+  for (const neural::LegState& leg : body.controller().legs) periods.push_back(leg.cpg.period);
   return periods;
 }
 
@@ -50,7 +50,7 @@ Criterion criterion(const CompensationOptions& options) {
   return kPeriodsAloneCriterion;
 }
 
-double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window) {
+double robust_deviation(const CompensationOptions& options, const body::WindowMeasure& window) {
   Criterion c = criterion(options);
   c.path = true;
   return c.error(window);
@@ -127,7 +127,7 @@ void validate(const CompensationOptions& options) {
   within("learner", [&] { resolve_learner(options.learner); });
 }
 
-void validate_faults(const CompensationOptions& options, const sim::FaultTimeline& faults) {
+void validate_faults(const CompensationOptions& options, const body::FaultTimeline& faults) {
   if (options.mode == Mode::paper &&
       (faults.size() > 1 || (!faults.empty() && faults.front().recover))) {
     throw OptionError("mode",
@@ -136,18 +136,18 @@ void validate_faults(const CompensationOptions& options, const sim::FaultTimelin
   }
 }
 
-sim::Event detection_event(int episode, double deviation_deg, const Periods& periods) {
-  sim::Event e;
-  e.kind = sim::EventKind::detection;
+body::Event detection_event(int episode, double deviation_deg, const Periods& periods) {
+  body::Event e;
+  e.kind = body::EventKind::detection;
   e.episode = episode;
   e.deviation_deg = deviation_deg;
   e.periods = periods;
   return e;
 }
 
-sim::Event trial_end_event(int episode, const TrialRecord& trial) {
-  sim::Event e;
-  e.kind = sim::EventKind::trial_end;
+body::Event trial_end_event(int episode, const TrialRecord& trial) {
+  body::Event e;
+  e.kind = body::EventKind::trial_end;
   e.episode = episode;
   e.trial = trial.trial;
   e.periods = trial.periods;
@@ -157,9 +157,9 @@ sim::Event trial_end_event(int episode, const TrialRecord& trial) {
   return e;
 }
 
-sim::Event episode_end_event(int episode, const Episode& ended) {
-  sim::Event e;
-  e.kind = sim::EventKind::episode_end;
+body::Event episode_end_event(int episode, const Episode& ended) {
+  body::Event e;
+  e.kind = body::EventKind::episode_end;
   e.episode = episode;
   e.trial = ended.trials;
   e.periods = ended.periods;
@@ -170,14 +170,14 @@ sim::Event episode_end_event(int episode, const Episode& ended) {
 
 namespace {
 
-// Tells the walker's observer that a trial starts (kind trial_start) or was decided (trial_end).
-void emit_trial_start(Walker& walker, int episode, int trial, const Periods& periods) {
-  sim::Event e;
-  e.kind = sim::EventKind::trial_start;
+// Tells the body's observer that a trial starts (kind trial_start) or was decided (trial_end).
+void emit_trial_start(body::Body& body, int episode, int trial, const Periods& periods) {
+  body::Event e;
+  e.kind = body::EventKind::trial_start;
   e.episode = episode;
   e.trial = trial;
   e.periods = periods;
-  walker.emit(e);
+  body.emit(e);
 }
 
 // The steps a run spends in trials, against its budget (CompensationOptions::step_budget).
@@ -186,10 +186,10 @@ class Budget {
   explicit Budget(long steps) : steps_(steps) {}
   // Walks one trial's steps through `walk` and counts them.
   template <typename Walk>
-  auto count(Walker& walker, Walk&& walk) {
-    const long before = walker.step_count();
+  auto count(body::Body& body, Walk&& walk) {
+    const long before = body.step_count();
     auto measured = walk();
-    spent_ += walker.step_count() - before;
+    spent_ += body.step_count() - before;
     return measured;
   }
   bool used_up() const { return spent_ >= steps_; }
@@ -200,12 +200,12 @@ class Budget {
 };
 
 // What the episode's learner is told: the robot, C0 and its E, the failed legs, the bounds.
-LearnerSetup learner_setup(const Walker& walker, const CompensationOptions& options,
+LearnerSetup learner_setup(const body::Body& body, const CompensationOptions& options,
                            const Periods& start, std::vector<std::size_t> fixed,
-                           std::vector<sim::WindowMeasure> start_windows,
+                           std::vector<body::WindowMeasure> start_windows,
                            double start_deviation_deg, std::uint64_t seed) {
   LearnerSetup setup;
-  setup.robot = walker.controller_model().morphology.kind;
+  setup.robot = body.controller_model().morphology.kind;
   setup.start = start;
   setup.fixed = std::move(fixed);
   setup.start_deviation_deg = start_deviation_deg;
@@ -216,61 +216,61 @@ LearnerSetup learner_setup(const Walker& walker, const CompensationOptions& opti
   return setup;
 }
 
-LearningResult compensate_paper(Walker& walker, const CompensationOptions& options) {
-  const neural::ControllerModel& model = walker.controller_model();
+LearningResult compensate_paper(body::Body& body, const CompensationOptions& options) {
+  const neural::ControllerModel& model = body.controller_model();
   LearningResult result;
   result.mode = Mode::paper;
   result.settle_steps = start_settle_steps(options, model);
   const AnnealingParams& params = options.annealing;
-  CourseWalk walk(walker, options);
+  CourseWalk walk(body, options);
 
   // docs/learning.md "Detection": consecutive windows until one deviates more than the threshold.
   walk.steps(result.settle_steps);
   long windows_since_failure = 0;
   double e = 0.0;
-  sim::WindowMeasure detecting;
+  body::WindowMeasure detecting;
   for (;;) {
     detecting = walk.measured_window();
     e = std::abs(detecting.yaw_deg);  // docs/learning.md "Deviation"
-    if (!sim::holds(e, params.threshold_deg)) break;
+    if (!body::holds(e, params.threshold_deg)) break;
     if (walk.failed() && ++windows_since_failure >= options.detection_windows) break;
   }
   result.initial_deviation_deg = e;
   result.final_deviation_deg = e;
-  result.periods = current_periods(walker);
-  if (sim::holds(e, params.threshold_deg)) {
+  result.periods = current_periods(body);
+  if (body::holds(e, params.threshold_deg)) {
     result.outcome = Outcome::no_deviation;
     result.steps_walked = walk.walked();
     return result;
   }
   result.detection_step = walk.walked();
-  walker.emit(detection_event(1, e, result.periods));
+  body.emit(detection_event(1, e, result.periods));
 
   // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
-  neural::set_synchronised(walker.controller(), false);
+  neural::set_synchronised(body.controller(), false);
   const std::unique_ptr<Learner> learner =
-      make_learner(options.learner, learner_setup(walker, options, result.periods,
-                                                  sim::failing_legs(walker.faults().timeline()),
+      make_learner(options.learner, learner_setup(body, options, result.periods,
+                                                  body::failing_legs(body.faults().timeline()),
                                                   {detecting}, e, options.seed));
   Budget budget(options.step_budget);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {
-    emit_trial_start(walker, 1, trial, periods);
-    return budget.count(walker, [&] {
-      neural::set_periods(model, walker.controller(), periods);
+    emit_trial_start(body, 1, trial, periods);
+    return budget.count(body, [&] {
+      neural::set_periods(model, body.controller(), periods);
       walk.steps(result.settle_steps);
-      const sim::WindowMeasure window = walk.measured_window();
+      const body::WindowMeasure window = walk.measured_window();
       return Measurement{std::abs(window.yaw_deg), {window}};  // paper §3: E = |yaw change|
     });
   };
   hooks.decided = [&](const TrialRecord& t) {
-    walker.emit(trial_end_event(1, t));
+    body.emit(trial_end_event(1, t));
     return budget.used_up();
   };
   EpisodeEnd end = run_episode(*learner, hooks);
   // A run that did not converge keeps walking with the accepted combination, the one reported.
-  if (current_periods(walker) != end.answer.periods) {
-    neural::set_periods(model, walker.controller(), end.answer.periods);
+  if (current_periods(body) != end.answer.periods) {
+    neural::set_periods(model, body.controller(), end.answer.periods);
   }
 
   result.outcome = end.reason == StopReason::below_threshold ? Outcome::converged
@@ -290,7 +290,7 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
   episode.reason = result.reason;
   episode.periods = result.periods;
   episode.final_deviation_deg = result.final_deviation_deg;
-  walker.emit(episode_end_event(1, episode));
+  body.emit(episode_end_event(1, episode));
   result.episodes.push_back(std::move(episode));
   return result;
 }
@@ -298,12 +298,12 @@ LearningResult compensate_paper(Walker& walker, const CompensationOptions& optio
 // Robust mode: see compensate() in the header.
 class RobustRun {
  public:
-  RobustRun(Walker& walker, const CompensationOptions& options)
-      : walker_(walker),
+  RobustRun(body::Body& body, const CompensationOptions& options)
+      : body_(body),
         options_(options),
-        model_(walker.controller_model()),
+        model_(body.controller_model()),
         params_(options.annealing),
-        walk_(walker, options),
+        walk_(body, options),
         budget_(options.step_budget) {}
 
   LearningResult run() {
@@ -311,7 +311,7 @@ class RobustRun {
     result_.settle_steps = start_settle_steps(options_, model_);
     long monitored = 0;  // windows walked since the last fault or episode
     while (monitored < options_.monitor_windows || walk_.faults_pending()) {
-      const sim::WindowMeasure m = walk_.measured_window();
+      const body::WindowMeasure m = walk_.measured_window();
       const int faults = walk_.take_fault_count();
       if (walk_.take_full_recovery()) {
         resynchronise();
@@ -326,7 +326,7 @@ class RobustRun {
         result_.final_windows.clear();
         continue;
       }
-      if (!sim::holds(error(m), params_.threshold_deg) && options_.learn_periods &&
+      if (!body::holds(error(m), params_.threshold_deg) && options_.learn_periods &&
           static_cast<int>(result_.episodes.size()) < options_.max_episodes && !budget_.used_up()) {
         episode(m);
         monitored = 0;
@@ -343,7 +343,7 @@ class RobustRun {
   }
 
  private:
-  double error(const sim::WindowMeasure& m) const { return robust_deviation(options_, m); }
+  double error(const body::WindowMeasure& m) const { return robust_deviation(options_, m); }
 
   long settle_for(const Periods& periods) const {
     return options_.settle_steps.value_or(locked_settle_steps(model_, periods));
@@ -351,25 +351,25 @@ class RobustRun {
 
   Periods periods() {
     Periods p;
-    for (const neural::LegState& leg : walker_.controller().legs) p.push_back(leg.cpg.period);
+    for (const neural::LegState& leg : body_.controller().legs) p.push_back(leg.cpg.period);
     return p;
   }
 
   void set(const Periods& p) {
-    neural::set_periods(model_, walker_.controller(), p);
+    neural::set_periods(model_, body_.controller(), p);
     walk_.steps(settle_for(p));
   }
 
   // Paper §2.3: every leg works again: all legs at the master's period, clients synchronised.
   void resynchronise() {
-    neural::ControllerState& c = walker_.controller();
+    neural::ControllerState& c = body_.controller();
     neural::set_period(model_, c, c.legs.front().cpg.period);
     neural::set_synchronised(c, true);
     walk_.steps(settle_for(periods()));
     walk_.take_fault_count();
   }
 
-  void episode(const sim::WindowMeasure& detecting) {
+  void episode(const body::WindowMeasure& detecting) {
     const double detection_deg = error(detecting);
     const int number = static_cast<int>(result_.episodes.size()) + 1;
     Episode ep;
@@ -379,23 +379,23 @@ class RobustRun {
       result_.detection_step = ep.detection_step;
       result_.initial_deviation_deg = detection_deg;
     }
-    walker_.emit(detection_event(number, detection_deg, periods()));
+    body_.emit(detection_event(number, detection_deg, periods()));
 
-    neural::set_synchronised(walker_.controller(), false);  // paper §2.3
+    neural::set_synchronised(body_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
-    const std::unique_ptr<Learner> learner = make_learner(
-        options_.learner, learner_setup(walker_, options_, periods(), walk_.failed_now(),
-                                        {detecting}, detection_deg, seed));
+    const std::unique_ptr<Learner> learner =
+        make_learner(options_.learner, learner_setup(body_, options_, periods(), walk_.failed_now(),
+                                                     {detecting}, detection_deg, seed));
     walk_.take_fault_count();
     EpisodeHooks hooks;
     hooks.measure = [&](int trial, const Periods& candidate) {
-      emit_trial_start(walker_, number, trial, candidate);
+      emit_trial_start(body_, number, trial, candidate);
       return budget_.count(
-          walker_, [&] { return robust_trial(walk_, options_, candidate, options_.hold_windows); });
+          body_, [&] { return robust_trial(walk_, options_, candidate, options_.hold_windows); });
     };
     hooks.decided = [&](const TrialRecord& t) {
-      walker_.emit(trial_end_event(number, t));
+      body_.emit(trial_end_event(number, t));
       if (walk_.take_fault_count() > 0) ep.interrupted = true;
       return ep.interrupted || budget_.used_up();
     };
@@ -408,7 +408,7 @@ class RobustRun {
     ep.final_deviation_deg = end.answer.deviation_deg;
     for (TrialRecord& t : end.trace) result_.trace.push_back(std::move(t));
     result_.trials += end.trials;
-    walker_.emit(episode_end_event(number, ep));
+    body_.emit(episode_end_event(number, ep));
     result_.episodes.push_back(std::move(ep));
   }
 
@@ -419,7 +419,7 @@ class RobustRun {
     result_.steering = walk_.steering();
     const bool held = std::all_of(
         result_.final_windows.begin(), result_.final_windows.end(),
-        [&](const sim::WindowMeasure& m) { return sim::holds(error(m), params_.threshold_deg); });
+        [&](const body::WindowMeasure& m) { return body::holds(error(m), params_.threshold_deg); });
     if (result_.episodes.empty()) {
       result_.outcome = held ? Outcome::no_deviation : Outcome::not_converged;
       if (!result_.final_windows.empty()) {
@@ -434,11 +434,11 @@ class RobustRun {
       result_.reason = last.reason;
     }
     double worst = 0.0;
-    for (const sim::WindowMeasure& m : result_.final_windows) worst = std::max(worst, error(m));
+    for (const body::WindowMeasure& m : result_.final_windows) worst = std::max(worst, error(m));
     result_.final_deviation_deg = worst;
   }
 
-  Walker& walker_;
+  body::Body& body_;
   const CompensationOptions& options_;
   const neural::ControllerModel& model_;
   const AnnealingParams& params_;
@@ -449,14 +449,14 @@ class RobustRun {
 
 }  // namespace
 
-LearningResult compensate(Walker& walker, const CompensationOptions& options) {
+LearningResult compensate(body::Body& body, const CompensationOptions& options) {
   validate(options);
-  validate_faults(options, walker.faults().timeline());
-  if (walker.step_count() != 0) {
-    throw std::invalid_argument("compensate: the walker must be at its start");
+  validate_faults(options, body.faults().timeline());
+  if (body.step_count() != 0) {
+    throw std::invalid_argument("compensate: the body must be at its start");
   }
-  if (options.mode == Mode::paper) return compensate_paper(walker, options);
-  return RobustRun(walker, options).run();
+  if (options.mode == Mode::paper) return compensate_paper(body, options);
+  return RobustRun(body, options).run();
 }
 
 }  // namespace multicpg::learning

@@ -12,6 +12,9 @@
 #include <string_view>
 #include <vector>
 
+#include "body/body.h"
+#include "body/deviation.h"
+#include "body/events.h"
 #include "learning/annealing.h"
 #include "learning/criterion.h"
 #include "learning/learner.h"
@@ -19,32 +22,8 @@
 #include "learning/steering.h"
 #include "neural/controller.h"
 #include "robot/morphology.h"
-#include "sim/deviation.h"
-#include "sim/events.h"
 
 namespace multicpg::learning {
-
-// What compensation needs of a walking robot. The MuJoCo simulation implements it through an
-// adapter; tests use a fake whose yaw follows the current periods.
-class Walker {
- public:
-  virtual ~Walker() = default;
-  // One controller step and the physics it drives.
-  virtual void step() = 0;
-  // Trunk position (m) and yaw in degrees, (-180, 180] (docs/learning.md "Deviation"): the
-  // orientation sensor and odometry (in simulation, the trunk's position).
-  virtual sim::Pose2 pose() const = 0;
-  // Controller steps taken so far.
-  virtual long step_count() const = 0;
-  virtual neural::ControllerState& controller() = 0;
-  virtual const neural::ControllerModel& controller_model() const = 0;
-  // The run's faults (docs/faults.md "When faults strike"): the walker applies them before the
-  // steps they name, counted from its start (sim::Stepper), and the learner reads from it what
-  // came.
-  virtual const sim::FaultSchedule& faults() const = 0;
-  // Shows what the learner is doing to whoever watches (a film, the viewer, Python).
-  virtual void emit(const sim::Event& /*event*/) {}
-};
 
 // Which algorithm compensates.
 enum class Mode {
@@ -97,10 +76,10 @@ inline constexpr Limits<long> kDetectionWindowsLimits{1, 1000};
 inline constexpr Limits<int> kHoldWindowsLimits{1, 100};
 inline constexpr Limits<long> kMonitorWindowsLimits{1, 1000};
 inline constexpr Limits<int> kMaxEpisodesLimits{1, 1000};
-inline constexpr Limits<long> kStepBudgetLimits{1, sim::kMaxSteps};
+inline constexpr Limits<long> kStepBudgetLimits{1, body::kMaxSteps};
 
 // How a compensation run learns. What fails and when is the run's, not the learner's: the
-// walker's fault schedule (sim::FaultSchedule) says what came.
+// body's fault schedule (body::FaultSchedule) says what came.
 struct CompensationOptions {
   Mode mode = Mode::robust;
   // The search's bounds for every learner (period set, threshold, trial cap) and the
@@ -133,7 +112,7 @@ Criterion criterion(const CompensationOptions& options);
 // A robust-mode window's E, what it compares with the threshold (docs/learning.md "Deviation"):
 // the worse of |yaw change| and |path angle|, and with the reflex its effort scaled so that
 // max_effort reads as the threshold.
-double robust_deviation(const CompensationOptions& options, const sim::WindowMeasure& window);
+double robust_deviation(const CompensationOptions& options, const body::WindowMeasure& window);
 
 // Throws OptionError (key "annealing.beta", "window_steps", "learner.name", ...; one line) for a
 // value outside its limits or an unknown learner or learner option. Paper mode ignores the
@@ -142,7 +121,7 @@ void validate(const CompensationOptions& options);
 
 // Throws OptionError (key "mode") for a fault timeline these options cannot learn with: paper
 // mode takes one fault and no recovery (paper §3).
-void validate_faults(const CompensationOptions& options, const sim::FaultTimeline& faults);
+void validate_faults(const CompensationOptions& options, const body::FaultTimeline& faults);
 
 // One learning episode: from a detecting window to the end of its annealing.
 struct Episode {
@@ -183,19 +162,19 @@ struct LearningResult {
   Mode mode = Mode::robust;
   std::vector<Episode> episodes;  // robust mode: one per detection (paper: at most one)
   // Robust mode: each window walked after the last episode or fault, as measured.
-  std::vector<sim::WindowMeasure> final_windows;
+  std::vector<body::WindowMeasure> final_windows;
   // Mean |swing cut| of the steering reflex over the last window (0 = no steering used).
   double steering_effort = 0.0;
   // The reflex as the run left it (robust mode with Steering::reflex), to walk on with.
   std::optional<SteeringState> steering;
 };
 
-// Runs the whole online loop on `walker`, which should be walking forward with every client
+// Runs the whole online loop on `body`, which should be walking forward with every client
 // synchronised (as make_controller_state leaves it), at its step 0 (else std::invalid_argument:
 // a caller's mistake), its faults to come as its schedule says. Throws OptionError for options or
 // a timeline validate() or validate_faults() refuse. Paper mode is
 // paper §3 exactly (docs/learning.md "The search"); robust mode:
-// - a window is judged on both its yaw change and its path angle (sim::measure_window);
+// - a window is judged on both its yaw change and its path angle (body::measure_window);
 // - a combination is accepted only when it holds for hold_windows consecutive windows (a trial
 //   stops at its first window over the threshold, whose deviation is the trial's E);
 // - after an episode the robot keeps walking and monitoring, and a window over the threshold
@@ -203,13 +182,13 @@ struct LearningResult {
 // - a recovery that leaves no fault in force sets every period back to the master's and
 //   resynchronises the clients (paper §2.3), then settles;
 // - with Steering::reflex, learning/steering.h holds the course set where the run started.
-LearningResult compensate(Walker& walker, const CompensationOptions& options);
+LearningResult compensate(body::Body& body, const CompensationOptions& options);
 
 // The observer's events of a learning run (sim/events.h), as compensate emits them and as a
 // recorded result is replayed (its detections, decided trials and episode ends).
-sim::Event detection_event(int episode, double deviation_deg, const Periods& periods);
-sim::Event trial_end_event(int episode, const TrialRecord& trial);
-sim::Event episode_end_event(int episode, const Episode& ended);
+body::Event detection_event(int episode, double deviation_deg, const Periods& periods);
+body::Event trial_end_event(int episode, const TrialRecord& trial);
+body::Event episode_end_event(int episode, const Episode& ended);
 
 // JSON with converged, status, reason, trials, initial/final_deviation_deg, periods
 // (leg name -> period), disabled (names), steps_walked, detection_step (null if none),

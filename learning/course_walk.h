@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
+#include "body/deviation.h"
 #include "learning/compensation.h"
 #include "learning/steering.h"
-#include "sim/deviation.h"
 
 namespace multicpg::learning {
 
@@ -31,16 +31,16 @@ class CourseWalk {
  public:
   // Starts the reflex at the body's sensed pose when `options` steer (robust mode with
   // Steering::reflex); the faults due at the start came with the body's start.
-  CourseWalk(Walker& walker, const CompensationOptions& options);
+  CourseWalk(body::Body& body, const CompensationOptions& options);
   // Goes on from `saved` (the body restored to where it was saved).
-  CourseWalk(Walker& walker, const CompensationOptions& options, CourseWalkState saved);
+  CourseWalk(body::Body& body, const CompensationOptions& options, CourseWalkState saved);
 
   // n controller steps, steering before each when the run steers.
   void steps(long n);
   // One window of options.window_steps: yaw change and path angle against the course (the
   // reflex's line, else the heading at the window's start), and the reflex's mean effort.
   // Throws RuntimeFailure when the body's pose is not finite.
-  sim::WindowMeasure measured_window();
+  body::WindowMeasure measured_window();
 
   long walked() const;
   // Paper mode's "after the failure": a leg has failed (a healthy robot's run, with no fault,
@@ -55,12 +55,12 @@ class CourseWalk {
   double effort() const { return state_.effort; }
   const std::optional<SteeringState>& steering() const { return state_.steering; }
   const CourseWalkState& state() const { return state_; }
-  Walker& walker() { return walker_; }
+  body::Body& body() { return body_; }
 
  private:
   void take_faults();
 
-  Walker& walker_;
+  body::Body& body_;
   const CompensationOptions& options_;
   CourseWalkState state_;
 };
@@ -76,7 +76,7 @@ Measurement robust_trial(CourseWalk& walk, const CompensationOptions& options,
 // measures their transient), then windows are walked until one does not hold (the detecting
 // window, last) or options.monitor_windows have held. What compensate() walks up to its first
 // detection (tests/test_learning_sim.cpp holds them equal).
-std::vector<sim::WindowMeasure> watch_until_deviation(CourseWalk& walk,
-                                                      const CompensationOptions& options);
+std::vector<body::WindowMeasure> watch_until_deviation(CourseWalk& walk,
+                                                       const CompensationOptions& options);
 
 }  // namespace multicpg::learning

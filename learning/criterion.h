@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sim/deviation.h"
+#include "body/deviation.h"
 
 namespace multicpg::learning {
 
@@ -30,7 +30,7 @@ struct Criterion {
     if (steers()) e = std::max(e, effort_deg(effort));
     return e;
   }
-  double error(const sim::WindowMeasure& w) const {
+  double error(const body::WindowMeasure& w) const {
     return error(w.yaw_deg, w.path_deg, w.steering_effort);
   }
   bool operator==(const Criterion&) const = default;

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "body/course_json.h"
 #include "common/json_optional.h"
 #include "learning/compensation.h"
 #include "learning/learners.h"
-#include "sim/course_json.h"
 
 namespace multicpg::learning {
 

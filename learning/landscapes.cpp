@@ -191,7 +191,7 @@ class Manifest {
   std::string name_;
 };
 
-nlohmann::json window_json(const sim::WindowMeasure& w, bool reflex) {
+nlohmann::json window_json(const body::WindowMeasure& w, bool reflex) {
   nlohmann::json j{{"yaw_deg", std::stod(angle(w.yaw_deg))},
                    {"path_deg", std::stod(angle(w.path_deg))}};
   if (reflex) j["steering_effort"] = std::stod(effort(w.steering_effort));
@@ -288,7 +288,7 @@ void write_landscape_dataset(const LandscapeDataset& d, const fs::path& path) {
                           : static_cast<double>(holding) / static_cast<double>(s.points.size())}};
     if (reflex) {
       nlohmann::json start = nlohmann::json::array();
-      for (const sim::WindowMeasure& w : s.start_windows) start.push_back(window_json(w, true));
+      for (const body::WindowMeasure& w : s.start_windows) start.push_back(window_json(w, true));
       entry["start_windows"] = start;
     }
     scenarios.push_back(std::move(entry));
@@ -423,7 +423,7 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
             !w.at("path_deg").is_number() || !w.at("steering_effort").is_number()) {
           throw s.bad("start_windows", "must hold yaw_deg, path_deg and steering_effort numbers");
         }
-        sim::WindowMeasure m;
+        body::WindowMeasure m;
         m.yaw_deg = w.at("yaw_deg").get<double>();
         m.path_deg = w.at("path_deg").get<double>();
         m.steering_effort = w.at("steering_effort").get<double>();
@@ -511,14 +511,14 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
         if (!d.reflex)
           throw bad(label + " is empty: a dataset of periods alone walks every window");
         if (w == 0) throw bad("window 1 is empty: every combination walks at least one window");
-        if (!ended && sim::holds(worst, d.threshold_deg - tolerance)) {
+        if (!ended && body::holds(worst, d.threshold_deg - tolerance)) {
           throw bad(label + " is empty, but no window before it was over the threshold");
         }
         ended = true;
         continue;
       }
       if (ended) throw bad(label + " has values after a window that was not walked");
-      sim::WindowMeasure m;
+      body::WindowMeasure m;
       const std::optional<double> yaw = decimal(cells[at]);
       const std::optional<double> path = decimal(cells[at + 1]);
       if (!yaw) throw bad(label + "'s yaw '" + cells[at] + "' is not a number");
@@ -545,10 +545,10 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
     if (holds != "0" && holds != "1") throw bad("holds must be 0 or 1, got '" + holds + "'");
     p.holds = holds == "1";
     const bool all_walked = static_cast<int>(p.windows.size()) == d.windows;
-    if (p.holds && (!all_walked || !sim::holds(worst, d.threshold_deg + tolerance))) {
+    if (p.holds && (!all_walked || !body::holds(worst, d.threshold_deg + tolerance))) {
       throw bad("holds is 1, but a window is over the threshold or was not walked");
     }
-    if (!p.holds && all_walked && sim::holds(worst, d.threshold_deg - tolerance)) {
+    if (!p.holds && all_walked && body::holds(worst, d.threshold_deg - tolerance)) {
       throw bad("holds is 0, but every window is under the threshold");
     }
     s.points.push_back(std::move(p));

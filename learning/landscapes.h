@@ -10,11 +10,11 @@
 //   NAME.csv.gz  gzip of a CSV, one row per combination, grouped by scenario:
 //     scenario,<leg>...,w1_yaw,w1_path[,w1_effort],...,wN_yaw,wN_path[,wN_effort],worst,holds
 //   scenario "R1+R3" (failed legs, robot/leg_sets.h); each leg's period, "x" for a failed leg;
-//   each window's yaw change and path angle in degrees (sim::WindowMeasure) to 0.001 deg and, with
+//   each window's yaw change and path angle in degrees (body::WindowMeasure) to 0.001 deg and, with
 //   the reflex, its effort (mean swing cut, 0..1) to 0.0001; a window not walked (after the first
 //   over the threshold, reflex datasets only) has empty cells; worst = the largest window error
 //   by the dataset's criterion (learning/criterion.h); holds = 1 when all N windows were walked
-//   and held (sim::holds), decided before the values were rounded.
+//   and held (body::holds), decided before the values were rounded.
 //   NAME.json    the manifest: format and version, robot, period set, windows, window steps,
 //   threshold, the simulation options it was walked with, how it was walked ("steering": "off" or
 //   "reflex" with the reflex's parameters), each scenario's count and share of holding
@@ -30,11 +30,11 @@
 #include <string>
 #include <vector>
 
+#include "body/deviation.h"
 #include "learning/annealing.h"
 #include "learning/criterion.h"
 #include "learning/steering.h"
 #include "robot/morphology.h"
-#include "sim/deviation.h"
 
 namespace multicpg::learning {
 
@@ -42,7 +42,7 @@ namespace multicpg::learning {
 struct LandscapePoint {
   Periods periods;  // every leg; a failed leg's is kStartPeriod
   // Each window walked, in order: yaw change, path angle and the reflex's effort (0 without it).
-  std::vector<sim::WindowMeasure> windows;
+  std::vector<body::WindowMeasure> windows;
   double worst_deg = 0.0;  // the largest error of its windows by the dataset's criterion
   bool holds = false;      // every one of the dataset's windows walked and under the threshold
 };
@@ -52,7 +52,7 @@ struct ScenarioLandscape {
   std::vector<LandscapePoint> points;
   // With the reflex: the windows walked with every leg at 4 before the combinations (the last one
   // deviated and started learning, or every one held: the reflex alone holds).
-  std::vector<sim::WindowMeasure> start_windows;
+  std::vector<body::WindowMeasure> start_windows;
   // The index of a combination (its working legs' periods; a failed leg's period is ignored),
   // or nothing when it is not one of the points.
   std::optional<std::size_t> find(const Periods& periods) const;

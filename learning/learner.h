@@ -1,5 +1,5 @@
 // What a learner is: it proposes the next combination of the working legs' periods, observes
-// what the walker measured for it, and decides whether it is done (held) or gives up with the
+// what the body measured for it, and decides whether it is done (held) or gives up with the
 // best it found. The online loop (learning/compensation.h) and the replay benchmark
 // (learning/benchmark.h) drive every learner the same way (run_episode), so a learner never knows
 // whether a trial walked a MuJoCo robot, a real one, or was looked up in a landscape.
@@ -26,10 +26,10 @@
 #include <string_view>
 #include <vector>
 
+#include "body/deviation.h"
 #include "learning/annealing.h"
 #include "learning/criterion.h"
 #include "robot/morphology.h"
-#include "sim/deviation.h"
 
 namespace multicpg::learning {
 
@@ -39,8 +39,8 @@ struct LearnerSetup {
   Periods start;  // C0: the combination walking when the deviation was seen (every leg)
   // Legs whose period never changes: the failed legs (paper §3: never picked).
   std::vector<std::size_t> fixed;
-  double start_deviation_deg = 0.0;               // E of C0 (the detecting window)
-  std::vector<sim::WindowMeasure> start_windows;  // the detecting window, signed
+  double start_deviation_deg = 0.0;                // E of C0 (the detecting window)
+  std::vector<body::WindowMeasure> start_windows;  // the detecting window, signed
   // What E is made of (learning/criterion.h): the paper's |yaw change| alone, robust mode's worst
   // of |yaw change| and |path angle|, and with the steering reflex its effort.
   Criterion criterion = kPeriodsAloneCriterion;
@@ -53,12 +53,12 @@ struct LearnerSetup {
   std::vector<std::size_t> working() const;
 };
 
-// What the walker measured for one trial.
+// What the body measured for one trial.
 struct Measurement {
   // E: what the trial is judged by, as the mode measures it (paper mode: |yaw change| of one
   // window; robust mode: the worst window error of up to hold_windows windows).
   double deviation_deg = 0.0;
-  std::vector<sim::WindowMeasure> windows;  // each window walked for the trial, in order
+  std::vector<body::WindowMeasure> windows;  // each window walked for the trial, in order
 };
 
 // One trial, the same for every learner (paper Fig. 8 row): what was tried, what it measured,

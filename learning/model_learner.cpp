@@ -43,10 +43,10 @@ ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& 
       best_(setup) {
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
-  for (const sim::WindowMeasure& w : setup.start_windows) model_.observe(start, outputs(w));
+  for (const body::WindowMeasure& w : setup.start_windows) model_.observe(start, outputs(w));
 }
 
-WindowOutputs ModelLearner::outputs(const sim::WindowMeasure& w) const {
+WindowOutputs ModelLearner::outputs(const body::WindowMeasure& w) const {
   return {w.yaw_deg, w.path_deg, setup_.criterion.effort_deg(w.steering_effort)};
 }
 
@@ -101,7 +101,7 @@ std::optional<Periods> ModelLearner::propose() {
 }
 
 TrialRecord ModelLearner::observe(const Measurement& m) {
-  for (const sim::WindowMeasure& w : m.windows) model_.observe(pending_, outputs(w));
+  for (const body::WindowMeasure& w : m.windows) model_.observe(pending_, outputs(w));
   const Periods periods = space_.periods(pending_);
   const bool accepted = best_.record(periods, m.deviation_deg);
   return {best_.trials(), periods, m.deviation_deg, accepted, {{"acquisition", pending_score_}}};

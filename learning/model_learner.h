@@ -71,7 +71,7 @@ class ModelLearner final : public Learner {
   // P(x < threshold): the reflex's effort, never negative, holds.
   double effort_holds(const Prediction& p) const;
   // What the model sees of a window (its effort scaled as the criterion scales it).
-  WindowOutputs outputs(const sim::WindowMeasure& w) const;
+  WindowOutputs outputs(const body::WindowMeasure& w) const;
 
   LearnerSetup setup_;
   ModelLearnerParams params_;

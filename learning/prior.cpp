@@ -151,7 +151,7 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
     const std::vector<std::size_t> image = robot::mirror(morph, s.failed);
     for (const LandscapePoint& p : s.points) {
       WindowOutputs mean{};
-      for (const sim::WindowMeasure& w : p.windows) {
+      for (const body::WindowMeasure& w : p.windows) {
         mean[kYaw] += w.yaw_deg;
         mean[kPath] += w.path_deg;
         mean[kEffort] += setup.criterion.effort_deg(w.steering_effort);

@@ -2,10 +2,10 @@
 #include <string>
 #include <utility>
 
+#include "body/course_json.h"
 #include "common/errors.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
-#include "sim/course_json.h"
 
 namespace multicpg::learning {
 
@@ -97,7 +97,7 @@ LearningResult result_from_json(const nlohmann::json& j, const robot::Morphology
           e.at("interrupted").get<bool>(), robot::period_map_from_json(morph, e.at("periods")),
           e.at("final_deviation_deg").get<double>()});
     }
-    r.final_windows = j.at("final_windows").get<std::vector<sim::WindowMeasure>>();
+    r.final_windows = j.at("final_windows").get<std::vector<body::WindowMeasure>>();
     r.steering_effort = j.at("steering_effort").get<double>();
     // An experiment may record its runs without their trace ([record] trace = false,
     // docs/experiments.md): such a result reads with an empty trace.

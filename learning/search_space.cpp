@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include "body/deviation.h"
 #include "common/errors.h"
-#include "sim/deviation.h"
 
 namespace multicpg::learning {
 
@@ -58,14 +58,14 @@ BestSoFar::BestSoFar(const LearnerSetup& setup)
     : threshold_deg_(setup.search.threshold_deg),
       max_trials_(setup.search.max_trials),
       answer_{setup.start, setup.start_deviation_deg} {
-  if (sim::holds(setup.start_deviation_deg, threshold_deg_)) stop_ = StopReason::below_threshold;
+  if (body::holds(setup.start_deviation_deg, threshold_deg_)) stop_ = StopReason::below_threshold;
 }
 
 bool BestSoFar::record(const Periods& periods, double deviation_deg) {
   ++trials_;
   const bool better = deviation_deg < answer_.deviation_deg;
   if (better) answer_ = {periods, deviation_deg};
-  if (sim::holds(deviation_deg, threshold_deg_)) {
+  if (body::holds(deviation_deg, threshold_deg_)) {
     stop_ = StopReason::below_threshold;
   } else if (trials_ >= max_trials_) {
     stop_ = StopReason::trial_cap;

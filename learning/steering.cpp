@@ -31,7 +31,7 @@ void validate(const SteeringParams& p) {
   require_in("max_effort", p.max_effort, kMaxEffortLimits);
 }
 
-SteeringState start_steering(const sim::Pose2& course) {
+SteeringState start_steering(const body::Pose2& course) {
   return SteeringState{course, 0.0, 0.0};
 }
 
@@ -40,7 +40,7 @@ std::optional<double> course_yaw_deg(const std::optional<SteeringState>& steerin
   return steering->course.yaw_deg;
 }
 
-neural::DriveInputs steer(const SteeringParams& p, SteeringState& s, const sim::Pose2& now,
+neural::DriveInputs steer(const SteeringParams& p, SteeringState& s, const body::Pose2& now,
                           neural::DriveInputs drive) {
   constexpr double kRadPerDeg = std::numbers::pi / 180.0;
   const double heading = s.course.yaw_deg * kRadPerDeg;

@@ -13,9 +13,9 @@
 
 #include <optional>
 
+#include "body/deviation.h"
 #include "common/limits.h"
 #include "neural/drive.h"
-#include "sim/deviation.h"
 
 namespace multicpg::learning {
 
@@ -47,18 +47,18 @@ void validate(const SteeringParams& params);
 // The line to keep: a point on it and its heading, set when the reflex starts (where the robot
 // was walking), and the integral of the offset from it.
 struct SteeringState {
-  sim::Pose2 course;
+  body::Pose2 course;
   double offset_integral_m_steps = 0.0;
   double last_cut = 0.0;  // swing cut of the last step, 0..1, + = right side cut (turn right)
 };
 
-SteeringState start_steering(const sim::Pose2& course);
-// The direction windows measure the path angle against (sim::measure_window): the course line's
+SteeringState start_steering(const body::Pose2& course);
+// The direction windows measure the path angle against (body::measure_window): the course line's
 // when a reflex keeps one, else none (the heading at each window's start).
 std::optional<double> course_yaw_deg(const std::optional<SteeringState>& steering);
 
 // One reflex step: reads the pose, returns the drive inputs with turn_left / turn_right set.
-neural::DriveInputs steer(const SteeringParams& params, SteeringState& state, const sim::Pose2& now,
-                          neural::DriveInputs drive);
+neural::DriveInputs steer(const SteeringParams& params, SteeringState& state,
+                          const body::Pose2& now, neural::DriveInputs drive);
 
 }  // namespace multicpg::learning

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 
+#include "body/fault_spec.h"
+#include "body/faults.h"
 #include "common/errors.h"
 #include "neural/cpg.h"
 #include "robot/morphology.h"
-#include "sim/fault_spec.h"
-#include "sim/faults.h"
 
 namespace multicpg::python {
 namespace {
@@ -189,23 +189,23 @@ FaultArg make_fault(py::handle legs_value, py::handle step, py::handle kind, py:
   FaultArg f;
   f.kind = text(kind, "kind");
   if (!value.is_none()) f.value = real(value, "value", Limits<double>{-1e300, 1e300});
-  const sim::Malfunction made = named("kind", [&] {
+  const body::Malfunction made = named("kind", [&] {
     // a recovery may leave out a value its fault needed (it ends whatever value it had)
-    return sim::make_kind(f.kind, f.value, recover);
+    return body::make_kind(f.kind, f.value, recover);
   });
   if (!joint.is_none()) {
     f.joint = text(joint, "joint");
     named("joint", [&] { return robot::parse_joint(*f.joint); });
   }
-  const sim::Strikes target = sim::strikes(made);
-  if (target == sim::Strikes::joints && !f.joint) {
+  const body::Strikes target = body::strikes(made);
+  if (target == body::Strikes::joints && !f.joint) {
     value_error("joint",
                 fmt::format("a '{}' fault strikes one joint: name it (TC, CTr or FTi)", f.kind));
   }
-  if (target == sim::Strikes::legs && f.joint) {
+  if (target == body::Strikes::legs && f.joint) {
     value_error("joint", fmt::format("a '{}' fault strikes whole legs, not a joint", f.kind));
   }
-  if (target == sim::Strikes::sensor) {
+  if (target == body::Strikes::sensor) {
     if (f.joint) value_error("joint", fmt::format("a '{}' fault strikes the yaw sensor", f.kind));
     if (!legs_value.is_none()) {
       value_error("legs", fmt::format("a '{}' fault strikes the yaw sensor, no leg", f.kind));
@@ -225,7 +225,7 @@ FaultArg make_fault(py::handle legs_value, py::handle step, py::handle kind, py:
   } else {
     type_error("legs", "leg names (a list of str, or \"R1,R3\")", legs_value);
   }
-  if (target != sim::Strikes::sensor) {
+  if (target != body::Strikes::sensor) {
     if (f.legs.empty() || (f.legs.size() == 1 && f.legs.front().empty())) {
       value_error("legs", "name at least one leg, e.g. [\"R1\"]");
     }
@@ -233,7 +233,7 @@ FaultArg make_fault(py::handle legs_value, py::handle step, py::handle kind, py:
       if (leg.empty()) value_error("legs", "an empty leg name");
     }
   }
-  f.step = whole(step, "step", Limits<long>{0, sim::kMaxSteps});
+  f.step = whole(step, "step", Limits<long>{0, body::kMaxSteps});
   f.recover = recover;
   return f;
 }
@@ -241,16 +241,16 @@ FaultArg make_fault(py::handle legs_value, py::handle step, py::handle kind, py:
 std::string fault_text(const FaultArg& f) {
   std::string out;
   for (const std::string& leg : f.legs) out += (out.empty() ? "" : ",") + leg;
-  if (f.legs.empty()) out = sim::kSensorTarget;
+  if (f.legs.empty()) out = body::kSensorTarget;
   if (f.joint) out += "." + *f.joint;
   if (f.kind != kLegFault) out += ":" + f.kind;
   if (f.value) out += fmt::format("={}", *f.value);
   return out + "@" + std::to_string(f.step);
 }
 
-sim::FaultTimeline faults(const robot::Morphology& morph, py::handle value, std::string_view name,
-                          bool recoveries) {
-  sim::FaultTimeline out;
+body::FaultTimeline faults(const robot::Morphology& morph, py::handle value, std::string_view name,
+                           bool recoveries) {
+  body::FaultTimeline out;
   if (value.is_none()) return out;
   std::vector<py::object> list;
   if (PyUnicode_Check(value.ptr()) || py::isinstance<FaultArg>(value)) {
@@ -266,8 +266,8 @@ sim::FaultTimeline faults(const robot::Morphology& morph, py::handle value, std:
         list.size() == 1 && !iterable(value) ? std::string(name) : item(name, i);
     const py::handle h = list[i];
     if (PyUnicode_Check(h.ptr())) {
-      out.push_back(
-          named(where, [&] { return sim::parse_fault(morph, h.cast<std::string>(), recoveries); }));
+      out.push_back(named(
+          where, [&] { return body::parse_fault(morph, h.cast<std::string>(), recoveries); }));
       continue;
     }
     if (!py::isinstance<FaultArg>(h)) {
@@ -279,7 +279,7 @@ sim::FaultTimeline faults(const robot::Morphology& morph, py::handle value, std:
     }
     // The object's own parts were checked when it was made; its legs are checked here, against
     // the robot, through the CLI's parser of its text (one parser, one set of messages).
-    out.push_back(named(where, [&] { return sim::parse_fault(morph, fault_text(f), f.recover); }));
+    out.push_back(named(where, [&] { return body::parse_fault(morph, fault_text(f), f.recover); }));
   }
   return out;
 }

@@ -14,10 +14,10 @@
 #include <string_view>
 #include <vector>
 
+#include "body/events.h"
 #include "common/limits.h"
 #include "robot/leg_sets.h"
 #include "robot/morphology.h"
-#include "sim/events.h"
 
 namespace multicpg::python {
 
@@ -88,7 +88,7 @@ std::string fault_text(const FaultArg& f);
 
 // A fault timeline entry list: None, one item or an iterable of items, each a Fault, a Recovery
 // or the CLI's text "R1,R3@600" (a failure, or in `recoveries` a recovery).
-sim::FaultTimeline faults(const robot::Morphology& morph, py::handle value, std::string_view name,
-                          bool recoveries);
+body::FaultTimeline faults(const robot::Morphology& morph, py::handle value, std::string_view name,
+                           bool recoveries);
 
 }  // namespace multicpg::python

@@ -108,7 +108,7 @@ const Signature& learn_signature() {
 py::dict learn(const Keywords& k) {
   const std::shared_ptr<Robot> robot = with_terrain(robot_arg(k["robot"]), k["terrain"]);
   const robot::Morphology& morph = robot->morph();
-  const sim::FaultTimeline timeline = fault_timeline(morph, k);
+  const body::FaultTimeline timeline = fault_timeline(morph, k);
   experiments::RunSpec spec = run_spec(*robot, {}, timeline, learning_options(k));
   spec.record.steps = flag(k["record"], "record");
   Watch watch(k["progress"], "learn", 0, k["observer"], &morph);
@@ -184,14 +184,14 @@ py::dict tunnel(const Keywords& k) {
   walked.sim = sim_options(k, false);
   const std::shared_ptr<Robot> robot = robot_of(std::move(walked));
   const robot::Morphology& morph = robot->morph();
-  const long max_steps = whole(k["max_steps"], "max_steps", sim::kRunStepsLimits);
+  const long max_steps = whole(k["max_steps"], "max_steps", body::kRunStepsLimits);
   std::string video;
   if (!k["video"].is_none()) video = path(k["video"], "video");
   if (!video.empty() &&
       named("video", [&] { return report::film_format(video); }) != report::FilmFormat::video) {
     value_error("video", "must name an .mp4 file");
   }
-  sim::StartSpec start;
+  body::StartSpec start;
   if (!k["periods"].is_none()) start.periods = periods(morph, k["periods"], "periods");
   std::optional<learning::CompensationOptions> options;
   if (learns) options = learning_options(k);

@@ -36,6 +36,7 @@ namespace mp = multicpg::python;
 PYBIND11_MODULE(_multicpg, m) {
   namespace learning = multicpg::learning;
   namespace sim = multicpg::sim;
+  namespace body = multicpg::body;
   namespace report = multicpg::report;
   using py::arg;
   m.doc() = "multicpg: multiple chaotic CPGs driving MuJoCo robots, and their learning.";
@@ -88,7 +89,7 @@ PYBIND11_MODULE(_multicpg, m) {
   m.attr("PERIOD_SET") = py::tuple(py::cast(learning::AnnealingParams{}.period_set));
   m.attr("GAIT_PERIODS") = py::tuple(py::cast(std::vector<int>(
       multicpg::robot::kGaitPeriods.begin(), multicpg::robot::kGaitPeriods.end())));
-  m.attr("MAX_STEPS") = sim::kMaxSteps;
+  m.attr("MAX_STEPS") = body::kMaxSteps;
   m.attr("FRAME_SIDE_LIMITS") =
       py::make_tuple(report::kFrameSideLimits.lo, report::kFrameSideLimits.hi);
 

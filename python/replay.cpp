@@ -65,7 +65,7 @@ class Gate final : public sim::Observer {
   void on_step(const sim::SimModel& m, const sim::SimState& s) override {
     if (open) next_.on_step(m, s);
   }
-  void on_event(const sim::SimModel& m, const sim::SimState& s, const sim::Event& e) override {
+  void on_event(const sim::SimModel& m, const sim::SimState& s, const body::Event& e) override {
     if (open) next_.on_event(m, s, e);
   }
   bool open = false;
@@ -91,7 +91,7 @@ void write_page(const std::string& html, py::handle out) {
 // with the Simulation's after it walked the same steps.
 py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::handle out,
                             py::handle title_arg) {
-  const long steps = whole(steps_arg, "steps", sim::kRunStepsLimits);
+  const long steps = whole(steps_arg, "steps", body::kRunStepsLimits);
   const std::string title = text(title_arg, "title");
   const std::string bytes = state_bytes.cast<py::bytes>();
   const json document = named("sim", [&] { return unseal_cbor(bytes); });
@@ -101,7 +101,7 @@ py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::ha
   }
   const experiments::RobotSpec walked = robot_spec(document.at("robot"), "sim");
   std::string html;
-  sim::Pose2 end;
+  body::Pose2 end;
   {
     const py::gil_scoped_release release;
     const sim::SimModel model = experiments::make_model(walked);
@@ -109,7 +109,7 @@ py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::ha
         sim::checkpoint_from_json(model, document.at("checkpoint"));
     report::ReplayRecorder recorder(checkpoint.walked);
     Gate gate(recorder);
-    sim::Stepper stepper(model, sim::StartSpec{{}, 0}, sim::FaultTimeline{}, &gate);
+    sim::Stepper stepper(model, body::StartSpec{{}, 0}, body::FaultTimeline{}, &gate);
     stepper.restore(checkpoint);
     std::optional<learning::SteeringState> steering;
     if (!document.at("steering").is_null()) {

@@ -46,16 +46,16 @@ Params fault_params() {
           {"recoveries", py::none()}};
 }
 
-sim::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k) {
-  const long at = whole(k["disable_at"], "disable_at", sim::kStepLimits);
-  sim::FaultTimeline timeline = sim::fail_at(legs(morph, k["disable"], "disable"), at);
-  for (sim::Fault& f : faults(morph, k["faults"], "faults", false)) {
+body::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k) {
+  const long at = whole(k["disable_at"], "disable_at", body::kStepLimits);
+  body::FaultTimeline timeline = body::fail_at(legs(morph, k["disable"], "disable"), at);
+  for (body::Fault& f : faults(morph, k["faults"], "faults", false)) {
     timeline.push_back(std::move(f));
   }
-  for (sim::Fault& f : faults(morph, k["recoveries"], "recoveries", true)) {
+  for (body::Fault& f : faults(morph, k["recoveries"], "recoveries", true)) {
     timeline.push_back(std::move(f));
   }
-  sim::sort_timeline(timeline);
+  body::sort_timeline(timeline);
   return timeline;
 }
 
@@ -132,7 +132,7 @@ Params progress_params() {
   return {{"progress", py::bool_(true)}};
 }
 
-experiments::RunSpec run_spec(const Robot& robot, sim::StartSpec start, sim::FaultTimeline faults,
+experiments::RunSpec run_spec(const Robot& robot, body::StartSpec start, body::FaultTimeline faults,
                               std::optional<learning::CompensationOptions> learning) {
   experiments::RunSpec spec;
   spec.robot = robot.spec;

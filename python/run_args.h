@@ -8,11 +8,11 @@
 
 #include <optional>
 
+#include "body/events.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "python/keywords.h"
 #include "python/robots.h"
-#include "sim/events.h"
 
 namespace multicpg::python {
 
@@ -21,7 +21,7 @@ namespace py = pybind11;
 // disable, disable_at, faults, recoveries: what fails when (`disable` at `disable_at`, then
 // `faults` and `recoveries`, in step order).
 Params fault_params();
-sim::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k);
+body::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k);
 
 // mode, learner, learner_options, steering, hold_windows, monitor_windows, period_learning,
 // beta, threshold, window, settle, max_trials, seed: the options of `multicpg learn`.
@@ -34,7 +34,7 @@ learning::CompensationOptions learning_options(const Keywords& k);
 Params progress_params();
 
 // A run checked whole (experiments::validate); a bad value is a ValueError naming its argument.
-experiments::RunSpec run_spec(const Robot& robot, sim::StartSpec start, sim::FaultTimeline faults,
+experiments::RunSpec run_spec(const Robot& robot, body::StartSpec start, body::FaultTimeline faults,
                               std::optional<learning::CompensationOptions> learning);
 
 }  // namespace multicpg::python

@@ -41,7 +41,7 @@ class CpgRecorder final : public sim::Observer {
     if (next != nullptr) next->on_step(model, state);
   }
   void on_event(const sim::SimModel& model, const sim::SimState& state,
-                const sim::Event& event) override {
+                const body::Event& event) override {
     if (next != nullptr) next->on_event(model, state, event);
   }
   void append(const sim::SimState& state) {
@@ -66,9 +66,9 @@ class Simulation {
   }
   // A simulation continuing from `state` (copies and unpickled simulations).
   Simulation(const State& state, bool record) : robot_(state.robot), recording_(record) {
-    stepper_ =
-        std::make_unique<sim::Stepper>(*robot_->model, sim::StartSpec{{}, 0}, sim::FaultTimeline{},
-                                       &recorder_, recording_ ? &record_ : nullptr);
+    stepper_ = std::make_unique<sim::Stepper>(*robot_->model, body::StartSpec{{}, 0},
+                                              body::FaultTimeline{}, &recorder_,
+                                              recording_ ? &record_ : nullptr);
     start();
     restore_locked(state);
   }
@@ -85,7 +85,7 @@ class Simulation {
   }
 
   void step(py::handle n_arg, py::handle progress) {
-    const long n = whole(n_arg, "n", sim::kStepLimits);
+    const long n = whole(n_arg, "n", body::kStepLimits);
     Watch watch(progress, "step", n);
     {
       const py::gil_scoped_release release;
@@ -107,7 +107,7 @@ class Simulation {
     if (list.empty()) value_error("legs", "name at least one leg, e.g. \"R1\" or [\"R1\", \"R3\"]");
     const auto lock = lock_with_gil();
     named("legs", [&] {
-      stepper_->apply_now(sim::Fault{0, list, !failed});
+      stepper_->apply_now(body::Fault{0, list, !failed});
       return 0;
     });
   }
@@ -144,16 +144,16 @@ class Simulation {
   // swing cut.
   py::dict walk_window(py::handle steps_arg) {
     const long steps = whole(steps_arg, "steps", learning::kWindowStepsLimits);
-    sim::WindowMeasure m;
+    body::WindowMeasure m;
     Watch watch(py::bool_(false), "walk_window", steps);
     {
       const py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(mutex_);
       require_room(steps, "steps");
-      const sim::Pose2 from = stepper_->pose();
+      const body::Pose2 from = stepper_->pose();
       cut_sum_ = 0.0;
       watched_steps(steps, watch);
-      m = sim::measure_window(from, stepper_->pose(), learning::course_yaw_deg(steering_));
+      m = body::measure_window(from, stepper_->pose(), learning::course_yaw_deg(steering_));
       m.steering_effort = cut_sum_ / static_cast<double>(steps);
     }
     return py::dict(py::arg("yaw_deg") = m.yaw_deg, py::arg("path_deg") = m.path_deg,
@@ -213,7 +213,7 @@ class Simulation {
     sim::measure_walk(*robot_->model, settle, walked - settle, window, result);
     record_ = std::move(result.record);
     py::list windows;
-    for (const sim::WindowMeasure& m : result.windows) {
+    for (const body::WindowMeasure& m : result.windows) {
       windows.append(py::dict(py::arg("yaw_deg") = m.yaw_deg, py::arg("path_deg") = m.path_deg));
     }
     return py::dict(
@@ -226,7 +226,7 @@ class Simulation {
 
   py::tuple pose() const {
     const auto lock = lock_with_gil();
-    const sim::Pose2 p = stepper_->pose();
+    const body::Pose2 p = stepper_->pose();
     return py::make_tuple(p.x, p.y, p.yaw_deg);
   }
 
@@ -282,7 +282,7 @@ class Simulation {
     report::FilmSpec spec;
     spec.out = path(out_arg, "out");
     named("out", [&] { return report::film_format(spec.out); });
-    const long steps = whole(steps_arg, "steps", sim::kStepLimits);
+    const long steps = whole(steps_arg, "steps", body::kStepLimits);
     spec.speed = whole(speed_arg, "speed", report::kFilmSpeedLimits);
     spec.width = whole(width_arg, "width", report::kFrameSideLimits);
     spec.height = whole(height_arg, "height", report::kFrameSideLimits);
@@ -394,12 +394,12 @@ class Simulation {
     return a;
   }
 
-  // A run walks at most sim::kMaxSteps steps in all, as the CLI's runs.
+  // A run walks at most body::kMaxSteps steps in all, as the CLI's runs.
   void require_room(long n, const char* name) const {
-    if (n > sim::kMaxSteps - stepper_->step_count()) {
+    if (n > body::kMaxSteps - stepper_->step_count()) {
       value_error(name, "the run has walked " + std::to_string(stepper_->step_count()) +
                             " steps; with " + std::to_string(n) + " more it would pass the " +
-                            sim::kStepLimits.text() + " a run may walk");
+                            body::kStepLimits.text() + " a run may walk");
     }
   }
 
@@ -430,7 +430,7 @@ const Signature& simulation_signature() {
       new Signature("Simulation", {{"robot", py::str("hexapod")}},
                     join({{{"periods", py::int_(robot::kDefaultPeriod)}, {"terrain", py::none()}},
                           fault_params(),
-                          {{"warmup", py::int_(sim::kControllerWarmup)},
+                          {{"warmup", py::int_(body::kControllerWarmup)},
                            {"record", py::bool_(true)},
                            {"seed", py::int_(1)}}}));
   return *s;
@@ -439,15 +439,15 @@ const Signature& simulation_signature() {
 std::unique_ptr<Simulation> make_simulation(const Keywords& k) {
   const std::shared_ptr<Robot> robot = with_terrain(robot_arg(k["robot"]), k["terrain"]);
   const robot::Morphology& morph = robot->morph();
-  sim::StartSpec start{periods(morph, k["periods"], "periods"),
-                       whole(k["warmup"], "warmup", sim::kStepLimits), seed(k["seed"], "seed")};
+  body::StartSpec start{periods(morph, k["periods"], "periods"),
+                        whole(k["warmup"], "warmup", body::kStepLimits), seed(k["seed"], "seed")};
   const experiments::RunSpec spec =
       run_spec(*robot, std::move(start), fault_timeline(morph, k), std::nullopt);
   return std::make_unique<Simulation>(robot, spec, flag(k["record"], "record"));
 }
 
 // (x, y, yaw_deg), as Simulation.pose() gives it.
-sim::Pose2 pose_arg(py::handle value, std::string_view name) {
+body::Pose2 pose_arg(py::handle value, std::string_view name) {
   if (PyUnicode_Check(value.ptr()) || PySequence_Check(value.ptr()) == 0 ||
       PySequence_Size(value.ptr()) != 3) {
     PyErr_Clear();
@@ -580,8 +580,8 @@ void register_simulations(py::module_& m) {
   m.def(
       "measure_window",
       [](py::object start, py::object end) {
-        const sim::WindowMeasure w =
-            sim::measure_window(mp::pose_arg(start, "start"), mp::pose_arg(end, "end"));
+        const body::WindowMeasure w =
+            body::measure_window(mp::pose_arg(start, "start"), mp::pose_arg(end, "end"));
         return py::dict(arg("yaw_deg") = w.yaw_deg, arg("path_deg") = w.path_deg,
                         arg("forward_m") = w.forward_m, arg("lateral_m") = w.lateral_m);
       },

@@ -44,8 +44,8 @@ void Watch::on_step(const sim::SimModel& /*model*/, const sim::SimState& /*state
 }
 
 void Watch::on_event(const sim::SimModel& /*model*/, const sim::SimState& /*state*/,
-                     const sim::Event& e) {
-  if (e.kind != sim::EventKind::trial_end) return;
+                     const body::Event& e) {
+  if (e.kind != body::EventKind::trial_end) return;
   ++trial_count_;
   deviation_ = e.deviation_deg;
   if (trials_.is_none()) return;

@@ -38,7 +38,7 @@ class Watch final : public sim::Observer {
 
   void on_step(const sim::SimModel& model, const sim::SimState& state) override;
   void on_event(const sim::SimModel& model, const sim::SimState& state,
-                const sim::Event& event) override;
+                const body::Event& event) override;
   // The last report (finished), with the GIL held; the bar closes.
   void finish();
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sim/fault_spec.h"
+#include "body/fault_spec.h"
 
 namespace multicpg::report {
 namespace {
@@ -24,21 +24,21 @@ struct Parts {
   bool whole_leg = false;
 };
 
-Parts parts_of(const sim::Fault& fault) {
+Parts parts_of(const body::Fault& fault) {
   const Parts whole{{}, false, true};
   const auto joint_or_leg = [&] {
     return fault.joint ? Parts{{*fault.joint}, false, false} : whole;
   };
   return std::visit(Overloaded{
-                        [&](const sim::LegFault&) { return whole; },
-                        [&](const sim::ShortTibia&) {
+                        [&](const body::LegFault&) { return whole; },
+                        [&](const body::ShortTibia&) {
                           return Parts{{robot::Joint::FTi}, true, false};
                         },
-                        [&](const sim::SlipperyFoot&) {
+                        [&](const body::SlipperyFoot&) {
                           return Parts{{}, true, false};
                         },
-                        [&](const sim::ImuDrift&) { return Parts{}; },
-                        [&](const sim::ImuNoise&) { return Parts{}; },
+                        [&](const body::ImuDrift&) { return Parts{}; },
+                        [&](const body::ImuNoise&) { return Parts{}; },
                         [&](const auto&) { return joint_or_leg(); },  // the segment it moves
                     },
                     fault.kind);
@@ -63,24 +63,24 @@ int leg_root(const mjModel* m, const sim::LegSlots& slots) {
 
 }  // namespace
 
-Rgba kind_colour(const sim::Malfunction& kind) {
+Rgba kind_colour(const body::Malfunction& kind) {
   return std::visit(Overloaded{
-                        [](const sim::LegFault&) {
+                        [](const body::LegFault&) {
                           return Rgba{0.85F, 0.08F, 0.08F, 1.0F};
                         },
-                        [](const sim::LockedJoint&) {
+                        [](const body::LockedJoint&) {
                           return Rgba{0.95F, 0.55F, 0.05F, 1.0F};
                         },
-                        [](const sim::PassiveJoint&) {
+                        [](const body::PassiveJoint&) {
                           return Rgba{0.95F, 0.9F, 0.1F, 1.0F};
                         },
-                        [](const sim::WeakMotor&) {
+                        [](const body::WeakMotor&) {
                           return Rgba{0.6F, 0.25F, 0.85F, 1.0F};
                         },
-                        [](const sim::ShortTibia&) {
+                        [](const body::ShortTibia&) {
                           return Rgba{0.15F, 0.35F, 0.95F, 1.0F};
                         },
-                        [](const sim::SlipperyFoot&) {
+                        [](const body::SlipperyFoot&) {
                           return Rgba{0.1F, 0.85F, 0.9F, 1.0F};
                         },
                         [](const auto&) {
@@ -90,11 +90,11 @@ Rgba kind_colour(const sim::Malfunction& kind) {
                     kind);
 }
 
-Colouring fault_colours(const sim::SimModel& model, const sim::FaultTimeline& in_force) {
+Colouring fault_colours(const sim::SimModel& model, const body::FaultTimeline& in_force) {
   const mjModel* m = model.mj.get();
   const robot::Morphology& morph = model.controller.morphology;
   Colouring out;
-  for (const sim::Fault& f : in_force) {
+  for (const body::Fault& f : in_force) {
     const Parts parts = parts_of(f);
     const Rgba rgba = kind_colour(f.kind);
     for (std::size_t leg : f.legs) {
@@ -119,11 +119,11 @@ Colouring fault_colours(const sim::SimModel& model, const sim::FaultTimeline& in
   return out;
 }
 
-std::string faults_caption(const robot::Morphology& morph, const sim::FaultTimeline& in_force) {
+std::string faults_caption(const robot::Morphology& morph, const body::FaultTimeline& in_force) {
   // The atoms in force (one per leg) joined back into one fault per kind, joint and value.
-  sim::FaultTimeline joined;
-  for (const sim::Fault& f : in_force) {
-    const auto same = std::find_if(joined.begin(), joined.end(), [&](const sim::Fault& j) {
+  body::FaultTimeline joined;
+  for (const body::Fault& f : in_force) {
+    const auto same = std::find_if(joined.begin(), joined.end(), [&](const body::Fault& j) {
       return j.kind == f.kind && j.joint == f.joint;
     });
     if (same == joined.end()) {
@@ -134,9 +134,9 @@ std::string faults_caption(const robot::Morphology& morph, const sim::FaultTimel
     }
   }
   std::string out;
-  for (const sim::Fault& f : joined) {
+  for (const body::Fault& f : joined) {
     if (!out.empty()) out += ", ";
-    out += sim::malfunction_text(morph, f);
+    out += body::malfunction_text(morph, f);
   }
   return out.empty() ? "none" : out;
 }

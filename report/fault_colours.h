@@ -10,20 +10,20 @@
 #include <string>
 #include <vector>
 
+#include "body/faults.h"
 #include "report/render.h"
-#include "sim/faults.h"
 #include "sim/sim.h"
 
 namespace multicpg::report {
 
 // The colour of a fault kind: leg red, locked orange, passive yellow, weak purple, short blue,
 // slip cyan; the sensor kinds grey (drawn nowhere).
-Rgba kind_colour(const sim::Malfunction& kind);
+Rgba kind_colour(const body::Malfunction& kind);
 
 // The geoms of `model`'s robot that the faults in force strike, each with its kind's colour.
-Colouring fault_colours(const sim::SimModel& model, const sim::FaultTimeline& in_force);
+Colouring fault_colours(const sim::SimModel& model, const body::FaultTimeline& in_force);
 
 // The faults in force as a caption: "R1+R3, R2.CTr:locked, imu:drift=0.5", or "none".
-std::string faults_caption(const robot::Morphology& morph, const sim::FaultTimeline& in_force);
+std::string faults_caption(const robot::Morphology& morph, const body::FaultTimeline& in_force);
 
 }  // namespace multicpg::report

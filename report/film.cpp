@@ -6,13 +6,13 @@
 #include <memory>
 #include <sstream>
 
+#include "body/fault_spec.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/interrupt.h"
 #include "common/table.h"
 #include "report/fault_colours.h"
 #include "robot/leg_sets.h"
-#include "sim/fault_spec.h"
 
 namespace multicpg::report {
 namespace {
@@ -116,8 +116,8 @@ void Film::rethrow_failure() {
 namespace {
 
 // What a fault event struck, for a caption: "R1+R3", "R2.CTr locked", "imu drift 0.5".
-std::string fault_event_text(const robot::Morphology& morph, const sim::Fault& fault) {
-  std::string text = sim::malfunction_text(morph, fault);
+std::string fault_event_text(const robot::Morphology& morph, const body::Fault& fault) {
+  std::string text = body::malfunction_text(morph, fault);
   std::replace(text.begin(), text.end(), ':', ' ');
   std::replace(text.begin(), text.end(), '=', ' ');
   return text;
@@ -200,26 +200,26 @@ void FilmObserver::on_step(const sim::SimModel& /*model*/, const sim::SimState& 
 }
 
 void FilmObserver::on_event(const sim::SimModel& model, const sim::SimState& /*state*/,
-                            const sim::Event& e) {
+                            const body::Event& e) {
   const robot::Morphology& morph = model.controller.morphology;
   switch (e.kind) {
-    case sim::EventKind::fault:
+    case body::EventKind::fault:
       caption_ = e.fault ? fault_event_text(morph, *e.fault) + " failed" : "a fault";
       break;
-    case sim::EventKind::recovery:
+    case body::EventKind::recovery:
       caption_ = e.fault ? fault_event_text(morph, *e.fault) + " works again" : "a recovery";
       break;
-    case sim::EventKind::detection:
+    case body::EventKind::detection:
       caption_ = fmt_deviation("deviation ", e.deviation_deg) + ": learning starts";
       break;
-    case sim::EventKind::trial_start:
+    case body::EventKind::trial_start:
       caption_ = "learning: trial " + std::to_string(e.trial);
       break;
-    case sim::EventKind::trial_end:
+    case body::EventKind::trial_end:
       caption_ = "trial " + std::to_string(e.trial) + fmt_deviation(": ", e.deviation_deg) +
                  (e.accepted ? ", kept" : ", rejected");
       break;
-    case sim::EventKind::episode_end:
+    case body::EventKind::episode_end:
       caption_ = std::string(e.accepted ? "walks straight" : "learning stopped") + " after " +
                  std::to_string(e.trial) + " trials";
       break;

@@ -112,7 +112,7 @@ class FilmObserver final : public sim::Observer {
       : film_(film), caption_(std::move(walking)) {}
   void on_step(const sim::SimModel& model, const sim::SimState& state) override;
   void on_event(const sim::SimModel& model, const sim::SimState& state,
-                const sim::Event& event) override;
+                const body::Event& event) override;
   const std::string& caption() const { return caption_; }
 
  private:

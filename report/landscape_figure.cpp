@@ -23,7 +23,7 @@ FigureFiles draw_landscape(const experiments::Landscape& landscape,
                      m.worst_deg,
                      m.holds,
                      m.first_window_passes};
-    for (const sim::WindowMeasure& w : m.windows) p.window_worst_deg.push_back(criterion.error(w));
+    for (const body::WindowMeasure& w : m.windows) p.window_worst_deg.push_back(criterion.error(w));
     p.best = best == i;
     p.learned = static_cast<int>(std::count(learned.begin(), learned.end(), m.periods));
     points.push_back(std::move(p));

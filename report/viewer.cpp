@@ -208,7 +208,7 @@ class Viewer {
       refused_.clear();
       try {
         if (leg < model_.legs.size()) {
-          stepper_.apply_now(sim::Fault{0, {leg}, stepper_.faults().failed(leg)});
+          stepper_.apply_now(body::Fault{0, {leg}, stepper_.faults().failed(leg)});
         }
       } catch (const BadInput& e) {
         refused_ = e.what();

@@ -15,8 +15,8 @@ namespace multicpg::report {
 struct ViewerSpec {
   // Periods (as sim::walk: equal periods keep the clients synchronised, unequal ones free them)
   // and warm-up (default: a running, locked controller).
-  sim::StartSpec start;
-  sim::FaultTimeline faults;
+  body::StartSpec start;
+  body::FaultTimeline faults;
   long steps = 0;  // quit after this many steps; 0 = when the user quits
 };
 

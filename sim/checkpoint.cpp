@@ -8,10 +8,10 @@
 #include <sstream>
 #include <vector>
 
+#include "body/course_json.h"
 #include "common/checksum.h"
 #include "common/errors.h"
 #include "neural/json.h"
-#include "sim/course_json.h"
 
 namespace multicpg::sim {
 namespace {
@@ -25,7 +25,7 @@ constexpr const char* kFormat = "multicpg checkpoint";
 // held the faults in force apart from the schedule.
 constexpr int kVersion = 3;
 // Controller and physics step counters stay below a warm-up plus a run, each at most kMaxSteps.
-constexpr long kMaxCounter = 2 * kMaxSteps;
+constexpr long kMaxCounter = 2 * body::kMaxSteps;
 
 [[noreturn]] void bad(const std::string& what) {
   throw BadInput("the state " + what);
@@ -188,7 +188,7 @@ void check_counter(const char* what, long value) {
 
 // A controller state `model` can be in: stepping it indexes only what exists.
 void check_controller(const SimModel& model, const neural::ControllerState& c,
-                      const FaultSchedule& faults) {
+                      const body::FaultSchedule& faults) {
   const neural::ControllerModel& cm = model.controller;
   if (c.legs.size() != cm.size()) {
     bad(fmt::format("has {} legs, the {} {}", c.legs.size(), cm.morphology.name, cm.size()));
@@ -247,7 +247,7 @@ Json checkpoint_json(const SimModel& model, const StepperCheckpoint& checkpoint)
   for (const mjWarningStat& w : d->warning) warnings.push_back({w.lastinfo, w.number});
   data["warning"] = warnings;
 
-  const FaultSchedule& f = checkpoint.state.faults.schedule;
+  const body::FaultSchedule& f = checkpoint.state.faults.schedule;
   return {{"format", kFormat},
           {"version", kVersion},
           {"robot", model.controller.morphology.name},
@@ -294,9 +294,9 @@ StepperCheckpoint checkpoint_from_json(const SimModel& model, const Json& doc) {
     }
 
     const Json& faults = doc.at("faults");
-    c.state.faults.schedule = FaultSchedule(
-        model.controller.morphology, faults.at("timeline").get<FaultTimeline>(),
-        faults.at("come").get<std::size_t>(), faults.at("applied").get<std::vector<Fault>>());
+    c.state.faults.schedule = body::FaultSchedule(
+        model.controller.morphology, faults.at("timeline").get<body::FaultTimeline>(),
+        faults.at("come").get<std::size_t>(), faults.at("applied").get<std::vector<body::Fault>>());
     read_effects(model, doc.at("effects"), c.state.faults);
     c.state.controller = doc.at("controller").get<neural::ControllerState>();
     check_controller(model, c.state.controller, c.state.faults.schedule);
@@ -309,8 +309,8 @@ StepperCheckpoint checkpoint_from_json(const SimModel& model, const Json& doc) {
     check_counter("step", c.state.step);
     c.state.warnings = doc.at("warnings_seen").get<std::array<int, mjNWARNING>>();
     c.walked = doc.at("walked").get<long>();
-    if (c.walked < 0 || c.walked > kMaxSteps) {
-      bad(fmt::format("has walked {} steps, outside 0..{}", c.walked, kMaxSteps));
+    if (c.walked < 0 || c.walked > body::kMaxSteps) {
+      bad(fmt::format("has walked {} steps, outside 0..{}", c.walked, body::kMaxSteps));
     }
     return c;
   } catch (const Json::exception& e) {

@@ -19,10 +19,10 @@ template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
 // The kinds that give a run its own model.
-bool reshapes(const Fault& fault) {
-  return std::holds_alternative<LockedJoint>(fault.kind) ||
-         std::holds_alternative<ShortTibia>(fault.kind) ||
-         std::holds_alternative<SlipperyFoot>(fault.kind);
+bool reshapes(const body::Fault& fault) {
+  return std::holds_alternative<body::LockedJoint>(fault.kind) ||
+         std::holds_alternative<body::ShortTibia>(fault.kind) ||
+         std::holds_alternative<body::SlipperyFoot>(fault.kind);
 }
 
 // A new model for the run, copied from the one it uses now, for a fault to change: the model it
@@ -35,12 +35,12 @@ mjModel* new_model(const SimModel& model, SimState& state) {
 }
 
 // The joints a fault strikes: its joint, or all three of a leg.
-std::vector<std::size_t> joints_of(const Fault& fault) {
+std::vector<std::size_t> joints_of(const body::Fault& fault) {
   if (fault.joint) return {static_cast<std::size_t>(*fault.joint)};
   return {0, 1, 2};
 }
 
-void set_servo(SimState& state, const Fault& fault, JointCondition::Servo servo) {
+void set_servo(SimState& state, const body::Fault& fault, JointCondition::Servo servo) {
   for (std::size_t leg : fault.legs) {
     for (std::size_t j : joints_of(fault)) {
       state.faults.joints[leg][j].servo = fault.recover ? JointCondition::Servo::driven : servo;
@@ -49,7 +49,8 @@ void set_servo(SimState& state, const Fault& fault, JointCondition::Servo servo)
 }
 
 // Closes (or reopens) the limits of the locked joints on their lock angles.
-void lock(const SimModel& model, SimState& state, const Fault& fault, const LockedJoint& locked) {
+void lock(const SimModel& model, SimState& state, const body::Fault& fault,
+          const body::LockedJoint& locked) {
   set_servo(state, fault, JointCondition::Servo::locked);
   mjModel* m = new_model(model, state);
   const mjModel* original = model.mj.get();
@@ -88,7 +89,7 @@ CapsuleInertia capsule_inertia(double r, double h, double rho) {
 
 // Shortens (or restores) the tibiae: the capsule's cylinder times the fraction left, its mass and
 // inertia with it, the foot moved in by what was lost.
-void shorten(const SimModel& model, SimState& state, const Fault& fault, double fraction) {
+void shorten(const SimModel& model, SimState& state, const body::Fault& fault, double fraction) {
   mjModel* m = new_model(model, state);
   const mjModel* original = model.mj.get();
   const double f = fault.recover ? 1.0 : fraction;
@@ -133,7 +134,8 @@ void shorten(const SimModel& model, SimState& state, const Fault& fault, double 
 
 // Scales (or restores) the feet's friction: with the ground (its contact pair) and with anything
 // else they meet (the tunnel's walls).
-void make_slippery(const SimModel& model, SimState& state, const Fault& fault, double factor) {
+void make_slippery(const SimModel& model, SimState& state, const body::Fault& fault,
+                   double factor) {
   mjModel* m = new_model(model, state);
   const mjModel* original = model.mj.get();
   const double k = fault.recover ? 1.0 : factor;
@@ -154,34 +156,35 @@ void make_slippery(const SimModel& model, SimState& state, const Fault& fault, d
 
 }  // namespace
 
-void apply_fault_effect(const SimModel& model, SimState& state, const Fault& fault) {
+void apply_fault_effect(const SimModel& model, SimState& state, const body::Fault& fault) {
   SensorCondition& sensor = state.faults.sensor;
-  std::visit(
-      Overloaded{
-          [](const LegFault&) {},
-          [&](const LockedJoint& k) { lock(model, state, fault, k); },
-          [&](const PassiveJoint&) { set_servo(state, fault, JointCondition::Servo::passive); },
-          [&](const WeakMotor& k) {
-            for (std::size_t leg : fault.legs) {
-              for (std::size_t j : joints_of(fault)) {
-                state.faults.joints[leg][j].torque_scale = fault.recover ? 1.0 : k.value;
-              }
-            }
-          },
-          [&](const ShortTibia& k) { shorten(model, state, fault, k.value); },
-          [&](const SlipperyFoot& k) { make_slippery(model, state, fault, k.value); },
-          [&](const ImuDrift& k) {
-            sensor.drift_deg_per_s = fault.recover ? 0.0 : k.value;
-            sensor.drift_deg = 0.0;
-          },
-          [&](const ImuNoise& k) {
-            sensor.noise_sigma_deg = fault.recover ? 0.0 : k.value;
-            sensor.noise_deg = 0.0;
-          },
-      },
-      fault.kind);
+  std::visit(Overloaded{
+                 [](const body::LegFault&) {},
+                 [&](const body::LockedJoint& k) { lock(model, state, fault, k); },
+                 [&](const body::PassiveJoint&) {
+                   set_servo(state, fault, JointCondition::Servo::passive);
+                 },
+                 [&](const body::WeakMotor& k) {
+                   for (std::size_t leg : fault.legs) {
+                     for (std::size_t j : joints_of(fault)) {
+                       state.faults.joints[leg][j].torque_scale = fault.recover ? 1.0 : k.value;
+                     }
+                   }
+                 },
+                 [&](const body::ShortTibia& k) { shorten(model, state, fault, k.value); },
+                 [&](const body::SlipperyFoot& k) { make_slippery(model, state, fault, k.value); },
+                 [&](const body::ImuDrift& k) {
+                   sensor.drift_deg_per_s = fault.recover ? 0.0 : k.value;
+                   sensor.drift_deg = 0.0;
+                 },
+                 [&](const body::ImuNoise& k) {
+                   sensor.noise_sigma_deg = fault.recover ? 0.0 : k.value;
+                   sensor.noise_deg = 0.0;
+                 },
+             },
+             fault.kind);
   // Every reshaping fault recovered: the shared model again, exactly as before.
-  const FaultTimeline& in_force = state.faults.schedule.in_force();
+  const body::FaultTimeline& in_force = state.faults.schedule.in_force();
   if (std::none_of(in_force.begin(), in_force.end(), reshapes)) {
     state.faults.model.reset();
   }

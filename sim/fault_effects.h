@@ -11,14 +11,14 @@
 //   jitters; the true yaw does not.
 #pragma once
 
-#include "sim/events.h"
+#include "body/events.h"
 #include "sim/sim.h"
 
 namespace multicpg::sim {
 
 // Applies the effect of a fault or recovery that has just come: state.faults.schedule has taken
 // it (so it is valid, and the faults in force are those after it).
-void apply_fault_effect(const SimModel& model, SimState& state, const Fault& fault);
+void apply_fault_effect(const SimModel& model, SimState& state, const body::Fault& fault);
 
 // One controller step of the yaw sensor's error: its drift grows, a new noise draw (call after
 // each sim_step).

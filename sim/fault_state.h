@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
+#include "body/events.h"
 #include "robot/morphology.h"
-#include "sim/events.h"
 
 namespace multicpg::sim {
 
@@ -32,12 +32,12 @@ struct SensorCondition {
   double drift_deg = 0.0;  // accumulated since the drift started
   double noise_sigma_deg = 0.0;
   double noise_deg = 0.0;  // this step's draw
-  std::mt19937_64 random;  // seeded with the run's seed (sim::StartSpec::seed)
+  std::mt19937_64 random;  // seeded with the run's seed (body::StartSpec::seed)
 };
 
 struct FaultState {
   // The run's timeline, what of it has come and the faults in force (sim::Stepper applies them).
-  FaultSchedule schedule;
+  body::FaultSchedule schedule;
   std::vector<std::array<JointCondition, robot::kJointsPerLeg>> joints;  // per leg
   // While a fault reshapes the robot (a locked joint's range, a short tibia, a slippery foot):
   // the run's own model, never changed once made (a change makes a new one), so a film may draw

@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "body/course_json.h"
 #include "neural/json.h"
 #include "robot/body_json.h"
-#include "sim/course_json.h"
 #include "sim/sim.h"
 
 namespace multicpg::robot {

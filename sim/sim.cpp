@@ -184,7 +184,7 @@ SimState make_sim_state(const SimModel& model, int period) {
   for (int w = 0; w < mjNWARNING; ++w) state.warnings[w] = state.data->warning[w].number;
   state.controller = neural::make_controller_state(model.controller, period);
   state.targets = model.start_pose;
-  state.faults.schedule = FaultSchedule(model.controller.morphology, {});
+  state.faults.schedule = body::FaultSchedule(model.controller.morphology, {});
   state.faults.joints.resize(model.legs.size());
   return state;
 }

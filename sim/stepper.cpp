@@ -30,15 +30,15 @@ void warm_up_controller(const SimModel& model, SimState& state, long steps) {
   }
 }
 
-Stepper::Stepper(const SimModel& model, const StartSpec& start, FaultTimeline faults,
+Stepper::Stepper(const SimModel& model, const body::StartSpec& start, body::FaultTimeline faults,
                  Observer* observer, WalkRecord* record, bool record_joints)
     : model_(model),
       state_(start_walk_state(model, start.periods)),
       observer_(observer),
       record_(record),
       record_joints_(record_joints) {
-  state_.faults.schedule = FaultSchedule(model.controller.morphology, std::move(faults));
-  require_in("start.warmup", start.warmup, kStepLimits);
+  state_.faults.schedule = body::FaultSchedule(model.controller.morphology, std::move(faults));
+  require_in("start.warmup", start.warmup, body::kStepLimits);
   state_.faults.sensor.random.seed(start.seed);
   apply_due_faults();
   warm_up_controller(model_, state_, start.warmup);
@@ -64,13 +64,13 @@ Stepper::Stepper(const SimModel& model, const StepperCheckpoint& checkpoint, Obs
       walked_(checkpoint.walked) {}
 
 void Stepper::apply_due_faults() {
-  FaultSchedule& schedule = state_.faults.schedule;
+  body::FaultSchedule& schedule = state_.faults.schedule;
   const std::size_t first = schedule.applied().size();
   if (schedule.apply_due(walked_, state_.controller) > 0) take_faults(first);
 }
 
 void Stepper::take_faults(std::size_t first) {
-  const std::vector<Fault>& applied = state_.faults.schedule.applied();
+  const std::vector<body::Fault>& applied = state_.faults.schedule.applied();
   for (std::size_t i = first; i < applied.size(); ++i) {
     apply_fault_effect(model_, state_, applied[i]);
     if (observer_ != nullptr) observer_->on_event(model_, state_, fault_event(applied[i]));
@@ -92,7 +92,7 @@ void Stepper::steps(long n) {
   for (long i = 0; i < n; ++i) step();
 }
 
-void Stepper::apply_now(Fault fault) {
+void Stepper::apply_now(body::Fault fault) {
   fault.step = walked_;
   const std::size_t first = state_.faults.schedule.applied().size();
   state_.faults.schedule.apply_now(fault, state_.controller);
@@ -108,17 +108,17 @@ void Stepper::restore(const StepperCheckpoint& checkpoint) {
   walked_ = checkpoint.walked;
 }
 
-void Stepper::emit(Event event) {
+void Stepper::emit(body::Event event) {
   event.step = walked_;
   if (observer_ != nullptr) observer_->on_event(model_, state_, event);
 }
 
-Pose2 Stepper::pose() const {
+body::Pose2 Stepper::pose() const {
   const Position p = trunk_position(model_, state_);
   return {p.x, p.y, trunk_yaw_deg(model_, state_)};
 }
 
-Pose2 Stepper::sensed_pose() const {
+body::Pose2 Stepper::sensed_pose() const {
   const Position p = trunk_position(model_, state_);
   return {p.x, p.y, sensed_yaw_deg(model_, state_)};
 }

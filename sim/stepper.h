@@ -10,33 +10,14 @@
 #include <utility>
 #include <vector>
 
+#include "body/deviation.h"
+#include "body/events.h"
+#include "body/start.h"
 #include "common/limits.h"
-#include "sim/deviation.h"
-#include "sim/events.h"
 #include "sim/sim.h"
 #include "sim/walk_record.h"
 
 namespace multicpg::sim {
-
-// Controller steps that lock the CPGs (p = 4 locks exactly at step 737, neural::lock_steps) and
-// fill the delay lines (126 steps at most) before the robot moves. A fresh controller's empty
-// delay lines move the right legs alone for the first tau_L = 90 steps and swerve the robot
-// about 26 deg left, and p = 4 slips phase until step 737; a warmed-up controller starts the
-// robot in its gait, as the paper's robot was walking before anything failed.
-inline constexpr long kControllerWarmup = 1000;
-
-// Documented ranges of step counts: a run of at least one step, settles and warm-ups of none.
-inline constexpr Limits<long> kRunStepsLimits{1, kMaxSteps};
-inline constexpr Limits<long> kStepLimits{0, kMaxSteps};
-
-// How a run starts.
-struct StartSpec {
-  std::vector<int> periods;  // one per leg; empty = every leg 4. Unequal periods free the clients
-  // Controller steps run alone before the physics starts; 0 = a cold controller (--cold).
-  long warmup = kControllerWarmup;
-  // The run's random stream: a noisy sensor's draws (sim/fault_effects.h).
-  std::uint64_t seed = 1;
-};
 
 // Sees every step and every event of a run; the default does nothing.
 class Observer {
@@ -46,7 +27,7 @@ class Observer {
   virtual void on_start(const SimModel& /*model*/, const SimState& /*state*/) {}
   virtual void on_step(const SimModel& /*model*/, const SimState& /*state*/) {}
   virtual void on_event(const SimModel& /*model*/, const SimState& /*state*/,
-                        const Event& /*event*/) {}
+                        const body::Event& /*event*/) {}
 };
 
 // Several observers as one, told in order (null ones are skipped).
@@ -61,7 +42,7 @@ class Observers final : public Observer {
     for (Observer* o : all_)
       if (o != nullptr) o->on_step(model, state);
   }
-  void on_event(const SimModel& model, const SimState& state, const Event& event) override {
+  void on_event(const SimModel& model, const SimState& state, const body::Event& event) override {
     for (Observer* o : all_)
       if (o != nullptr) o->on_event(model, state, event);
   }
@@ -90,7 +71,7 @@ class Stepper {
   // Makes the start state: make_sim_state, `start.periods`, the faults due at step 0, then the
   // warm-up (so a leg failed from the start is already still while the controller warms up).
   // `observer` and `record` may be null and must outlive the stepper.
-  Stepper(const SimModel& model, const StartSpec& start, FaultTimeline faults = {},
+  Stepper(const SimModel& model, const body::StartSpec& start, body::FaultTimeline faults = {},
           Observer* observer = nullptr, WalkRecord* record = nullptr, bool record_joints = true);
   // Goes on from `checkpoint` (of a stepper of the same model), as restore() on a new stepper
   // but without making and warming up a start state first; nothing recorded.
@@ -103,12 +84,12 @@ class Stepper {
   void step();
   void steps(long n);
   // Tells the observer (the learner's detections, trials and episodes).
-  void emit(Event event);
+  void emit(body::Event event);
   // A fault (or recovery) now, before the next step (its step is set to it), told to the
   // observer like a scheduled one. Throws BadInput (sim::validate's message) when it cannot
   // happen now (a leg that has already failed, a recovery of what is not struck, failing every
   // leg). Scheduled faults still come as planned.
-  void apply_now(Fault fault);
+  void apply_now(body::Fault fault);
   // A deep copy of the run (copy_sim_state, its faults with it), and back: after restore
   // the stepper continues exactly as it did from the checkpoint. The checkpoint must come from a
   // stepper of the same model; the record (if any) is not rewound.
@@ -125,13 +106,13 @@ class Stepper {
     return walked_;
   }  // controller steps since the start (warm-up excluded)
   // The trunk's true pose.
-  Pose2 pose() const;
+  body::Pose2 pose() const;
   // The pose as the robot senses it: the true position (odometry) and the yaw its sensor reads
   // (sim::sensed_yaw_deg: a drifting or noisy sensor's error included). What the learner and the
   // steering reflex see.
-  Pose2 sensed_pose() const;
+  body::Pose2 sensed_pose() const;
   // The run's faults: the timeline, what has come, what is in force, the legs failed now.
-  const FaultSchedule& faults() const { return state_.faults.schedule; }
+  const body::FaultSchedule& faults() const { return state_.faults.schedule; }
 
  private:
   struct Resumed {};

@@ -13,10 +13,10 @@ namespace {
 
 // Named by the spec's keys (OptionError): the CLI and Python name their flags and arguments.
 void check_spec(const SimModel& model, const WalkSpec& spec) {
-  require_in("steps", spec.steps, kRunStepsLimits);
-  require_in("window", spec.window, kRunStepsLimits);
-  require_in("settle", spec.settle, kStepLimits);
-  require_in("start.warmup", spec.start.warmup, kStepLimits);
+  require_in("steps", spec.steps, body::kRunStepsLimits);
+  require_in("window", spec.window, body::kRunStepsLimits);
+  require_in("settle", spec.settle, body::kStepLimits);
+  require_in("start.warmup", spec.start.warmup, body::kStepLimits);
   if (!spec.start.periods.empty() && spec.start.periods.size() != model.legs.size()) {
     throw OptionError("start.periods", "expected " + std::to_string(model.legs.size()) +
                                            " periods, got " +
@@ -30,7 +30,7 @@ void check_spec(const SimModel& model, const WalkSpec& spec) {
     throw OptionError("faults", e.what());
   }
   const long total = spec.settle + spec.steps;
-  for (const Fault& f : spec.faults) {
+  for (const body::Fault& f : spec.faults) {
     if (f.step >= total) {
       throw OptionError("faults", std::string(f.recover ? "a recovery" : "a fault") + " at step " +
                                       std::to_string(f.step) +
@@ -49,8 +49,8 @@ class WindowPoses final : public Observer {
   void on_start(const SimModel& model, const SimState& state) override { take(model, state); }
   void on_step(const SimModel& model, const SimState& state) override { take(model, state); }
 
-  std::vector<Pose2> boundaries;  // rows settle + k * window
-  Pose2 last;                     // the last row
+  std::vector<body::Pose2> boundaries;  // rows settle + k * window
+  body::Pose2 last;                     // the last row
 
  private:
   void take(const SimModel& model, const SimState& state) {
@@ -66,10 +66,10 @@ class WindowPoses final : public Observer {
 };
 
 // The measures of a walk of `steps` measured steps from its window boundary poses and its last.
-void measure_poses(const SimModel& model, long steps, const std::vector<Pose2>& boundaries,
-                   const Pose2& last, WalkResult& result) {
+void measure_poses(const SimModel& model, long steps, const std::vector<body::Pose2>& boundaries,
+                   const body::Pose2& last, WalkResult& result) {
   result.duration_s = static_cast<double>(steps) * model.control_dt;
-  const WindowMeasure whole = measure_window(boundaries.front(), last);
+  const body::WindowMeasure whole = measure_window(boundaries.front(), last);
   result.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
   result.forward_m = whole.forward_m;
   result.lateral_m = whole.lateral_m;
@@ -128,7 +128,7 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec) {
 
 void measure_walk(const SimModel& model, long settle, long steps, long window, WalkResult& result) {
   const WalkRecord& r = result.record;
-  std::vector<Pose2> boundaries;
+  std::vector<body::Pose2> boundaries;
   const auto w = static_cast<std::size_t>(window);
   for (auto row = static_cast<std::size_t>(settle); row < r.rows(); row += w) {
     boundaries.push_back({r.x[row], r.y[row], r.yaw_deg[row]});

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "sim/deviation.h"
+#include "body/deviation.h"
 #include "sim/sim.h"
 #include "sim/stepper.h"
 #include "sim/walk_record.h"
@@ -18,8 +18,8 @@ inline constexpr long kDefaultWindow = 400;
 
 // Step numbers count controller steps from the start of the run (after the warm-up).
 struct WalkSpec {
-  StartSpec start;       // periods and warm-up (default: a running, locked controller)
-  FaultTimeline faults;  // legs that fail or recover, and when
+  body::StartSpec start;       // periods and warm-up (default: a running, locked controller)
+  body::FaultTimeline faults;  // legs that fail or recover, and when
   // Steps walked before measuring (docs/learning.md "Deviation": not counted).
   long settle = 0;
   long steps = 1200;             // measured steps, after the settling ones
@@ -43,7 +43,7 @@ struct WalkResult {
   // wrap(yaw(end) - yaw(start)) of each complete window; positive = left turn.
   std::vector<double> window_deviations_deg;
   // Yaw change and Table 1 path angle of each complete window (sim/deviation.h).
-  std::vector<WindowMeasure> windows;
+  std::vector<body::WindowMeasure> windows;
   double final_yaw_deg = 0.0;  // front trunk yaw at the end; the robot starts at yaw 0
   SimState final_state;        // the robot at the end
 };

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <string>
 
+#include "body/fault_spec.h"
 #include "common/checksum.h"
 #include "common/errors.h"
 #include "common/sealed_cbor.h"
 #include "sim/checkpoint.h"
-#include "sim/fault_spec.h"
 #include "sim/mujoco_guard.h"
 #include "sim/stepper.h"
 
@@ -55,10 +55,10 @@ TEST(SealedCbor, RoundTripsAndRefusesDamageAndDepth) {
 
 TEST(Checkpoint, ARestoredRunContinuesBitForBit) {
   const sim::SimModel& m = hexapod();
-  sim::FaultTimeline faults{{40, {1}, false}, {90, {1}, true}, {90, {4}, false}};
+  body::FaultTimeline faults{{40, {1}, false}, {90, {1}, true}, {90, {4}, false}};
   sim::Stepper original(m, {{5, 4, 4, 4, 4, 6}, 0}, faults);
   original.steps(60);
-  original.apply_now(sim::Fault{0, {2}, false});
+  original.apply_now(body::Fault{0, {2}, false});
   const json doc = unseal_cbor(seal_cbor(sim::checkpoint_json(m, original.checkpoint())));
   sim::Stepper restored(m, {{}, 0});
   restored.restore(sim::checkpoint_from_json(m, doc));
@@ -75,14 +75,14 @@ TEST(Checkpoint, ARestoredRunContinuesBitForBit) {
 TEST(Checkpoint, EveryFaultKindInForceContinuesBitForBit) {
   const sim::SimModel& m = hexapod();
   const robot::Morphology& morph = m.controller.morphology;
-  sim::FaultTimeline faults;
+  body::FaultTimeline faults;
   for (const char* text :
        {"R2.CTr:locked@10", "L1:weak=0.3@10", "R1:short=0.5@20", "L2:slip=0.2@20",
         "R3.FTi:passive@30", "imu:drift=0.5@30", "imu:noise=1@30"}) {
-    faults.push_back(sim::parse_fault(morph, text, false));
+    faults.push_back(body::parse_fault(morph, text, false));
   }
-  faults.push_back(sim::parse_fault(morph, "R1:short=0.5@90", true));
-  sim::StartSpec start{{}, 0};
+  faults.push_back(body::parse_fault(morph, "R1:short=0.5@90", true));
+  body::StartSpec start{{}, 0};
   start.seed = 7;
   sim::Stepper original(m, start, faults);
   original.steps(60);
@@ -147,15 +147,15 @@ TEST(Checkpoint, RefusesAnotherModelAndImpossibleStates) {
 
 TEST(FaultSchedule, ResumesPartWayThroughItsTimeline) {
   const robot::Morphology& morph = robot::morphology(robot::RobotKind::hexapod);
-  const sim::FaultTimeline timeline{{10, {0}, false}, {20, {0}, true}};
-  const sim::FaultSchedule resumed(morph, timeline, 1, {{5, {3}, false}, {10, {0}, false}});
+  const body::FaultTimeline timeline{{10, {0}, false}, {20, {0}, true}};
+  const body::FaultSchedule resumed(morph, timeline, 1, {{5, {3}, false}, {10, {0}, false}});
   EXPECT_EQ(resumed.come(), 1U);
   EXPECT_EQ(resumed.failed_legs(), (std::vector<std::size_t>{0, 3}));
   EXPECT_TRUE(resumed.pending());
   // The applied faults must hold the first `come` of the timeline, and could have happened.
-  EXPECT_THROW(sim::FaultSchedule(morph, timeline, 1, {{5, {3}, false}}), BadInput);
-  EXPECT_THROW(sim::FaultSchedule(morph, timeline, 0, {{5, {3}, true}}), BadInput);
-  EXPECT_THROW(sim::FaultSchedule(morph, timeline, 3, {}), BadInput);
+  EXPECT_THROW(body::FaultSchedule(morph, timeline, 1, {{5, {3}, false}}), BadInput);
+  EXPECT_THROW(body::FaultSchedule(morph, timeline, 0, {{5, {3}, true}}), BadInput);
+  EXPECT_THROW(body::FaultSchedule(morph, timeline, 3, {}), BadInput);
 }
 
 TEST(MujocoGuard, AFatalErrorBecomesAnExceptionAndSimulationGoesOn) {

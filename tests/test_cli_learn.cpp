@@ -161,11 +161,11 @@ TEST(CliLearn, DefaultStepBudgetIsTheDocumentedOne) {
 TEST(CliLearn, TableNumbersTrialsAcrossEpisodes) {
   multicpg::experiments::RunSpec spec;
   spec.learning = multicpg::learning::CompensationOptions{};
-  spec.faults = multicpg::sim::fail_at({0}, 0);
+  spec.faults = multicpg::body::fail_at({0}, 0);
   std::ostringstream out;
   multicpg::apps::LearningTable table(out, spec);
-  const auto event = [](multicpg::sim::EventKind kind, int episode, int trial) {
-    multicpg::sim::Event e;
+  const auto event = [](multicpg::body::EventKind kind, int episode, int trial) {
+    multicpg::body::Event e;
     e.kind = kind;
     e.episode = episode;
     e.trial = trial;
@@ -173,7 +173,7 @@ TEST(CliLearn, TableNumbersTrialsAcrossEpisodes) {
     e.deviation_deg = 10.0;
     return e;
   };
-  using multicpg::sim::EventKind;
+  using multicpg::body::EventKind;
   for (const auto& e : {event(EventKind::detection, 1, 0), event(EventKind::trial_end, 1, 1),
                         event(EventKind::trial_end, 1, 2), event(EventKind::episode_end, 1, 2),
                         event(EventKind::detection, 2, 0), event(EventKind::trial_end, 2, 1),

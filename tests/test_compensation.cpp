@@ -10,7 +10,7 @@
 #include "common/angles.h"
 #include "common/errors.h"
 #include "learning/compensation.h"
-#include "tests/fake_walker.h"
+#include "tests/fake_body.h"
 
 namespace multicpg::learning {
 namespace {
@@ -26,11 +26,11 @@ CompensationOptions options_for(std::uint64_t seed) {
 }
 
 // The legs fail at the start of the walk.
-sim::FaultTimeline failing(std::vector<std::size_t> legs) {
-  return sim::fail_at(legs, 0);
+body::FaultTimeline failing(std::vector<std::size_t> legs) {
+  return body::fail_at(legs, 0);
 }
 
-Periods periods_of(Walker& w) {
+Periods periods_of(body::Body& w) {
   Periods p;
   for (const neural::LegState& leg : w.controller().legs) p.push_back(leg.cpg.period);
   return p;
@@ -38,13 +38,13 @@ Periods periods_of(Walker& w) {
 
 TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
   const CompensationOptions o = options_for(1);
-  FakeWalker walker(RobotKind::hexapod, failing({0}));
+  FakeBody walker(RobotKind::hexapod, failing({0}));
   const LearningResult r = compensate(walker, o);
 
   ASSERT_TRUE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::converged);
   EXPECT_EQ(r.reason, StopReason::below_threshold);
-  EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeWalker::kGainDegPerStep * kDefaultWindowSteps,
+  EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeBody::kGainDegPerStep * kDefaultWindowSteps,
               1e-9);
   EXPECT_LT(r.final_deviation_deg, kDefaultThresholdDeg);
   EXPECT_GE(r.trials, 1);
@@ -70,7 +70,7 @@ TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
   auto run = [&](std::uint64_t seed) {
     const CompensationOptions o = options_for(seed);
-    FakeWalker walker(RobotKind::hexapod, failing({0, 2}));
+    FakeBody walker(RobotKind::hexapod, failing({0, 2}));
     return to_json(compensate(walker, o), morph, {0, 2});
   };
   const nlohmann::json a = run(7);
@@ -81,7 +81,7 @@ TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
 TEST(Compensation, HealthyRobotNeedsNoCompensation) {
   CompensationOptions o = options_for(1);
   o.settle_steps = 10;
-  FakeWalker walker(RobotKind::hexapod);
+  FakeBody walker(RobotKind::hexapod);
   const LearningResult r = compensate(walker, o);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::no_deviation);
@@ -96,12 +96,12 @@ TEST(Compensation, LateFailureIsDetectedAfterIt) {
   CompensationOptions o = options_for(1);
   o.settle_steps = 0;
   // Healthy windows [0,400) and [400,800) come first.
-  FakeWalker walker(RobotKind::hexapod, sim::fail_at({0}, 1000));
+  FakeBody walker(RobotKind::hexapod, body::fail_at({0}, 1000));
   const LearningResult r = compensate(walker, o);
   ASSERT_TRUE(r.detection_step.has_value());
   // [800,1200) holds 200 disabled steps: 19 deg > 8, detected at its end.
   EXPECT_EQ(*r.detection_step, 1200);
-  EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeWalker::kGainDegPerStep * 200, 1e-9);
+  EXPECT_NEAR(r.initial_deviation_deg, 0.25 * FakeBody::kGainDegPerStep * 200, 1e-9);
   EXPECT_TRUE(r.converged());
 }
 
@@ -110,7 +110,7 @@ TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   CompensationOptions o = options_for(3);
   o.annealing.max_trials = 12;
   o.settle_steps = 0;
-  FakeWalker walker(RobotKind::hexapod, failing({0}), 0.2);
+  FakeBody walker(RobotKind::hexapod, failing({0}), 0.2);
   const LearningResult r = compensate(walker, o);
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
@@ -131,7 +131,7 @@ TEST(Compensation, StepBudgetEndsBudgetReachedInBothModes) {
     o.steering = Steering::off;
     // 5 trials of one window (paper) or of the first window over the threshold (robust).
     o.step_budget = 5 * kDefaultWindowSteps;
-    FakeWalker walker(RobotKind::hexapod, failing({0}), 0.2);
+    FakeBody walker(RobotKind::hexapod, failing({0}), 0.2);
     const LearningResult r = compensate(walker, o);
     EXPECT_EQ(r.outcome, Outcome::budget_reached) << to_string(mode);
     EXPECT_FALSE(r.converged());
@@ -146,7 +146,7 @@ TEST(Compensation, StepBudgetEndsBudgetReachedInBothModes) {
 TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
   CompensationOptions o = options_for(4);
   o.settle_steps = 0;
-  FakeWalker walker(RobotKind::quadruped, failing({0, 1, 2}), 0.2);  // only L2: 5 combinations
+  FakeBody walker(RobotKind::quadruped, failing({0, 1, 2}), 0.2);  // only L2: 5 combinations
   const LearningResult r = compensate(walker, o);
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::space_exhausted);
@@ -156,7 +156,7 @@ TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
 TEST(Compensation, JsonHasTheReportedFields) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
   const CompensationOptions o = options_for(1);
-  FakeWalker walker(RobotKind::hexapod, failing({0}));
+  FakeBody walker(RobotKind::hexapod, failing({0}));
   const nlohmann::json j = to_json(compensate(walker, o), morph, {0});
   EXPECT_TRUE(j.at("converged").is_boolean());
   EXPECT_TRUE(j.at("trials").is_number_integer());
@@ -186,10 +186,10 @@ TEST(Compensation, RejectsBadInput) {
   bad([](CompensationOptions& o) { o.annealing.threshold_deg = 0.0; });
   // A timeline no walker can have: a schedule refuses it before any learning.
   const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
-  EXPECT_THROW(sim::FaultSchedule(hex, failing({0, 1, 2, 3, 4, 5})), BadInput);
-  EXPECT_THROW(sim::FaultSchedule(hex, failing({6})), BadInput);
-  EXPECT_THROW(sim::FaultSchedule(hex, failing({1, 1})), BadInput);
-  FakeWalker walker(RobotKind::hexapod);
+  EXPECT_THROW(body::FaultSchedule(hex, failing({0, 1, 2, 3, 4, 5})), BadInput);
+  EXPECT_THROW(body::FaultSchedule(hex, failing({6})), BadInput);
+  EXPECT_THROW(body::FaultSchedule(hex, failing({1, 1})), BadInput);
+  FakeBody walker(RobotKind::hexapod);
   CompensationOptions o = options_for(1);
   o.window_steps = 0;
   EXPECT_THROW(compensate(walker, o), BadInput);
@@ -248,36 +248,36 @@ CompensationOptions robust_options(std::uint64_t seed) {
   return o;
 }
 
-int count(const std::vector<sim::Event>& events, sim::EventKind kind) {
+int count(const std::vector<body::Event>& events, body::EventKind kind) {
   return static_cast<int>(std::count_if(events.begin(), events.end(),
-                                        [&](const sim::Event& e) { return e.kind == kind; }));
+                                        [&](const body::Event& e) { return e.kind == kind; }));
 }
 
 TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
   const CompensationOptions o = robust_options(1);
-  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}});
+  FakeBody walker(RobotKind::hexapod, {{0, {0}, false}});
   const LearningResult r = compensate(walker, o);
   ASSERT_TRUE(r.converged());
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_TRUE(r.episodes[0].held);
   // The run ends with the monitored windows, every one under the threshold on yaw and path.
   ASSERT_EQ(r.final_windows.size(), static_cast<std::size_t>(kDefaultMonitorWindows));
-  for (const sim::WindowMeasure& m : r.final_windows) EXPECT_LT(m.worst_deg(), 8.0);
-  EXPECT_EQ(count(walker.events, sim::EventKind::detection), 1);
-  EXPECT_EQ(count(walker.events, sim::EventKind::trial_end), r.trials);
-  EXPECT_EQ(count(walker.events, sim::EventKind::episode_end), 1);
+  for (const body::WindowMeasure& m : r.final_windows) EXPECT_LT(m.worst_deg(), 8.0);
+  EXPECT_EQ(count(walker.events, body::EventKind::detection), 1);
+  EXPECT_EQ(count(walker.events, body::EventKind::trial_end), r.trials);
+  EXPECT_EQ(count(walker.events, body::EventKind::episode_end), 1);
 }
 
 TEST(RobustCompensation, RefusesAWalkerThatHasWalked) {
   const CompensationOptions o = robust_options(1);
-  FakeWalker walked(RobotKind::hexapod, {{0, {0}, false}});
+  FakeBody walked(RobotKind::hexapod, {{0, {0}, false}});
   walked.step();
   EXPECT_THROW(compensate(walked, o), std::invalid_argument);
 }
 
 TEST(RobustCompensation, SecondFaultLearnsTwice) {
   const CompensationOptions o = robust_options(2);
-  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {4}, false}});
+  FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {4}, false}});
   const LearningResult r = compensate(walker, o);
   ASSERT_EQ(r.episodes.size(), 2u);
   EXPECT_LT(r.episodes[0].detection_step, 30000);
@@ -287,15 +287,15 @@ TEST(RobustCompensation, SecondFaultLearnsTwice) {
   // The second episode never changes a failed leg (R1, L2).
   EXPECT_EQ(r.periods[0], kStartPeriod);
   EXPECT_EQ(r.periods[4], r.episodes[0].periods[4]);
-  EXPECT_EQ(count(walker.events, sim::EventKind::fault), 2);
+  EXPECT_EQ(count(walker.events, body::EventKind::fault), 2);
 }
 
 TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
   const CompensationOptions o = robust_options(3);
-  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {0}, true}});
+  FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {0}, true}});
   const LearningResult r = compensate(walker, o);
   ASSERT_EQ(r.episodes.size(), 1u);
-  EXPECT_EQ(count(walker.events, sim::EventKind::recovery), 1);
+  EXPECT_EQ(count(walker.events, body::EventKind::recovery), 1);
   const neural::ControllerState& c = walker.controller();
   for (std::size_t i = 0; i < c.legs.size(); ++i) {
     EXPECT_EQ(c.legs[i].cpg.period, c.legs[0].cpg.period) << "leg " << i;
@@ -303,22 +303,22 @@ TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
       EXPECT_TRUE(neural::follows_master(c, i)) << "leg " << i;
     }
   }
-  for (const sim::WindowMeasure& m : r.final_windows) EXPECT_LT(std::abs(m.yaw_deg), 1e-9);
+  for (const body::WindowMeasure& m : r.final_windows) EXPECT_LT(std::abs(m.yaw_deg), 1e-9);
 }
 
 TEST(RobustCompensation, PaperModeRefusesTimelines) {
   CompensationOptions o = robust_options(1);
   o.mode = Mode::paper;
-  FakeWalker twice(RobotKind::hexapod, {{0, {0}, false}, {900, {0}, true}});
+  FakeBody twice(RobotKind::hexapod, {{0, {0}, false}, {900, {0}, true}});
   EXPECT_THROW(compensate(twice, o), OptionError);
   EXPECT_EQ(twice.step_count(), 0);
   const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
   // Timelines that cannot happen never make a walker.
-  EXPECT_THROW(sim::FaultSchedule(hex, {{900, {0}, true}}), BadInput);    // recovery before fault
-  EXPECT_THROW(sim::FaultSchedule(hex, {{0, {0, 0}, false}}), BadInput);  // a leg listed twice
+  EXPECT_THROW(body::FaultSchedule(hex, {{900, {0}, true}}), BadInput);    // recovery before fault
+  EXPECT_THROW(body::FaultSchedule(hex, {{0, {0, 0}, false}}), BadInput);  // a leg listed twice
   o = robust_options(1);
   o.hold_windows = 0;
-  FakeWalker walker(RobotKind::hexapod, {{0, {0}, false}});
+  FakeBody walker(RobotKind::hexapod, {{0, {0}, false}});
   EXPECT_THROW(compensate(walker, o), OptionError);
 }
 

@@ -10,11 +10,11 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
+#include "body/course_json.h"
+#include "body/fault_spec.h"
 #include "common/errors.h"
 #include "robot/terrain.h"
-#include "sim/course_json.h"
 #include "sim/fault_effects.h"
-#include "sim/fault_spec.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -34,8 +34,8 @@ const robot::Morphology& morph() {
   return hexapod().controller.morphology;
 }
 
-sim::Fault fault(const std::string& text, bool recover = false) {
-  return sim::parse_fault(morph(), text, recover);
+body::Fault fault(const std::string& text, bool recover = false) {
+  return body::parse_fault(morph(), text, recover);
 }
 
 double actuator_force(const sim::Stepper& s, std::size_t leg, Joint joint) {
@@ -69,7 +69,7 @@ TEST(Faults, ALockAtAGivenAngleHoldsThere) {
   sim::Stepper s(hexapod(), {}, {fault("R1.TC:locked=30@0")});
   s.steps(400);
   EXPECT_NEAR(angle(s, r1, Joint::TC) * kDeg, 30.0, 1.0);
-  EXPECT_THROW(sim::validate(morph(), {fault("R1.TC:locked=100@0")}), BadInput);  // past +-70
+  EXPECT_THROW(body::validate(morph(), {fault("R1.TC:locked=100@0")}), BadInput);  // past +-70
 }
 
 TEST(Faults, APassiveJointsMotorAppliesNoTorqueAndRecoveryRestoresIt) {
@@ -170,10 +170,10 @@ TEST(Faults, ImuDriftBendsTheSensedYawNotTheTrueOne) {
 }
 
 TEST(Faults, ImuNoiseIsSeededAndItsRecoveryEndsIt) {
-  const sim::FaultTimeline noisy{fault("imu:noise=1@0"), fault("imu:noise@300", true)};
-  sim::Stepper a(hexapod(), {{}, sim::kControllerWarmup, 7}, noisy);
-  sim::Stepper b(hexapod(), {{}, sim::kControllerWarmup, 7}, noisy);
-  sim::Stepper c(hexapod(), {{}, sim::kControllerWarmup, 8}, noisy);
+  const body::FaultTimeline noisy{fault("imu:noise=1@0"), fault("imu:noise@300", true)};
+  sim::Stepper a(hexapod(), {{}, body::kControllerWarmup, 7}, noisy);
+  sim::Stepper b(hexapod(), {{}, body::kControllerWarmup, 7}, noisy);
+  sim::Stepper c(hexapod(), {{}, body::kControllerWarmup, 8}, noisy);
   double spread = 0.0;
   for (int i = 0; i < 300; ++i) {
     a.step();
@@ -212,35 +212,35 @@ TEST(FaultText, EveryKindReadsBackAsWritten) {
        {"R1@0", "R1+R3@6000", "R2.CTr:locked@0", "R2.CTr:locked=40@5", "R3.FTi:passive@0",
         "L1:weak=0.3@0", "L1.TC:weak=0.5@0", "R1:short=0.5@0", "L2:slip=0.2@0", "imu:drift=0.5@0",
         "imu:noise=1@0", "imu:drift=-2.5@10"}) {
-    const sim::Fault f = fault(text);
-    EXPECT_EQ(sim::fault_text(morph(), f), text);
+    const body::Fault f = fault(text);
+    EXPECT_EQ(body::fault_text(morph(), f), text);
     const nlohmann::json j = f;
-    EXPECT_EQ(j.get<sim::Fault>(), f) << text;
+    EXPECT_EQ(j.get<body::Fault>(), f) << text;
   }
   // A whole leg keeps the record it always had.
   EXPECT_EQ(nlohmann::json(fault("R1,R3@5")),
             nlohmann::json::parse(R"({"step": 5, "legs": [0, 2], "recover": false})"));
 }
 
-// The learning records' form of a run's faults (sim::faults_record): the paper's one whole-leg
+// The learning records' form of a run's faults (body::faults_record): the paper's one whole-leg
 // failure as its legs and step, anything else as the timeline itself.
 TEST(FaultJson, RecordsKeepOneLegFailureAsDisabledAndFailStep) {
-  EXPECT_EQ(sim::faults_record({fault("R1+R3@600")}),
+  EXPECT_EQ(body::faults_record({fault("R1+R3@600")}),
             nlohmann::json::parse(R"({"disabled": [0, 2], "fail_step": 600, "faults": []})"));
-  EXPECT_EQ(sim::faults_record({}),
+  EXPECT_EQ(body::faults_record({}),
             nlohmann::json::parse(R"({"disabled": [], "fail_step": 0, "faults": []})"));
-  const sim::FaultTimeline other{fault("R2.CTr:locked@5")};
+  const body::FaultTimeline other{fault("R2.CTr:locked@5")};
   EXPECT_EQ(
-      sim::faults_record(other),
+      body::faults_record(other),
       (nlohmann::json{{"disabled", nlohmann::json::array()}, {"fail_step", 0}, {"faults", other}}));
-  const sim::FaultTimeline twice{fault("R1@0"), fault("R1@90", true)};
-  EXPECT_EQ(sim::faults_record(twice).at("faults").get<sim::FaultTimeline>(), twice);
+  const body::FaultTimeline twice{fault("R1@0"), fault("R1@90", true)};
+  EXPECT_EQ(body::faults_record(twice).at("faults").get<body::FaultTimeline>(), twice);
 }
 
 TEST(FaultText, BadSpecsAreOneLineNamingWhatIsWrong) {
   const auto refused = [](const std::string& text, const std::string& mention) {
     try {
-      sim::validate(morph(), {fault(text)});
+      body::validate(morph(), {fault(text)});
       ADD_FAILURE() << text << " accepted";
     } catch (const BadInput& e) {
       EXPECT_NE(std::string(e.what()).find(mention), std::string::npos) << e.what();
@@ -262,12 +262,12 @@ TEST(FaultText, BadSpecsAreOneLineNamingWhatIsWrong) {
   refused("R9:weak=0.5@0", "R9");
   refused("R1:weak=0.5", "LEGS@STEP");
   refused("R1:weak=0.5@-1", "not a step");
-  EXPECT_THROW(sim::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1.TC:weak=0.5@10")}),
+  EXPECT_THROW(body::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1.TC:weak=0.5@10")}),
                BadInput);  // one weak fault on a joint at a time
-  EXPECT_THROW(sim::validate(morph(), {fault("R2.CTr:locked@0", true)}), BadInput);
-  EXPECT_THROW(sim::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1.TC:weak@10", true)}),
+  EXPECT_THROW(body::validate(morph(), {fault("R2.CTr:locked@0", true)}), BadInput);
+  EXPECT_THROW(body::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1.TC:weak@10", true)}),
                BadInput);  // a recovery names what it ends
-  EXPECT_NO_THROW(sim::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1:weak@10", true)}));
+  EXPECT_NO_THROW(body::validate(morph(), {fault("L1:weak=0.3@0"), fault("L1:weak@10", true)}));
 }
 
 }  // namespace

@@ -39,7 +39,7 @@ const sim::SimModel& hexapod() {
 sim::WalkResult walk(int period, std::vector<std::size_t> disabled = {}) {
   sim::WalkSpec spec;
   spec.start.periods.assign(hexapod().legs.size(), period);
-  spec.faults = sim::fail_at(disabled, 0);
+  spec.faults = body::fail_at(disabled, 0);
   spec.settle = kSettle;
   spec.steps = kSteps;
   spec.record = false;

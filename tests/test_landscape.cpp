@@ -74,7 +74,7 @@ BruteForce brute_force(const sim::SimModel& model, std::size_t disabled, const s
                        int windows) {
   sim::SimState state = sim::make_sim_state(model, 4);
   neural::set_disabled(state.controller, disabled, true);
-  for (long t = 0; t < sim::kControllerWarmup; ++t) {
+  for (long t = 0; t < body::kControllerWarmup; ++t) {
     neural::controller_step(model.controller, state.controller);
   }
   neural::set_periods(model.controller, state.controller, p);
@@ -97,7 +97,7 @@ BruteForce brute_force(const sim::SimModel& model, std::size_t disabled, const s
     const double heading = yaw_a * std::numbers::pi / 180.0;
     const double forward = (b.x - a.x) * std::cos(heading) + (b.y - a.y) * std::sin(heading);
     const double lateral = -(b.x - a.x) * std::sin(heading) + (b.y - a.y) * std::cos(heading);
-    const double path = forward < sim::kMinForwardForPathM
+    const double path = forward < body::kMinForwardForPathM
                             ? 90.0
                             : std::atan2(lateral, forward) * 180.0 / std::numbers::pi;
     const double worst = std::max(std::abs(yaw), std::abs(path));

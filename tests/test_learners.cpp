@@ -72,7 +72,7 @@ ScenarioLandscape synthetic_scenario(const std::vector<std::size_t>& failed, boo
     }
     p.holds = true;
     for (double noise : kWindowNoiseDeg) {
-      sim::WindowMeasure w;
+      body::WindowMeasure w;
       w.yaw_deg = yaw + noise;
       w.path_deg = kPathPerYaw * (yaw + noise);
       p.windows.push_back(w);
@@ -384,7 +384,7 @@ TEST_F(Dataset, AWalkedReplayMeasuresTheLandscapesWindowsInTheirOrder) {
     for (int w = 0; w < walked.hold_windows; ++w) {
       e = std::max(e,
                    learning::kPeriodsAloneCriterion.error(p.windows[static_cast<std::size_t>(w)]));
-      if (!sim::holds(e, learning::kDefaultThresholdDeg)) break;
+      if (!body::holds(e, learning::kDefaultThresholdDeg)) break;
     }
     return e;
   };

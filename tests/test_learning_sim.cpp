@@ -28,7 +28,7 @@ experiments::RunSpec r1_disabled(std::uint64_t seed, bool record = false) {
   o.mode = learning::Mode::paper;
   o.seed = seed;
   spec.start = experiments::learning_start(o.mode);
-  spec.faults = sim::fail_at({robot::leg_index(hexapod().controller.morphology, "R1")}, 0);
+  spec.faults = body::fail_at({robot::leg_index(hexapod().controller.morphology, "R1")}, 0);
   spec.record.steps = record;
   experiments::validate(spec);
   return spec;
@@ -110,9 +110,9 @@ TEST(LearningSim, ALiveTrialWalksTheLandscapesWindowsWhateverCameBefore) {
     const experiments::CombinationMeasure fresh = experiments::measure_combination(
         hexapod(), r1, t.periods, o.hold_windows, o.window_steps, o.annealing.threshold_deg);
     double expected = 0.0;  // robust mode's E: the worst window, stopping at the first over
-    for (const sim::WindowMeasure& w : fresh.windows) {
+    for (const body::WindowMeasure& w : fresh.windows) {
       expected = std::max(expected, w.worst_deg());
-      if (!sim::holds(expected, o.annealing.threshold_deg)) break;
+      if (!body::holds(expected, o.annealing.threshold_deg)) break;
     }
     EXPECT_NEAR(t.deviation_deg, expected, kToleranceDeg) << "trial " << t.trial;
   }
@@ -133,7 +133,7 @@ TEST(LearningSim, AReflexLandscapeRowIsTheLiveRunsFirstTrial) {
   o.max_episodes = 1;
   o.monitor_windows = 1;
   spec.start = experiments::learning_start(o.mode);
-  spec.faults = sim::fail_at(lost, 0);
+  spec.faults = body::fail_at(lost, 0);
   experiments::validate(spec);
   const auto run = experiments::run_learning(hexapod(), spec);
   ASSERT_EQ(run.result.episodes.size(), 1u) << "R1+R3 deviates with the reflex alone";
@@ -153,7 +153,7 @@ TEST(LearningSim, AReflexLandscapeRowIsTheLiveRunsFirstTrial) {
   for (std::size_t w = 0; w < row.windows.size() && w < static_cast<std::size_t>(o.hold_windows);
        ++w) {
     e = std::max(e, learning::robust_deviation(o, row.windows[w]));
-    if (!sim::holds(e, o.annealing.threshold_deg)) break;
+    if (!body::holds(e, o.annealing.threshold_deg)) break;
   }
   EXPECT_EQ(e, first.deviation_deg);
 }

@@ -14,11 +14,11 @@
 #include <set>
 #include <sstream>
 
+#include "body/fault_spec.h"
 #include "cli_runner.h"
 #include "report/image.h"
 #include "robot/morphology.h"
 #include "sim/fault_effects.h"
-#include "sim/fault_spec.h"
 #include "sim/sim.h"
 #include "sim/walk.h"
 
@@ -215,9 +215,9 @@ TEST(Replay, WalkShowsTheSimulatedPosesAndEventsInChromium) {
   const robot::Morphology& morph = model.controller.morphology;
   sim::WalkSpec walk;
   walk.steps = 300;
-  walk.faults = {sim::parse_fault(morph, "R1@0", false),
-                 sim::parse_fault(morph, "R2.CTr:locked@100", false),
-                 sim::parse_fault(morph, "R1@200", true)};
+  walk.faults = {body::parse_fault(morph, "R1@0", false),
+                 body::parse_fault(morph, "R2.CTr:locked@100", false),
+                 body::parse_fault(morph, "R1@200", true)};
   BodyTrace foot(model, "R2_foot");
   walk.observer = &foot;
   sim::walk(model, walk);

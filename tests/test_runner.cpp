@@ -20,7 +20,7 @@
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "robot/leg_sets.h"
-#include "tests/fake_walker.h"
+#include "tests/fake_body.h"
 
 namespace multicpg::experiments {
 namespace {
@@ -238,7 +238,7 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
     }
     o.seed = t.seed;
     o.settle_steps = 0;
-    learning::FakeWalker walker(RobotKind::quadruped, sim::fail_at(disabled, 0));
+    learning::FakeBody walker(RobotKind::quadruped, body::fail_at(disabled, 0));
     return learning::to_json(learning::compensate(walker, o), quad, disabled);
   };
   TempDir one("learn1");

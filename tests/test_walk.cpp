@@ -7,8 +7,8 @@
 #include <numeric>
 #include <thread>
 
+#include "body/deviation.h"
 #include "common/errors.h"
-#include "sim/deviation.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -34,7 +34,7 @@ sim::WalkResult walk(RobotKind kind, int period, std::vector<std::size_t> disabl
   const sim::SimModel& m = model(kind);
   sim::WalkSpec spec;
   spec.start.periods.assign(m.legs.size(), period);
-  spec.faults = sim::fail_at(disabled, 0);
+  spec.faults = body::fail_at(disabled, 0);
   spec.settle = settle;
   spec.steps = steps;
   spec.record = record;
@@ -127,7 +127,7 @@ TEST(Walk, OctopodWalksForward) {
 sim::WalkSpec mixed_spec() {
   sim::WalkSpec spec;
   spec.start.periods = {4, 5, 4, 6, 4, 9};
-  spec.faults = sim::fail_at({2}, 100);
+  spec.faults = body::fail_at({2}, 100);
   spec.steps = 250;
   return spec;
 }
@@ -195,18 +195,18 @@ TEST(Walk, UnequalPeriodsFreeTheClients) {
 TEST(Walk, BadSpecsAreRejected) {
   const sim::SimModel& m = model(RobotKind::quadruped);
   sim::WalkSpec spec;
-  spec.faults = sim::fail_at({0, 1, 2, 3}, 0);
+  spec.faults = body::fail_at({0, 1, 2, 3}, 0);
   EXPECT_THROW(sim::walk(m, spec), BadInput);
   spec.faults = {};
   spec.steps = 0;
   EXPECT_THROW(sim::walk(m, spec), BadInput);
-  spec.steps = sim::kMaxSteps + 1;
+  spec.steps = body::kMaxSteps + 1;
   EXPECT_THROW(sim::walk(m, spec), BadInput);
   spec.steps = 10;
   spec.start.periods = {4, 4};
   EXPECT_THROW(sim::walk(m, spec), BadInput);
   spec.start.periods = {};
-  spec.faults = sim::fail_at({1}, 10);  // past the run
+  spec.faults = body::fail_at({1}, 10);  // past the run
   EXPECT_THROW(sim::walk(m, spec), BadInput);
   spec.faults = {{0, {1}, false}, {5, {1}, false}};  // fails twice
   EXPECT_THROW(sim::walk(m, spec), BadInput);
@@ -223,7 +223,7 @@ TEST(Walk, IntactHexapodWithDefaultsIsStraightFromTheFirstWindow) {
   const sim::SimModel& m = model(RobotKind::hexapod);
   const sim::WalkResult r = sim::walk(m, sim::WalkSpec{});
   ASSERT_EQ(r.windows.size(), 3u);
-  for (const sim::WindowMeasure& w : r.windows) {
+  for (const body::WindowMeasure& w : r.windows) {
     EXPECT_LT(std::abs(w.yaw_deg), 8.0) << w.yaw_deg;
     EXPECT_LT(std::abs(w.path_deg), 8.0) << w.path_deg;
   }
@@ -234,7 +234,7 @@ TEST(Walk, R1AndL1TurnsMirrorEachOther) {
   const sim::SimModel& m = model(RobotKind::hexapod);
   const auto mean_turn = [&](std::size_t leg) {
     sim::WalkSpec spec;
-    spec.faults = sim::fail_at({leg}, 0);
+    spec.faults = body::fail_at({leg}, 0);
     spec.record = false;
     return mean(sim::walk(m, spec).window_deviations_deg);
   };
@@ -250,10 +250,10 @@ TEST(Walk, R1AndL1TurnsMirrorEachOther) {
 TEST(Stepper, FaultsAndRecoveriesReachTheObserverAtTheirSteps) {
   const sim::SimModel& m = model(RobotKind::hexapod);
   struct Log final : sim::Observer {
-    std::vector<sim::Event> events;
+    std::vector<body::Event> events;
     long steps = 0;
     void on_step(const sim::SimModel&, const sim::SimState&) override { ++steps; }
-    void on_event(const sim::SimModel&, const sim::SimState&, const sim::Event& e) override {
+    void on_event(const sim::SimModel&, const sim::SimState&, const body::Event& e) override {
       events.push_back(e);
     }
   } log;
@@ -262,9 +262,9 @@ TEST(Stepper, FaultsAndRecoveriesReachTheObserverAtTheirSteps) {
   stepper.steps(10);
   EXPECT_EQ(log.steps, 10);
   ASSERT_EQ(log.events.size(), 3u);
-  EXPECT_EQ(log.events[1].kind, sim::EventKind::fault);
+  EXPECT_EQ(log.events[1].kind, body::EventKind::fault);
   EXPECT_EQ(log.events[1].step, 5);
-  EXPECT_EQ(log.events[2].kind, sim::EventKind::recovery);
+  EXPECT_EQ(log.events[2].kind, body::EventKind::recovery);
   EXPECT_EQ(log.events[2].step, 8);
   EXPECT_FALSE(stepper.state().controller.legs[0].disabled);
   EXPECT_TRUE(stepper.state().controller.legs[2].disabled);
@@ -281,11 +281,11 @@ TEST(Stepper, RestoredCheckpointContinuesIdentically) {
     stepper.steps(40);
     return stepper.pose();
   };
-  const sim::Pose2 first = walk_on();
+  const body::Pose2 first = walk_on();
   stepper.restore(saved);
   EXPECT_EQ(stepper.step_count(), 40);
   EXPECT_FALSE(stepper.faults().failed(4));
-  const sim::Pose2 second = walk_on();
+  const body::Pose2 second = walk_on();
   EXPECT_EQ(first.x, second.x);
   EXPECT_EQ(first.y, second.y);
   EXPECT_EQ(first.yaw_deg, second.yaw_deg);
@@ -316,16 +316,16 @@ TEST(Walk, WindowDeviationsWrapAndSign) {
 // A robot walking along +x with its body turned 10 deg left (a compensated crab): against its
 // heading the path is 10 deg to the right; against its course line (+x) it is straight.
 TEST(Walk, PathAngleAgainstTheHeadingOrTheCourse) {
-  const sim::Pose2 start{0.0, 0.0, 10.0};
-  const sim::Pose2 end{0.5, 0.0, 10.0};
-  const sim::WindowMeasure heading = sim::measure_window(start, end);
+  const body::Pose2 start{0.0, 0.0, 10.0};
+  const body::Pose2 end{0.5, 0.0, 10.0};
+  const body::WindowMeasure heading = body::measure_window(start, end);
   EXPECT_NEAR(heading.path_deg, -10.0, 1e-9);
   EXPECT_NEAR(heading.yaw_deg, 0.0, 1e-12);
-  const sim::WindowMeasure course = sim::measure_window(start, end, 0.0);
+  const body::WindowMeasure course = body::measure_window(start, end, 0.0);
   EXPECT_NEAR(course.path_deg, 0.0, 1e-12);
   EXPECT_NEAR(course.forward_m, 0.5, 1e-12);
   // Drifting off the line shows against the course whatever the heading.
-  EXPECT_NEAR(sim::measure_window(start, {0.5, -0.5, 10.0}, 0.0).path_deg, -45.0, 1e-9);
+  EXPECT_NEAR(body::measure_window(start, {0.5, -0.5, 10.0}, 0.0).path_deg, -45.0, 1e-9);
 }
 
 TEST(Physics, NanStateStopsTheRunNamingTheStep) {

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <string_view>
 
+#include "body/fault_spec.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
 #include "report/replay/assets.h"
 #include "robot/leg_sets.h"
-#include "sim/fault_spec.h"
 
 namespace multicpg::report {
 namespace {
@@ -178,25 +178,25 @@ json hfield_json(const ReplayHfield& h, const ReplayGeom* geom, const Extent& ex
 }
 
 // The events with the names a reader knows: legs by name, faults as the CLI writes them.
-json event_json(const robot::Morphology& morph, const sim::Event& e) {
-  json j{{"kind", sim::to_string(e.kind)}, {"step", e.step}};
+json event_json(const robot::Morphology& morph, const body::Event& e) {
+  json j{{"kind", body::to_string(e.kind)}, {"step", e.step}};
   switch (e.kind) {
-    case sim::EventKind::fault:
-    case sim::EventKind::recovery:
+    case body::EventKind::fault:
+    case body::EventKind::recovery:
       j["legs"] = robot::leg_set_name(morph, e.legs);
-      if (e.fault) j["fault"] = sim::malfunction_text(morph, *e.fault);
+      if (e.fault) j["fault"] = body::malfunction_text(morph, *e.fault);
       break;
-    case sim::EventKind::detection:
+    case body::EventKind::detection:
       j["episode"] = e.episode;
       j["deviation_deg"] = e.deviation_deg;
       break;
-    case sim::EventKind::trial_start:
+    case body::EventKind::trial_start:
       j["episode"] = e.episode;
       j["trial"] = e.trial;
       j["periods"] = e.periods;
       break;
-    case sim::EventKind::trial_end:
-    case sim::EventKind::episode_end:
+    case body::EventKind::trial_end:
+    case body::EventKind::episode_end:
       j["episode"] = e.episode;
       j["trial"] = e.trial;
       j["periods"] = e.periods;
@@ -302,7 +302,7 @@ json replay_document(const Recording& r, const std::string& title) {
   json legs = json::array();
   for (const robot::Leg& leg : s.morphology.legs) legs.push_back(leg.name);
   json events = json::array();
-  for (const sim::Event& e : r.events) events.push_back(event_json(s.morphology, e));
+  for (const body::Event& e : r.events) events.push_back(event_json(s.morphology, e));
   json paints = json::array();
   for (const ReplayPaint& p : r.paints) paints.push_back(paint_json(r, p));
   json periods = json::array();

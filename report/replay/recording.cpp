@@ -150,10 +150,10 @@ void ReplayRecorder::on_step(const sim::SimModel& model, const sim::SimState& st
 }
 
 void ReplayRecorder::on_event(const sim::SimModel& model, const sim::SimState& state,
-                              const sim::Event& event) {
+                              const body::Event& event) {
   begin(model, state);
   recording_.events.push_back(event);
-  if (event.kind == sim::EventKind::fault || event.kind == sim::EventKind::recovery) {
+  if (event.kind == body::EventKind::fault || event.kind == body::EventKind::recovery) {
     paint(model, state, event.step);
   }
 }
@@ -196,7 +196,7 @@ void ReplayRecorder::paint(const sim::SimModel& model, const sim::SimState& stat
   ReplayPaint p;
   p.step = step;
   p.colours = fault_colours(model, state.faults.schedule.in_force());
-  for (const sim::Fault& f : state.faults.schedule.in_force()) {
+  for (const body::Fault& f : state.faults.schedule.in_force()) {
     for (std::size_t leg : f.legs) p.legs.emplace_back(leg, kind_colour(f.kind));
   }
   p.faults = faults_caption(model.controller.morphology, state.faults.schedule.in_force());

@@ -116,7 +116,7 @@ struct Recording {
   // nearest its previous one, so that it changes smoothly from step to step.
   std::vector<std::int32_t> poses;
   std::vector<std::uint8_t> contacts;  // [row * legs + leg], 1 = the foot touches the ground
-  std::vector<sim::Event> events;
+  std::vector<body::Event> events;
   std::vector<ReplayPaint> paints;
   std::vector<ReplayPeriods> periods;  // each change, the first at first_step
   // The trunk at row 0: the course the run holds starts there, along its heading.
@@ -147,7 +147,7 @@ class ReplayRecorder final : public sim::Observer {
   void on_start(const sim::SimModel& model, const sim::SimState& state) override;
   void on_step(const sim::SimModel& model, const sim::SimState& state) override;
   void on_event(const sim::SimModel& model, const sim::SimState& state,
-                const sim::Event& event) override;
+                const body::Event& event) override;
 
   const Recording& recording() const { return recording_; }
 

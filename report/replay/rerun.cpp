@@ -21,9 +21,9 @@
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
+#include "body/course_json.h"
+#include "body/fault_spec.h"
 #include "robot/leg_sets.h"
-#include "sim/course_json.h"
-#include "sim/fault_spec.h"
 #include "sim/walk.h"
 
 namespace multicpg::report {
@@ -96,10 +96,10 @@ bool reruns_as_saved(const json& saved, const json& again) {
                  "multicpg");
 }
 
-std::string faults_title(const robot::Morphology& morph, const sim::FaultTimeline& faults) {
+std::string faults_title(const robot::Morphology& morph, const body::FaultTimeline& faults) {
   std::string out;
-  for (const sim::Fault& f : faults) {
-    out += (out.empty() ? "" : ", ") + sim::malfunction_text(morph, f) +
+  for (const body::Fault& f : faults) {
+    out += (out.empty() ? "" : ", ") + body::malfunction_text(morph, f) +
            (f.recover ? " recovers" : " fails") + " at step " + std::to_string(f.step);
   }
   return out.empty() ? "no fault" : out;
@@ -140,16 +140,16 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   for (const json& f : saved.at("faults")) {
     if (f.contains("fault")) {
       // Walk records before the fault's one shape gave any other kind as its text.
-      spec.faults.push_back(sim::parse_fault(
+      spec.faults.push_back(body::parse_fault(
           morph, f.at("fault").get<std::string>() + '@' + std::to_string(f.at("step").get<long>()),
           f.at("recover").get<bool>()));
       continue;
     }
     json indexed = f;  // sim/course_json.h, its legs named as walk --json names them
     indexed["legs"] = robot::parse_leg_set(morph, f.at("legs").get<std::string>());
-    spec.faults.push_back(indexed.get<sim::Fault>());
+    spec.faults.push_back(indexed.get<body::Fault>());
   }
-  sim::sort_timeline(spec.faults);
+  body::sort_timeline(spec.faults);
   check(spec, name);
   const sim::SimModel model = experiments::make_model(spec.robot);
   ReplayRecorder recorder;
@@ -206,10 +206,10 @@ RerunReplay rerun_learning(const json& saved, const std::string& name, const sim
     const learning::CompensationOptions& options =
         spec.learning.emplace(learning_options(recorded));
     if (!recorded.at("faults").empty()) {
-      spec.faults = recorded.at("faults").get<sim::FaultTimeline>();
+      spec.faults = recorded.at("faults").get<body::FaultTimeline>();
     } else {
-      spec.faults = sim::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
-                                 recorded.at("fail_step").get<long>());
+      spec.faults = body::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
+                                  recorded.at("fail_step").get<long>());
     }
     spec.start = experiments::learning_start(options.mode);
     check(spec, name);

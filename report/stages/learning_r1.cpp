@@ -67,7 +67,7 @@ Section learning_r1_stage(const StageContext& ctx) {
   const std::vector<std::size_t> disabled{robot::leg_index(morph, "R1")};
   // R1 fails as the first measured window starts, after the robot walked healthy while its
   // CPGs settled: that window's deviation is the paper's "after 400 time steps" (§4.1).
-  spec.faults = sim::fail_at(disabled, learning::default_settle_steps(hexapod.controller));
+  spec.faults = body::fail_at(disabled, learning::default_settle_steps(hexapod.controller));
   spec.record.steps = true;
   const std::filesystem::path video = ctx.dir("videos") / "learning-r1.mp4";
   Film film(hexapod, {video, kDefaultFrameWidth, kDefaultFrameHeight, ctx.sizes.film_speed, {}});
@@ -121,7 +121,7 @@ Section learning_r1_stage(const StageContext& ctx) {
   for (bool learned : {false, true}) {
     sim::WalkSpec spec;
     spec.start.periods = learned ? r.periods : std::vector<int>(legs, learning::kStartPeriod);
-    spec.faults = sim::fail_at(disabled, 0);
+    spec.faults = body::fail_at(disabled, 0);
     spec.steps = kPathSteps;
     spec.record = false;
     const sim::WalkResult w = sim::walk(hexapod, spec);

@@ -115,7 +115,7 @@ experiments::TunnelOutcome learn_and_walk(const StageContext& ctx, const sim::Si
     l.max_episodes = ctx.sizes.periods_alone_max_episodes;
   }
   spec.start = experiments::learning_start(l.mode);
-  spec.faults = sim::fail_at(disabled, 0);
+  spec.faults = body::fail_at(disabled, 0);
   experiments::validate(spec);
   return experiments::run_tunnel(spec, corridor);
 }
@@ -127,7 +127,7 @@ BodyScenario walk_body_scenario(const StageContext& ctx, const Body& body,
   const std::vector<std::size_t> disabled = disabled_legs(morph, sc);
   BodyScenario out;
   experiments::TunnelSpec t;
-  t.faults = sim::fail_at(disabled, 0);
+  t.faults = body::fail_at(disabled, 0);
   out.before = experiments::run_tunnel(corridor, t);
   t.start.periods = papers_periods(morph, sc);
   out.papers = experiments::run_tunnel(corridor, t);
@@ -225,7 +225,7 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
     sim::Observers observers({observer ? &*observer : nullptr, v.filmed ? &replay : nullptr});
     experiments::TunnelSpec spec;
     spec.start.periods = v.periods;
-    spec.faults = sim::fail_at(disabled, 0);
+    spec.faults = body::fail_at(disabled, 0);
     const experiments::TunnelRun t = experiments::run_tunnel(corridor, spec, &observers);
     if (film) {
       film->finish();

@@ -56,7 +56,7 @@ Section walking_stage(const StageContext& ctx) {
         videos / (broken ? "walk-r1-disabled.mp4" : "walk-tripod.mp4");
     Film film(hexapod, {out, kDefaultFrameWidth, kDefaultFrameHeight, 1, {}});
     sim::WalkSpec spec = walk_spec(hexapod, learning::kStartPeriod, ctx.sizes.walk_film_steps);
-    if (broken) spec.faults = sim::fail_at({0}, 0);
+    if (broken) spec.faults = body::fail_at({0}, 0);
     FilmObserver observer(film, broken ? "R1 disabled" : "all legs working");
     spec.observer = &observer;
     sim::walk(hexapod, spec);
@@ -74,7 +74,7 @@ Section walking_stage(const StageContext& ctx) {
           "° per 400 steps in the paper's simulator, " +
           fixed(experiments::paper::kTunnel.front().before_deg, 0) + "° on the real robot).",
       "Speeds of each gait over " + std::to_string(kSpeedWalkSteps) +
-          " steps, the controller warmed up for " + std::to_string(sim::kControllerWarmup) +
+          " steps, the controller warmed up for " + std::to_string(body::kControllerWarmup) +
           " steps first so the robot starts in its gait (table). Videos: the tripod, and "
           "R1 disabled from the start (R1 drawn red), real time.",
       {},

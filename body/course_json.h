@@ -4,10 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/deviation.h"
-#include "sim/events.h"
+#include "body/deviation.h"
+#include "body/events.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 // A fault's one JSON shape: {step, legs (indices), recover}, the form leg faults have always been
 // recorded in, with "kind" (its name), "joint" and "value" for every other kind. Written by hand,
@@ -29,4 +29,4 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Pose2, x, y, yaw_deg)
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(WindowMeasure, yaw_deg, path_deg, forward_m,
                                                 lateral_m, steering_effort)
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

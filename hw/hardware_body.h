@@ -1,4 +1,4 @@
-// A real robot as the learner's walker (learning::Walker): each control step computes the
+// A real robot as the learner's walker (body::Body): each control step computes the
 // controller as the simulation does (neural::controller_step, the joint windows of the robot's
 // leg map), clamps the joint targets to the hardware file's limits, sends them over the serial
 // bus, and reads back the yaw (and joint angles and foot contacts where the hardware reports
@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
+#include "body/events.h"
 #include "hw/bus.h"
 #include "hw/hardware_file.h"
 #include "hw/loop_timing.h"
 #include "learning/compensation.h"
 #include "neural/controller.h"
-#include "sim/events.h"
 #include "sim/stepper.h"
 
 namespace multicpg::hw {
@@ -41,7 +41,7 @@ enum class Pacing {
 struct StepRow {
   long step = 0;
   double time_s = 0.0;  // monotonic, when the command went out
-  sim::Pose2 pose;      // x, y NaN when the position is not sensed
+  body::Pose2 pose;     // x, y NaN when the position is not sensed
   std::vector<std::array<double, robot::kJointsPerLeg>> targets;  // rad, clamped
   Feedback feedback;
   int errors = 0;  // link errors of this step
@@ -72,18 +72,18 @@ class HardwareStop : public RuntimeFailure {
   explicit HardwareStop(const StopRecord& record) : RuntimeFailure(record.message) {}
 };
 
-class HardwareWalker final : public learning::Walker {
+class HardwareBody final : public body::Body {
  public:
   // Opens the ports and runs the start-up check (every servo or the board answers, the yaw
   // arrives) before anything moves; then starts the controller as sim::Stepper does (`start`'s
   // periods, the faults due at step 0, the warm-up). `faults` must hold leg faults only (the
   // controller's; require_hardware_faults). Throws RuntimeFailure naming what failed the check.
-  HardwareWalker(const HardwareFile& file, BodyMap body, const sim::StartSpec& start,
-                 sim::FaultTimeline faults, Pacing pacing, StepSink* sink = nullptr);
-  HardwareWalker(const HardwareWalker&) = delete;
-  HardwareWalker& operator=(const HardwareWalker&) = delete;
+  HardwareBody(const HardwareFile& file, BodyMap body, const body::StartSpec& start,
+               body::FaultTimeline faults, Pacing pacing, StepSink* sink = nullptr);
+  HardwareBody(const HardwareBody&) = delete;
+  HardwareBody& operator=(const HardwareBody&) = delete;
   // Commands the stop action if no stop did yet.
-  ~HardwareWalker() override;
+  ~HardwareBody() override;
 
   // One control step. Throws HardwareStop after commanding the stop when a fault is detected,
   // Interrupted (after the same) on SIGINT or SIGTERM.
@@ -91,16 +91,17 @@ class HardwareWalker final : public learning::Walker {
   void steps(long n);
   // The orientation sensor's yaw; x and y are the trunk's position only when the yaw line reports
   // it (POSE lines), NaN otherwise: never made up.
-  sim::Pose2 pose() const override { return pose_; }
+  body::Senses senses() const override {
+    return {pose_.yaw_deg, pose_.has_position() ? std::optional<body::Position2>({pose_.x, pose_.y})
+                                                : std::nullopt};
+  }
   long step_count() const override { return walked_; }
   neural::ControllerState& controller() override { return controller_; }
   const neural::ControllerModel& controller_model() const override { return body_.controller; }
-  const sim::FaultSchedule& faults() const override { return faults_; }
-  void emit(const sim::Event& event) override;
+  const body::FaultSchedule& faults() const override { return faults_; }
+  void emit(const body::Event& event) override;
   // Called before every step (the steering reflex, as sim::Stepper::set_before_step).
-  void set_before_step(std::function<void(HardwareWalker&)> hook) {
-    before_step_ = std::move(hook);
-  }
+  void set_before_step(std::function<void(HardwareBody&)> hook) { before_step_ = std::move(hook); }
 
   // Commands the stop action (the safe posture, or torque off) once; later calls do nothing.
   void stop(const std::string& cause, bool fault = false);
@@ -112,7 +113,7 @@ class HardwareWalker final : public learning::Walker {
   LinkErrors yaw_errors() const;
   long clamped_targets() const { return clamped_; }
   // The learner's events (detection, trials, episodes), as they came.
-  const std::vector<sim::Event>& events() const { return events_; }
+  const std::vector<body::Event>& events() const { return events_; }
 
  private:
   void start_check();
@@ -123,25 +124,25 @@ class HardwareWalker final : public learning::Walker {
   const HardwareFile& file_;
   BodyMap body_;
   neural::ControllerState controller_;
-  sim::FaultSchedule faults_;
+  body::FaultSchedule faults_;
   std::unique_ptr<Bus> bus_;
   std::unique_ptr<YawLine> yaw_;
   LoopClock clock_;
   StepSink* sink_;
-  std::function<void(HardwareWalker&)> before_step_;
-  sim::Pose2 pose_;
+  std::function<void(HardwareBody&)> before_step_;
+  body::Pose2 pose_;
   long walked_ = 0;
   long clamped_ = 0;
   int bad_steps_ = 0;            // bus: steps in a row with an error
   int silent_steps_ = 0;         // yaw: steps in a row without a reading
   LinkErrors board_yaw_errors_;  // an AMOSII yaw input that read no heading
-  std::vector<sim::Event> events_;
+  std::vector<body::Event> events_;
   std::optional<StopRecord> stopped_;
 };
 
 // Throws BadInput unless every fault of `faults` can be enacted on hardware: the paper's leg
 // fault (the controller holds the leg's posture); the others are a real robot's physics or
 // sensors.
-void require_hardware_faults(const robot::Morphology& morph, const sim::FaultTimeline& faults);
+void require_hardware_faults(const robot::Morphology& morph, const body::FaultTimeline& faults);
 
 }  // namespace multicpg::hw

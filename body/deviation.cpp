@@ -1,4 +1,4 @@
-#include "sim/deviation.h"
+#include "body/deviation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "common/angles.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 double WindowMeasure::worst_deg() const {
   return std::max(std::abs(yaw_deg), std::abs(path_deg));
@@ -30,4 +30,4 @@ WindowMeasure measure_window(const Pose2& start, const Pose2& end,
   return m;
 }
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

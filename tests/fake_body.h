@@ -6,23 +6,24 @@
 #include <utility>
 #include <vector>
 
+#include "body/body.h"
+#include "body/events.h"
 #include "common/angles.h"
 #include "learning/compensation.h"
 #include "neural/controller.h"
-#include "sim/events.h"
 
 namespace multicpg::learning {
 
 // Yaw rate = gain * (left thrust - right thrust), thrust of a working leg = 1/period, of a
 // disabled leg 0. Hexapod, R1 disabled, all 4: 0.25 * 0.38 * 400 = 38 deg per window (Fig. 8:
 // 37.86). While clients are synchronised every leg moves with the master's period (paper §2.3).
-class FakeWalker : public Walker {
+class FakeBody : public body::Body {
  public:
   static constexpr double kGainDegPerStep = 0.38;
 
   // `faults` come as sim::Stepper applies them: before the steps they name.
-  explicit FakeWalker(robot::RobotKind kind, sim::FaultTimeline faults = {},
-                      double bias_deg_per_step = 0.0)
+  explicit FakeBody(robot::RobotKind kind, body::FaultTimeline faults = {},
+                    double bias_deg_per_step = 0.0)
       : model_(neural::make_controller_model(kind)),
         state_(neural::make_controller_state(model_)),
         faults_(model_.morphology, std::move(faults)),
@@ -41,21 +42,21 @@ class FakeWalker : public Walker {
     y_ += kSpeedMPerStep * std::sin(heading);
     ++state_.step;
   }
-  sim::Pose2 pose() const override { return {x_, y_, yaw_}; }
+  body::Senses senses() const override { return {yaw_, body::Position2{x_, y_}}; }
   long step_count() const override { return state_.step; }
   neural::ControllerState& controller() override { return state_; }
   const neural::ControllerModel& controller_model() const override { return model_; }
-  const sim::FaultSchedule& faults() const override { return faults_; }
-  void emit(const sim::Event& event) override { events.push_back(event); }
+  const body::FaultSchedule& faults() const override { return faults_; }
+  void emit(const body::Event& event) override { events.push_back(event); }
 
-  std::vector<sim::Event> events;  // the faults that came and what the learner reported
+  std::vector<body::Event> events;  // the faults that came and what the learner reported
 
  private:
   void take_due_faults() {
     const std::size_t first = faults_.applied().size();
     faults_.apply_due(state_.step, state_);
     for (std::size_t i = first; i < faults_.applied().size(); ++i) {
-      events.push_back(sim::fault_event(faults_.applied()[i]));
+      events.push_back(body::fault_event(faults_.applied()[i]));
     }
   }
 
@@ -74,7 +75,7 @@ class FakeWalker : public Walker {
 
   neural::ControllerModel model_;
   neural::ControllerState state_;
-  sim::FaultSchedule faults_;
+  body::FaultSchedule faults_;
   double bias_;
   double yaw_ = 0.0;
   double x_ = 0.0;

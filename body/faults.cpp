@@ -1,4 +1,4 @@
-#include "sim/faults.h"
+#include "body/faults.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include "common/errors.h"
 #include "common/variants.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 namespace {
 
 template <class Kind>
@@ -91,4 +91,4 @@ bool same_target(const Fault& a, const Fault& b) {
   return false;
 }
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

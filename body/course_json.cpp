@@ -1,8 +1,8 @@
-#include "sim/course_json.h"
+#include "body/course_json.h"
 
 #include "common/errors.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 void to_json(nlohmann::json& j, const Fault& fault) {
   j = {{"step", fault.step}, {"legs", fault.legs}, {"recover", fault.recover}};
@@ -32,4 +32,4 @@ void from_json(const nlohmann::json& j, Fault& fault) {
   fault.kind = make_kind(j.value("kind", std::string(LegFault::kName)), value, fault.recover);
 }
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

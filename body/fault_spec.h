@@ -13,10 +13,10 @@
 #include <string>
 #include <string_view>
 
+#include "body/events.h"
 #include "robot/morphology.h"
-#include "sim/events.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 // The word that names the yaw sensor as a fault's target.
 inline constexpr std::string_view kSensorTarget = "imu";
@@ -37,4 +37,4 @@ std::string malfunction_text(const robot::Morphology& morph, const Fault& fault)
 // A controller step written in digits, in 0..kMaxSteps. Throws BadInput naming the text.
 long parse_step(std::string_view text);
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

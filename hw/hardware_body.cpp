@@ -1,14 +1,14 @@
-#include "hw/hardware_walker.h"
+#include "hw/hardware_body.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "body/fault_spec.h"
 #include "common/angles.h"
 #include "common/errors.h"
 #include "common/interrupt.h"
-#include "sim/fault_spec.h"
 
 namespace multicpg::hw {
 namespace {
@@ -44,15 +44,15 @@ std::string bus_cause(const HardwareFile& file, const std::vector<StepError>& er
 
 }  // namespace
 
-HardwareWalker::HardwareWalker(const HardwareFile& file, BodyMap body, const sim::StartSpec& start,
-                               sim::FaultTimeline faults, Pacing pacing, StepSink* sink)
+HardwareBody::HardwareBody(const HardwareFile& file, BodyMap body, const body::StartSpec& start,
+                           body::FaultTimeline faults, Pacing pacing, StepSink* sink)
     : file_(file),
       body_(std::move(body)),
       faults_(body_.controller.morphology, std::move(faults)),
       clock_(pacing == Pacing::real_time ? body_.control_dt : 0.0),
       sink_(sink) {
   require_hardware_faults(body_.controller.morphology, faults_.timeline());
-  // Not sensed until a POSE line says otherwise (sim::Pose2: never a made-up position).
+  // Not sensed until a POSE line says otherwise (body::Pose2: never a made-up position).
   pose_.x = pose_.y = std::numeric_limits<double>::quiet_NaN();
   bus_ = open_bus(file_);
   if (file_.yaw.source == YawSource::line) yaw_ = std::make_unique<YawLine>(file_);
@@ -73,11 +73,11 @@ HardwareWalker::HardwareWalker(const HardwareFile& file, BodyMap body, const sim
   }
 }
 
-HardwareWalker::~HardwareWalker() {
+HardwareBody::~HardwareBody() {
   stop("the run ended");
 }
 
-void HardwareWalker::start_check() {
+void HardwareBody::start_check() {
   Feedback feedback;
   bus_->start_check(feedback);
   std::vector<StepError> errors;
@@ -87,7 +87,7 @@ void HardwareWalker::start_check() {
   }
 }
 
-bool HardwareWalker::read_yaw(std::vector<StepError>& errors, const Feedback& feedback) {
+bool HardwareBody::read_yaw(std::vector<StepError>& errors, const Feedback& feedback) {
   if (file_.yaw.source == YawSource::board) {
     if (!feedback.yaw_deg) {
       ++board_yaw_errors_.counts[static_cast<std::size_t>(LinkError::timeout)];
@@ -110,11 +110,11 @@ bool HardwareWalker::read_yaw(std::vector<StepError>& errors, const Feedback& fe
   return true;
 }
 
-LinkErrors HardwareWalker::yaw_errors() const {
+LinkErrors HardwareBody::yaw_errors() const {
   return yaw_ ? yaw_->errors() : board_yaw_errors_;
 }
 
-JointCounts HardwareWalker::counts(
+JointCounts HardwareBody::counts(
     const std::vector<std::array<double, robot::kJointsPerLeg>>& angles) {
   JointCounts c;
   for (std::size_t i = 0; i < file_.legs.size(); ++i) {
@@ -130,8 +130,8 @@ JointCounts HardwareWalker::counts(
   return c;
 }
 
-void HardwareWalker::step() {
-  if (stopped_) throw std::logic_error("HardwareWalker::step after the robot stopped");
+void HardwareBody::step() {
+  if (stopped_) throw std::logic_error("HardwareBody::step after the robot stopped");
   if (const int signal = interrupt_signal(); signal != 0) {
     const Interrupted stop_signal(signal);
     stop(stop_signal.what(), true);
@@ -140,7 +140,7 @@ void HardwareWalker::step() {
   const std::size_t came = faults_.applied().size();
   faults_.apply_due(walked_, controller_);
   for (std::size_t i = came; i < faults_.applied().size(); ++i) {
-    sim::Event e = sim::fault_event(faults_.applied()[i]);
+    body::Event e = body::fault_event(faults_.applied()[i]);
     e.step = walked_;
     events_.push_back(e);
   }
@@ -182,24 +182,24 @@ void HardwareWalker::step() {
   }
 }
 
-void HardwareWalker::steps(long n) {
+void HardwareBody::steps(long n) {
   for (long i = 0; i < n; ++i) step();
 }
 
-void HardwareWalker::emit(const sim::Event& event) {
-  sim::Event e = event;
+void HardwareBody::emit(const body::Event& event) {
+  body::Event e = event;
   e.step = walked_;
   events_.push_back(std::move(e));
 }
 
-void HardwareWalker::fail(const std::string& cause) {
+void HardwareBody::fail(const std::string& cause) {
   const double detected = monotonic_s();
   stop(cause, true);
   stopped_->detected_s = detected;
   throw HardwareStop(*stopped_);
 }
 
-void HardwareWalker::stop(const std::string& cause, bool fault) {
+void HardwareBody::stop(const std::string& cause, bool fault) {
   if (stopped_) return;
   StopRecord r;
   r.cause = cause;
@@ -222,10 +222,10 @@ void HardwareWalker::stop(const std::string& cause, bool fault) {
   stopped_ = r;
 }
 
-void require_hardware_faults(const robot::Morphology& morph, const sim::FaultTimeline& faults) {
-  for (const sim::Fault& f : faults) {
-    if (!std::holds_alternative<sim::LegFault>(f.kind) || f.joint) {
-      throw BadInput("fault '" + sim::malfunction_text(morph, f) +
+void require_hardware_faults(const robot::Morphology& morph, const body::FaultTimeline& faults) {
+  for (const body::Fault& f : faults) {
+    if (!std::holds_alternative<body::LegFault>(f.kind) || f.joint) {
+      throw BadInput("fault '" + body::malfunction_text(morph, f) +
                      "': on hardware only the paper's leg fault can be enacted (the controller "
                      "holds the leg's posture); the others are a real robot's own physics and "
                      "sensors");

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <optional>
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 // Trunk pose at one instant: position in the ground plane (m) and yaw (deg, + = left). A body
 // that senses no position (a real robot with an orientation sensor only, docs/hardware.md) reports
@@ -52,4 +52,4 @@ inline constexpr double kMinForwardForPathM = 1e-3;
 WindowMeasure measure_window(const Pose2& start, const Pose2& end,
                              std::optional<double> course_yaw_deg = std::nullopt);
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

@@ -1,4 +1,4 @@
-#include "sim/events.h"
+#include "body/events.h"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "common/errors.h"
 #include "robot/joint_map.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 namespace {
 
@@ -240,4 +240,4 @@ Event fault_event(const Fault& fault) {
   return e;
 }
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

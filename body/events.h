@@ -10,12 +10,12 @@
 #include <string_view>
 #include <vector>
 
+#include "body/faults.h"
 #include "common/enum_names.h"
 #include "neural/controller.h"
 #include "robot/morphology.h"
-#include "sim/faults.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 // Largest number of steps of any run, settle and warm-up included: 10^8 steps are 43 days of
 // walking at 27 Hz; past it step counts would overflow their sums.
@@ -134,4 +134,4 @@ class FaultSchedule {
 // The fault or recovery event a fault makes.
 Event fault_event(const Fault& fault);
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

@@ -20,7 +20,7 @@
 #include "common/limits.h"
 #include "robot/morphology.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 
 // What a fault kind strikes.
 enum class Strikes {
@@ -106,7 +106,7 @@ struct ImuDrift {
 };
 
 // A noisy yaw sensor: Gaussian noise of a standard deviation on every reading, drawn from the
-// run's seed (sim::StartSpec::seed), one draw per controller step.
+// run's seed (body::StartSpec::seed), one draw per controller step.
 struct ImuNoise {
   static constexpr std::string_view kName = "noise";
   static constexpr Strikes kStrikes = Strikes::sensor;
@@ -149,4 +149,4 @@ std::string kind_names();
 // such fault at a time, and a recovery names the one it ends.
 bool same_target(const Fault& a, const Fault& b);
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body

@@ -1,4 +1,4 @@
-#include "sim/fault_spec.h"
+#include "body/fault_spec.h"
 
 #include <charconv>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "common/errors.h"
 #include "robot/leg_sets.h"
 
-namespace multicpg::sim {
+namespace multicpg::body {
 namespace {
 
 const std::string kForm =
@@ -99,4 +99,4 @@ std::string fault_text(const robot::Morphology& morph, const Fault& fault) {
   return malfunction_text(morph, fault) + "@" + std::to_string(fault.step);
 }
 
-}  // namespace multicpg::sim
+}  // namespace multicpg::body
