@@ -9,7 +9,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/limits.h"
-#include "hw/emulator.h"
+#include "emulator/emulator.h"
 #include "hw/hardware_file.h"
 
 namespace multicpg::apps {
@@ -34,10 +34,10 @@ void run_emulate(const EmulateOptions& o) {
     throw BadInput("--protocol " + o.protocol + ": the hardware file '" + o.hardware + "' speaks " +
                    std::string(hw::to_string(file.protocol)));
   }
-  hw::EmulatorSpec emulator;
+  emulator::EmulatorSpec emulator;
   for (const std::string& text : o.injections) {
     try {
-      emulator.injections.push_back(hw::parse_injection(text, file));
+      emulator.injections.push_back(emulator::parse_injection(text, file));
     } catch (const BadInput& e) {
       throw BadInput(std::string("--inject ") + e.what());
     }
@@ -47,7 +47,7 @@ void run_emulate(const EmulateOptions& o) {
   emulator.log = o.log;
   if (!o.rehearsal.empty()) require_writable_file(o.rehearsal);
   const sim::SimModel model = experiments::make_model(spec.robot);
-  hw::Emulator emu(model, file, emulator);
+  emulator::Emulator emu(model, file, emulator);
   if (!o.rehearsal.empty()) {
     write_file_atomic(o.rehearsal, hw::with_ports(file.path, emu.bus_path(), emu.yaw_path()));
   }
@@ -56,7 +56,7 @@ void run_emulate(const EmulateOptions& o) {
   if (!emu.yaw_path().empty()) std::cout << "yaw " << emu.yaw_path() << "\n";
   if (!o.rehearsal.empty()) std::cout << "rehearsal file " << o.rehearsal << "\n";
   std::cout << std::flush;
-  const hw::EmulatorSummary s = emu.run();
+  const emulator::EmulatorSummary s = emu.run();
   std::cout << "served " << s.steps << " control steps and " << s.answers << " answers; refused "
             << s.malformed << " malformed frames"
             << (s.posture ? "; the safe posture was commanded" : "")

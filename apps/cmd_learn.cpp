@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
-#include "apps/hardware_flags.h"
+#include "apps/hardware_output.h"
 #include "apps/learning_options.h"
 #include "apps/learning_output.h"
 #include "apps/options.h"
@@ -21,6 +21,7 @@
 #include "experiments/learning_run.h"
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
+#include "hw/hardware_record.h"
 #include "learning/learners.h"
 #include "robot/leg_sets.h"
 #include "sim/record_csv.h"
@@ -32,7 +33,6 @@ struct LearnOptions {
   RunFlags run;  // robot, faults, learning and simulation flags
   bool json = false;
   std::string out;
-  hw::HardwareFlags hardware;  // learn on a real robot
   std::string replay;
   std::string plot;
 };
@@ -58,79 +58,28 @@ std::string trace_csv(const robot::Morphology& morph, const learning::LearnerCho
   return f.str();
 }
 
-// A run whose events were not streamed (hardware): the whole table from its result.
-void print_learning(const experiments::RunSpec& spec, const learning::LearningResult& r) {
-  print_learning_header(std::cout, spec, r.settle_steps);
-  LearningTable table(std::cout, spec);
-  for (const body::Event& e : result_events(r)) table.event(e);
-  print_learning_end(std::cout, spec, r);
-}
-
-// learn --hardware: the same learning on a real robot (docs/hardware.md). A run a fault or a
-// signal stops keeps its record so far in --out and --json.
-void run_learn_on_hardware(const LearnOptions& o, const experiments::RunSpec& spec) {
-  if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
-  if (!o.plot.empty()) throw BadInput("--plot draws the simulation; not with --hardware");
-  const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
-  const std::filesystem::path dir(o.out);
-  std::optional<AtomicFile> steps;
-  std::optional<hw::StepCsv> rows;
-  if (!o.out.empty()) {
-    ensure_writable_dir(o.out);
-    steps.emplace(dir / "hardware.csv");
-    rows.emplace(steps->stream(), setup.file, experiments::morphology(spec.robot));
-  }
-  const hw::StoppedSink record = stopped_record(o.json, "");
-  const auto stopped = [&](const nlohmann::json& j) {
-    if (!o.out.empty()) {
-      write_file_atomic(dir / "learning.json", j.dump(2) + "\n");
-      steps->commit();
-    }
-    record(j);
-  };
-  experiments::LearningRun run;
-  hw::HardwareLearning learned =
-      hw::learn_on_hardware(spec, setup, stopped, rows ? &*rows : nullptr);
-  run.result = std::move(learned.result);
-  nlohmann::json json = experiments::learn_json(spec, run.result);
-  json["hardware"] = learned.hardware;
-  if (!o.out.empty()) {
-    write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
-    write_file_atomic(dir / "trace.csv", trace_csv(experiments::morphology(spec.robot),
-                                                   spec.learning->learner, run.result));
-    steps->commit();
-  }
-  if (o.json) {
-    std::cout << json.dump(2) << "\n";
-    return;
-  }
-  std::cout << "on " << setup.file.name << " (" << hw::to_string(setup.file.protocol) << ", "
-            << setup.file.path.string() << ")\n";
-  print_learning(spec, run.result);
-  std::cout << hardware_summary(learned.hardware) << "\n";
-  if (!o.out.empty()) {
-    std::cout << "wrote " << o.out << "/{learning.json,trace.csv,hardware.csv}\n";
-  }
-}
-
 void run_learn(const LearnOptions& o) {
   const experiments::RunSpec spec = run_spec(o.run, /*learn=*/true);
-  if (o.hardware.given() || o.hardware.lock_step) {
-    run_learn_on_hardware(o, spec);
-    return;
-  }
+  const std::optional<experiments::HardwareSetup> setup = hardware_setup(spec, o.run);
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   const std::filesystem::path dir(o.out);
-  // steps.csv streams as the robot walks (memory flat in the run's length) and takes its name
-  // only when the run has ended well (common/atomic_file.h).
+  // The per-step record streams as the robot walks (memory flat in the run's length) and takes
+  // its name only when the run has ended (common/atomic_file.h): the simulation's steps.csv, a
+  // real robot's hardware.csv.
   ReplayOutput replay(o.replay);
   PlotOutput plot(o.plot);
+  const std::string steps_file = setup ? "hardware.csv" : "steps.csv";
   std::optional<AtomicFile> steps;
   std::optional<sim::RecordCsvWriter> rows;
+  std::optional<hw::StepCsv> hardware_rows;
   if (!o.out.empty()) {
     ensure_writable_dir(o.out);
-    steps.emplace(dir / "steps.csv");
-    rows.emplace(steps->stream(), morph, (dir / "steps.csv").string());
+    steps.emplace(dir / steps_file);
+    if (setup) {
+      hardware_rows.emplace(steps->stream(), setup->file, morph);
+    } else {
+      rows.emplace(steps->stream(), morph, (dir / steps_file).string());
+    }
   }
   const sim::SimModel model = experiments::make_model(spec.robot);
 
@@ -138,15 +87,34 @@ void run_learn(const LearnOptions& o) {
   // (--json prints one object at the end instead).
   std::optional<LearningStream> stream;
   if (!o.json) {
+    if (setup) {
+      std::cout << "on " << setup->file.name << " (" << hw::to_string(setup->file.protocol) << ", "
+                << setup->file.path.string() << ")\n";
+    }
     print_learning_header(std::cout, spec,
                           learning::start_settle_steps(*spec.learning, model.controller));
     stream.emplace(std::cout, std::cerr, spec);
   }
   sim::Observers observers(
       {rows ? &*rows : nullptr, replay.observer(), plot.observer(), stream ? &*stream : nullptr});
-  const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &observers);
+  // A run on a real robot that a fault or a signal stops keeps its record so far in --out and
+  // --json (docs/hardware.md "Outputs").
+  const experiments::StoppedSink record = stopped_record(o.json, "");
+  experiments::Watchers watchers;
+  watchers.observer = &observers;
+  watchers.steps = hardware_rows ? &*hardware_rows : nullptr;
+  watchers.stopped = [&](const nlohmann::json& j) {
+    if (!o.out.empty()) {
+      write_file_atomic(dir / "learning.json", j.dump(2) + "\n");
+      steps->commit();
+    }
+    record(j);
+  };
+  const experiments::LearningRun run =
+      experiments::run_learning(model, spec, setup ? &*setup : nullptr, 0, watchers);
   const learning::LearningResult& r = run.result;
-  const nlohmann::json json = experiments::learn_json(spec, r);
+  nlohmann::json json = experiments::learn_json(spec, r);
+  if (setup) json["hardware"] = run.hardware;
 
   if (!o.out.empty()) {
     write_file_atomic(dir / "learning.json", json.dump(2) + "\n");
@@ -161,7 +129,10 @@ void run_learn(const LearnOptions& o) {
     return;
   }
   print_learning_end(std::cout, spec, r);
-  if (!o.out.empty()) std::cout << "wrote " << o.out << "/{learning.json,trace.csv,steps.csv}\n";
+  if (setup) std::cout << hardware_summary(run.hardware) << "\n";
+  if (!o.out.empty()) {
+    std::cout << "wrote " << o.out << "/{learning.json,trace.csv," << steps_file << "}\n";
+  }
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
 }
@@ -176,10 +147,11 @@ void register_learn(CLI::App& app) {
   add_fault_flags(*cmd, opts->run);
   add_learning_flags(*cmd, opts->run.learning);
   add_sim_flags(*cmd, opts->run.sim, opts->run.body);
-  add_hardware_flags(*cmd, opts->hardware);
+  add_hardware_flags(*cmd, opts->run);
   cmd->add_flag("--json", opts->json, "print one JSON object instead of the table");
   cmd->add_option("--out", opts->out,
-                  "directory for learning.json, trace.csv and steps.csv (the per-step record)");
+                  "directory for learning.json, trace.csv and steps.csv (the per-step record; "
+                  "hardware.csv on a real robot)");
   add_replay_flag(*cmd, opts->replay);
   add_plot_flag(*cmd, opts->plot);
   cmd->callback([opts] { run_learn(*opts); });

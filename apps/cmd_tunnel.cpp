@@ -8,7 +8,7 @@
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
-#include "apps/hardware_flags.h"
+#include "apps/hardware_output.h"
 #include "apps/learning_options.h"
 #include "apps/learning_output.h"
 #include "apps/options.h"
@@ -35,62 +35,7 @@ struct TunnelOptions {
   std::string plot;    // .png of the tunnel walk; empty = none
   bool json = false;
   bool scale_tunnel = false;
-  hw::HardwareFlags hardware;  // a real robot, in a real tunnel
 };
-
-// tunnel --hardware: on a real robot in a real tunnel (docs/hardware.md "Running it"): learning
-// first with --learn, then the controller walks on for the tunnel. Where the robot senses its
-// position the walk ends at the tunnel's end and Table 1's angle is measured; otherwise only the
-// yaw change is, and whether it passed is the operator's to see.
-void run_tunnel_on_hardware(const TunnelOptions& o, const experiments::RunSpec& spec) {
-  if (!o.video.empty()) throw BadInput("--video films the simulation; not with --hardware");
-  if (!o.replay.empty()) throw BadInput("--replay records the simulation; not with --hardware");
-  if (!o.plot.empty()) throw BadInput("--plot draws the simulation; not with --hardware");
-  if (o.scale_tunnel)
-    throw BadInput("--scale-tunnel scales the simulated tunnel; not with --hardware");
-  const hw::HardwareSetup setup = hardware_setup(spec, o.hardware, o.run);
-  const robot::Morphology& morph = experiments::morphology(spec.robot);
-  const hw::HardwareTunnel t = hw::tunnel_on_hardware(
-      spec, setup, o.max_steps, spec.robot.sim.scene.tunnel_length, stopped_record(o.json, ""));
-  const std::vector<std::size_t> disabled = body::failed_after(morph, spec.faults);
-  const auto optional = [](const auto& v) { return v ? nlohmann::json(*v) : nlohmann::json(); };
-  if (o.json) {
-    nlohmann::json j{{"passed", optional(t.passed)},
-                     {"steps", t.steps},
-                     {"forward_m", optional(t.forward_m)},
-                     {"lateral_m", optional(t.lateral_m)},
-                     {"deviation_deg", optional(t.deviation_deg)},
-                     {"yaw_change_deg", t.yaw_change_deg},
-                     {"periods", robot::period_map_json(morph, t.periods)},
-                     {"hardware", t.hardware}};
-    if (t.learned) {
-      j["learning"] = learning::to_json(*t.learned, morph, disabled);
-      j["options"] = experiments::learning_record(*spec.learning, spec.faults);
-    }
-    experiments::record_robot_file(j, spec.robot);
-    std::cout << j.dump(2) << "\n";
-    return;
-  }
-  std::cout << std::fixed << std::setprecision(2) << "tunnel on " << setup.file.name << " ("
-            << hw::to_string(setup.file.protocol) << "), disabled "
-            << (disabled.empty() ? "none" : robot::leg_set_name(morph, disabled)) << "\n";
-  if (t.learned) {
-    std::cout << "learned (" << learning::to_string(spec.learning->mode)
-              << " mode): " << learning::to_string(t.learned->outcome) << " after "
-              << counted(t.learned->trials, "trial") << ", "
-              << robot::period_map_text(morph, t.learned->periods, disabled)
-              << (t.learned->steering ? ", steering reflex on" : "") << "\n";
-  }
-  if (t.passed) {
-    std::cout << (*t.passed ? "passed" : "did not reach the end") << " after " << t.steps
-              << " steps: forward " << *t.forward_m << " m, lateral " << *t.lateral_m
-              << " m, deviation " << *t.deviation_deg << "° (+ = left)\n";
-  } else {
-    std::cout << "walked " << t.steps << " steps, yaw change " << t.yaw_change_deg
-              << "° (+ = left); no position sensed: whether it passed is for you to see\n";
-  }
-  std::cout << hardware_summary(t.hardware) << "\n";
-}
 
 void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (o.learn && periods_given) {
@@ -102,9 +47,12 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   ReplayOutput replay(o.replay);
   PlotOutput plot(o.plot);
   experiments::RunSpec spec = run_spec(o.run, o.learn);
-  if (o.hardware.given() || o.hardware.lock_step) {
-    run_tunnel_on_hardware(o, spec);
-    return;
+  const std::optional<experiments::HardwareSetup> setup = hardware_setup(spec, o.run);
+  if (setup && !o.video.empty()) {
+    throw BadInput("--video films the simulated tunnel; a real robot's run has --replay");
+  }
+  if (setup && o.scale_tunnel) {
+    throw BadInput("--scale-tunnel scales the simulated tunnel; not with --hardware");
   }
   std::optional<experiments::TunnelScale> scale;
   if (o.scale_tunnel) {
@@ -132,13 +80,22 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   // object at the end instead.
   std::optional<LearningStream> stream;
   if (o.learn && !o.json) {
-    std::cout << "learning in the open field first, then the tunnel\n";
+    if (setup) {
+      std::cout << "on " << setup->file.name << " (" << hw::to_string(setup->file.protocol) << ", "
+                << setup->file.path.string() << "): learning where it stands, then on into "
+                << "its tunnel\n";
+    } else {
+      std::cout << "learning in the open field first, then the tunnel\n";
+    }
     print_learning_header(std::cout, spec,
                           learning::start_settle_steps(*spec.learning, corridor.controller));
     stream.emplace(std::cout, std::cerr, spec);
   }
+  experiments::Watchers hardware;
+  hardware.stopped = stopped_record(o.json, "");
   const experiments::TunnelOutcome out =
-      experiments::run_tunnel(spec, corridor, o.max_steps, &observers, stream ? &*stream : nullptr);
+      experiments::run_tunnel(spec, corridor, o.max_steps, &observers, stream ? &*stream : nullptr,
+                              setup ? &*setup : nullptr, hardware);
   if (film) film->finish();
   replay.write();
   plot.tunnel(corridor.scene.tunnel_length, corridor.scene.tunnel_width);
@@ -149,8 +106,11 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
     std::cout << experiments::tunnel_json(spec, out, scale).dump(2) << "\n";
     return;
   }
-  const std::string result =
-      run.passed ? "passed" : (run.touched_wall ? "touched a wall" : "did not reach the end");
+  const std::string result = !run.passed   ? "walked on: no position sensed, whether it passed is "
+                                             "for you to see"
+                             : *run.passed ? "passed"
+                             : run.touched_wall ? "touched a wall"
+                                                : "did not reach the end";
   if (stream) std::cout << "\n";
   std::cout << std::fixed << std::setprecision(2) << robot_text(spec) << ", tunnel "
             << corridor.scene.tunnel_length << " m x " << corridor.scene.tunnel_width
@@ -172,9 +132,15 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
               << robot::period_map_text(morph, out.learned->periods, out.disabled)
               << (out.learned->steering ? ", steering reflex on" : "") << "\n";
   }
-  std::cout << result << " after " << run.steps << " steps: forward " << run.forward_m
-            << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
-            << "° (+ = left)\n";
+  if (run.passed) {
+    std::cout << result << " after " << run.steps << " steps: forward " << run.forward_m
+              << " m, lateral " << run.lateral_m << " m, deviation " << run.deviation_deg
+              << "° (+ = left)\n";
+  } else {
+    std::cout << result << " (" << run.steps << " steps, yaw change " << run.yaw_change_deg
+              << "°, + = left)\n";
+  }
+  if (setup) std::cout << hardware_summary(run.hardware) << "\n";
   if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
@@ -209,7 +175,7 @@ void register_tunnel(CLI::App& app) {
                 "scale the tunnel's length and width by the robot's width (its feet's span at the "
                 "start) over the built-in robot's of its layout");
   add_sim_flags(*cmd, o->run.sim, o->run.body);
-  add_hardware_flags(*cmd, o->hardware);
+  add_hardware_flags(*cmd, o->run);
   cmd->callback([o, periods] { run_tunnel(*o, periods->count() > 0); });
 }
 

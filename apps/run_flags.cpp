@@ -107,6 +107,7 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
       {"learning.annealing.max_trials", "--max-trials"},
       {"learning.window_steps", "--window"},
       {"learning.settle_steps", "--settle"},
+      {"hardware.file", "--hardware"},
   };
   if (key == "faults") return fault_flags(f);
   const std::string option = "learning.learner.options.";
@@ -120,8 +121,29 @@ std::string flag_of(const std::string& key, const RunFlags& f) {
   return flag;
 }
 
+void add_hardware_flags(CLI::App& cmd, RunFlags& flags) {
+  cmd.add_option("--hardware", flags.hardware,
+                 "run on a real robot through this hardware file (docs/hardware.md), in real time "
+                 "at the control rate");
+  cmd.add_flag("--lock-step", flags.lock_step,
+               "with --hardware: no pacing, each step as soon as the last one's answers came "
+               "(rehearsal with `multicpg emulate`; never on a real robot)");
+}
+
+std::optional<experiments::HardwareSetup> hardware_setup(const experiments::RunSpec& spec,
+                                                         const RunFlags& flags) {
+  if (!spec.hardware) return std::nullopt;
+  try {
+    return experiments::hardware_setup(spec);
+  } catch (const OptionError& e) {
+    throw BadInput(flag_of(e.key(), flags) + ": " + e.what());
+  }
+}
+
 experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
+  if (f.lock_step && f.hardware.empty()) throw BadInput("--lock-step needs --hardware");
   experiments::RunSpec spec;
+  if (!f.hardware.empty()) spec.hardware = experiments::HardwareSpec{f.hardware, f.lock_step};
   spec.robot = experiments::named_robot(f.robot);
   spec.robot.sim = with_body(f.sim, f.body);
   const robot::Morphology& morph = experiments::morphology(spec.robot);

@@ -30,4 +30,19 @@ WindowMeasure measure_window(const Pose2& start, const Pose2& end,
   return m;
 }
 
+WalkMeasure measure_walk(const std::vector<Pose2>& boundaries, const Pose2& last) {
+  WalkMeasure out;
+  const WindowMeasure whole = measure_window(boundaries.front(), last);
+  out.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
+  out.forward_m = whole.forward_m;
+  out.lateral_m = whole.lateral_m;
+  for (std::size_t k = 1; k < boundaries.size(); ++k) {
+    out.window_deviations_deg.push_back(
+        wrap_degrees(boundaries[k].yaw_deg - boundaries[k - 1].yaw_deg));
+    out.windows.push_back(measure_window(boundaries[k - 1], boundaries[k]));
+  }
+  out.final_yaw_deg = last.yaw_deg;
+  return out;
+}
+
 }  // namespace multicpg::body

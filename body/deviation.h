@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 namespace multicpg::body {
 
@@ -51,5 +52,20 @@ inline constexpr double kMinForwardForPathM = 1e-3;
 // course, which the heading at the window's start would report as a constant path angle.
 WindowMeasure measure_window(const Pose2& start, const Pose2& end,
                              std::optional<double> course_yaw_deg = std::nullopt);
+
+// A walk measured from its poses at the window boundaries (the first where measuring began, then
+// one per complete window) and its last pose: the whole displacement against the first heading,
+// and each complete window's yaw change and path angle. Where no position is sensed the
+// displacement and the path angles are NaN and +-90 deg (measure_window).
+struct WalkMeasure {
+  double distance_m = 0.0;
+  double forward_m = 0.0;
+  double lateral_m = 0.0;
+  // wrap(yaw(end) - yaw(start)) of each complete window; + = left turn.
+  std::vector<double> window_deviations_deg;
+  std::vector<WindowMeasure> windows;
+  double final_yaw_deg = 0.0;
+};
+WalkMeasure measure_walk(const std::vector<Pose2>& boundaries, const Pose2& last);
 
 }  // namespace multicpg::body

@@ -8,6 +8,7 @@
 
 #include "body/events.h"
 #include "common/limits.h"
+#include "neural/controller.h"
 
 namespace multicpg::body {
 
@@ -30,5 +31,20 @@ struct StartSpec {
   // The run's random stream: a noisy sensor's draws (sim/fault_effects.h).
   std::uint64_t seed = 1;
 };
+
+// The controller a run starts with, before its warm-up: every leg at `periods` (one per leg;
+// empty = every leg 4). Equal periods keep the clients synchronised; unequal ones set each leg's
+// period and free the clients (paper §2.3).
+neural::ControllerState start_controller(const neural::ControllerModel& model,
+                                         const std::vector<int>& periods);
+
+// Runs the neural controller alone for `steps` steps: the body does not move. Throws Interrupted
+// when SIGINT or SIGTERM asked the process to stop (a warm-up may be long).
+void warm_up_controller(const neural::ControllerModel& model, neural::ControllerState& state,
+                        long steps);
+
+// Throws OptionError ("steps", "window", "settle", "faults") for a walk that cannot run: steps or
+// window under 1, settle under 0, more than kMaxSteps in all, a fault after its last step.
+void validate_walk(const FaultTimeline& faults, long settle, long steps, long window);
 
 }  // namespace multicpg::body

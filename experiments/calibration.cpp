@@ -109,7 +109,8 @@ TunnelNumbers walk_tunnel(const sim::SimModel& corridor, const Scenario1& sc, lo
   t.start.warmup = warmup;
   t.faults = body::fail_at(sc.disabled, 0);
   const TunnelRun run = run_tunnel(corridor, t);
-  return {run.deviation_deg, run.passed, run.touched_wall, run.steps, run.forward_m, run.lateral_m};
+  return {run.deviation_deg, run.passed_or_false(), run.touched_wall,
+          run.steps,         run.forward_m,         run.lateral_m};
 }
 
 ScenarioNumbers walk_scenario(const sim::SimModel& corridor, const Scenario1& sc,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "experiments/body_runs.h"
+
 namespace multicpg::experiments {
 namespace {
 
@@ -31,36 +33,33 @@ class TrialEnds final : public sim::Observer {
 
 LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long after_steps,
                          sim::Observer* observer) {
+  Watchers watchers;
+  watchers.observer = observer;
+  return run_learning(model, spec, nullptr, after_steps, watchers);
+}
+
+LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec,
+                         const HardwareSetup* setup, long after_steps, const Watchers& watchers) {
   if (!spec.learning) throw std::invalid_argument("run_learning: the run has no learning options");
-  const learning::CompensationOptions& options = *spec.learning;
   LearningRun run;
-  TrialEnds ends(observer);
-  body::StartSpec start = spec.start;
-  start.seed = options.seed;  // a noisy sensor's draws follow the learning run's seed
-  sim::Stepper stepper(model, start, spec.faults, &ends, spec.record.steps ? &run.record : nullptr);
-  sim::SimBody body(stepper);
-  run.result = learning::compensate(body, options);
-  run.learning_end_step = stepper.step_count();
-  if (run.result.steering) {
-    // Walk on as the learner left the robot: its periods and its steering reflex.
-    stepper.set_before_step([&run, &options](sim::Stepper& s) {
-      neural::ControllerState& c = s.state().controller;
-      c.drive =
-          learning::steer(options.steering_params, *run.result.steering, s.sensed_pose(), c.drive);
-    });
-  }
-  for (long walked = 0; walked < after_steps;) {
-    const long n = std::min(options.window_steps, after_steps - walked);
-    const body::Pose2 start = stepper.pose();
-    stepper.steps(n);
-    if (n == options.window_steps) {
-      run.after_windows.push_back(body::measure_window(
-          start, stepper.pose(), learning::course_yaw_deg(run.result.steering)));
-    }
-    walked += n;
-  }
+  TrialEnds ends(watchers.observer);
+  RunSpec started = spec;
+  started.start.seed = spec.learning->seed;  // a noisy sensor's draws follow the learning seed
+  Watchers own = watchers;
+  own.observer = &ends;
+  own.record = spec.record.steps ? &run.record : nullptr;
+  own.record_joints = true;
+  const std::unique_ptr<RunBody> body = open_body(started, model, setup, own);
+  BodyLearning learned = guarded(*body, spec, watchers.stopped, [&] {
+    return learn_body(body->body(), *spec.learning, after_steps);
+  });
+  body->finish("the learning run ended");
+  run.result = std::move(learned.result);
+  run.learning_end_step = learned.learning_end_step;
+  run.after_windows = std::move(learned.after_windows);
   run.trial_end_steps = std::move(ends.ends);
-  run.final_state = std::move(stepper.state());
+  run.final_state = body->final_state();
+  run.hardware = body->hardware();
   return run;
 }
 

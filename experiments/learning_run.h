@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "experiments/bodies.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "sim/sim.h"
@@ -21,7 +22,8 @@ struct LearningRun {
   // Each complete window of the steps walked after learning (does the final
   // controller hold?), measured as robust mode does.
   std::vector<body::WindowMeasure> after_windows;
-  sim::SimState final_state;  // the robot at the end
+  sim::SimState final_state;  // the robot at the end (the simulation's)
+  nlohmann::json hardware;    // a real robot's record (hw::hardware_json); null in simulation
 };
 
 // Runs the learning run `spec` (which must have learning options; the caller validated it) on
@@ -31,5 +33,12 @@ struct LearningRun {
 // step, fault, detection, trial and episode.
 LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec, long after_steps = 0,
                          sim::Observer* observer = nullptr);
+
+// The same on whichever body `spec` names: with spec.hardware the real robot of `setup`
+// (hardware_setup; `model` then only poses its steps for the watchers' observer). A run a fault
+// or a signal stops leaves a real robot stopped, its record to watchers.stopped, and throws on.
+// The record of every step is spec.record.steps' (watchers.record is not read).
+LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec,
+                         const HardwareSetup* setup, long after_steps, const Watchers& watchers);
 
 }  // namespace multicpg::experiments

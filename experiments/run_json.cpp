@@ -2,6 +2,7 @@
 
 #include "body/course_json.h"
 #include "body/fault_spec.h"
+#include "common/json_optional.h"
 #include "learning/json.h"
 #include "robot/leg_sets.h"
 
@@ -41,6 +42,12 @@ nlohmann::json tunnel_json(const RunSpec& spec, const TunnelOutcome& o,
                    {"steps", run.steps},         {"forward_m", run.forward_m},
                    {"lateral_m", run.lateral_m}, {"deviation_deg", run.deviation_deg}};
   j["periods"] = robot::period_map_json(morph, o.periods);
+  if (spec.hardware) {
+    // What a real robot adds: the heading's change (all there is without a sensed position) and
+    // its hardware record.
+    j["yaw_change_deg"] = run.yaw_change_deg;
+    j["hardware"] = run.hardware;
+  }
   // Faults other than whole legs failing (those are in "learning" or the periods' gaps).
   if (!other_faults_text(spec).empty()) j["faults"] = spec.faults;
   if (o.learned) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "body/events.h"
 #include "experiments/run_robot.h"
@@ -25,6 +26,13 @@ struct RecordSpec {
   bool trace = true;       // learning runs: every trial
 };
 
+// A real robot the run walks instead of the simulation (docs/hardware.md "Running it").
+struct HardwareSpec {
+  std::string file;        // its hardware file
+  bool lock_step = false;  // no pacing: each step as soon as the last one's answers came (emulator)
+  bool operator==(const HardwareSpec&) const = default;
+};
+
 struct RunSpec {
   RobotSpec robot;             // which robot, in which world (run_robot.h)
   body::StartSpec start;       // periods and warm-up
@@ -32,6 +40,9 @@ struct RunSpec {
   // How the robot learns to compensate; none = it walks as it started.
   std::optional<learning::CompensationOptions> learning;
   RecordSpec record;
+  // The real robot that walks the run (its leg layout and controller are robot's); none = the
+  // simulation of robot.
+  std::optional<HardwareSpec> hardware;
 };
 
 // How a learning run starts: paper mode from a cold controller with every CPG reset, as the

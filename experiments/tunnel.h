@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "experiments/bodies.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "learning/steering.h"
@@ -32,15 +33,20 @@ struct TunnelSpec {
 };
 
 struct TunnelRun {
-  bool passed = false;        // the trunk reached the far end without touching a wall
+  // The trunk reached the far end without touching a wall; empty on a real robot that senses no
+  // position (nobody can tell but the operator).
+  std::optional<bool> passed;
   bool touched_wall = false;  // some part of the robot touched a wall (the run stops there)
   long steps = 0;
-  double forward_m = 0.0;  // trunk displacement along the tunnel
+  double forward_m = 0.0;  // trunk displacement along the tunnel (NaN: no position sensed)
   double lateral_m = 0.0;  // and across it, + = left
   // Paper Table 1's angle: atan(lateral / forward) of the trunk's displacement (the paper's R1
   // run: 48 cm right after 53 cm, 42°), + = left.
   double deviation_deg = 0.0;
-  sim::WalkRecord record;  // trunk path, every step
+  double yaw_change_deg = 0.0;  // the heading's change over the walk, as sensed
+  sim::WalkRecord record;       // trunk path, every step (the simulation's)
+  nlohmann::json hardware;      // a real robot's record (hw::hardware_json); null in simulation
+  bool passed_or_false() const { return passed.value_or(false); }
 };
 
 // `model` must have the tunnel in its scene (SimOptions::scene.tunnel). `observer` (may be null)
@@ -69,9 +75,11 @@ TunnelScale scale_tunnel(RunSpec& spec);
 // spec.faults through the tunnel of `corridor` (tunnel_model(spec)). With them it first learns in
 // the open field (its robot without the corridor) from the run's start, then walks the learned
 // controller (its periods and, if the learner used it, its steering reflex) from a warmed start
-// through the tunnel, with the legs still failed when the timeline is over. `observer` (may be
-// null) sees the tunnel walk, `learning_observer` (may be null) the learning run. `spec` must be
-// valid (validate).
+// through the tunnel, with the legs still failed when the timeline is over. On a real robot
+// (spec.hardware, `setup` from hardware_setup) it learns where it stands and walks on into its
+// tunnel. `observer` (may be null) sees the tunnel walk, `learning_observer` (may be null) the
+// learning run; `hardware` a real robot's every step and its record if a fault stops it. `spec`
+// must be valid (validate).
 struct TunnelOutcome {
   std::vector<std::size_t> disabled;  // legs failed in the tunnel
   std::vector<int> periods;           // walked: the start's, or learned
@@ -80,6 +88,7 @@ struct TunnelOutcome {
 };
 TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor,
                          long max_steps = kTunnelMaxSteps, sim::Observer* observer = nullptr,
-                         sim::Observer* learning_observer = nullptr);
+                         sim::Observer* learning_observer = nullptr,
+                         const HardwareSetup* setup = nullptr, const Watchers& hardware = {});
 
 }  // namespace multicpg::experiments

@@ -57,20 +57,16 @@ HardwareBody::HardwareBody(const HardwareFile& file, BodyMap body, const body::S
   bus_ = open_bus(file_);
   if (file_.yaw.source == YawSource::line) yaw_ = std::make_unique<YawLine>(file_);
   start_check();
-  // The controller starts as sim::start_walk_state and sim::Stepper start it.
-  const std::vector<int>& periods = start.periods;
-  controller_ = neural::make_controller_state(
-      body_.controller, periods.empty() ? learning::kStartPeriod : periods.front());
-  if (!periods.empty() &&
-      std::any_of(periods.begin(), periods.end(), [&](int p) { return p != periods.front(); })) {
-    neural::set_periods(body_.controller, controller_, periods);
-    neural::set_synchronised(controller_, false);
-  }
+  // The controller starts as every body's does (body/start.h), the faults due at step 0 before
+  // its warm-up.
+  controller_ = body::start_controller(body_.controller, start.periods);
   faults_.apply_due(0, controller_);
-  for (long t = 0; t < start.warmup; ++t) {
-    check_interrupted();
-    neural::controller_step(body_.controller, controller_);
+  for (const body::Fault& f : faults_.applied()) {
+    const body::Event e = body::fault_event(f);
+    if (sink_ != nullptr) sink_->event(e);
+    events_.push_back(e);
   }
+  body::warm_up_controller(body_.controller, controller_, start.warmup);
 }
 
 HardwareBody::~HardwareBody() {
@@ -142,9 +138,9 @@ void HardwareBody::step() {
   for (std::size_t i = came; i < faults_.applied().size(); ++i) {
     body::Event e = body::fault_event(faults_.applied()[i]);
     e.step = walked_;
+    if (sink_ != nullptr) sink_->event(e);
     events_.push_back(e);
   }
-  if (before_step_) before_step_(*this);
   neural::controller_step(body_.controller, controller_);
   StepRow row;
   row.step = walked_ + 1;
@@ -189,6 +185,7 @@ void HardwareBody::steps(long n) {
 void HardwareBody::emit(const body::Event& event) {
   body::Event e = event;
   e.step = walked_;
+  if (sink_ != nullptr) sink_->event(e);
   events_.push_back(std::move(e));
 }
 

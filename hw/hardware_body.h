@@ -14,13 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "body/body.h"
 #include "body/events.h"
+#include "body/start.h"
 #include "hw/bus.h"
 #include "hw/hardware_file.h"
 #include "hw/loop_timing.h"
-#include "learning/compensation.h"
 #include "neural/controller.h"
-#include "sim/stepper.h"
 
 namespace multicpg::hw {
 
@@ -47,11 +47,13 @@ struct StepRow {
   int errors = 0;  // link errors of this step
 };
 
-// Sees every step (to stream it to a file).
+// Sees every step (to stream it to a file) and every event of the run (its faults as they come,
+// the learner's detections, trials and episodes).
 class StepSink {
  public:
   virtual ~StepSink() = default;
   virtual void row(const StepRow& row) = 0;
+  virtual void event(const body::Event& /*event*/) {}
 };
 
 // How a run on hardware stopped.
@@ -75,9 +77,10 @@ class HardwareStop : public RuntimeFailure {
 class HardwareBody final : public body::Body {
  public:
   // Opens the ports and runs the start-up check (every servo or the board answers, the yaw
-  // arrives) before anything moves; then starts the controller as sim::Stepper does (`start`'s
-  // periods, the faults due at step 0, the warm-up). `faults` must hold leg faults only (the
-  // controller's; require_hardware_faults). Throws RuntimeFailure naming what failed the check.
+  // arrives) before anything moves; then starts the controller as every body does (body/start.h:
+  // `start`'s periods, the faults due at step 0, the warm-up). `faults` must hold leg faults only
+  // (the controller's; require_hardware_faults). Throws RuntimeFailure naming what failed the
+  // check.
   HardwareBody(const HardwareFile& file, BodyMap body, const body::StartSpec& start,
                body::FaultTimeline faults, Pacing pacing, StepSink* sink = nullptr);
   HardwareBody(const HardwareBody&) = delete;
@@ -100,8 +103,6 @@ class HardwareBody final : public body::Body {
   const neural::ControllerModel& controller_model() const override { return body_.controller; }
   const body::FaultSchedule& faults() const override { return faults_; }
   void emit(const body::Event& event) override;
-  // Called before every step (the steering reflex, as sim::Stepper::set_before_step).
-  void set_before_step(std::function<void(HardwareBody&)> hook) { before_step_ = std::move(hook); }
 
   // Commands the stop action (the safe posture, or torque off) once; later calls do nothing.
   void stop(const std::string& cause, bool fault = false);
@@ -129,7 +130,6 @@ class HardwareBody final : public body::Body {
   std::unique_ptr<YawLine> yaw_;
   LoopClock clock_;
   StepSink* sink_;
-  std::function<void(HardwareBody&)> before_step_;
   body::Pose2 pose_;
   long walked_ = 0;
   long clamped_ = 0;

@@ -12,22 +12,9 @@
 namespace multicpg::sim {
 
 SimState start_walk_state(const SimModel& model, const std::vector<int>& periods) {
-  if (periods.empty()) return make_sim_state(model);
-  const bool equal =
-      std::all_of(periods.begin(), periods.end(), [&](int p) { return p == periods.front(); });
-  SimState state = make_sim_state(model, periods.front());
-  if (!equal) {
-    neural::set_periods(model.controller, state.controller, periods);
-    neural::set_synchronised(state.controller, false);
-  }
+  SimState state = make_sim_state(model);
+  state.controller = body::start_controller(model.controller, periods);
   return state;
-}
-
-void warm_up_controller(const SimModel& model, SimState& state, long steps) {
-  for (long t = 0; t < steps; ++t) {
-    check_interrupted();  // a warm-up may be long (up to kMaxSteps)
-    neural::controller_step(model.controller, state.controller);
-  }
 }
 
 Stepper::Stepper(const SimModel& model, const body::StartSpec& start, body::FaultTimeline faults,
@@ -41,7 +28,7 @@ Stepper::Stepper(const SimModel& model, const body::StartSpec& start, body::Faul
   require_in("start.warmup", start.warmup, body::kStepLimits);
   state_.faults.sensor.random.seed(start.seed);
   apply_due_faults();
-  warm_up_controller(model_, state_, start.warmup);
+  body::warm_up_controller(model_.controller, state_.controller, start.warmup);
   if (record_ != nullptr) {
     record_->legs = model.legs.size();
     append_record(model_, state_, record_joints_, *record_);

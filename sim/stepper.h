@@ -51,14 +51,9 @@ class Observers final : public Observer {
   std::vector<Observer*> all_;
 };
 
-// The state a run starts from before its warm-up: make_sim_state, then `periods` (one per leg;
-// empty = all 4). Equal periods keep the clients synchronised; unequal ones set each leg's
-// period and free the clients (paper §2.3). Throws BadInput for a wrong number of periods or a
-// period outside 1-9.
+// The state a run starts from before its warm-up: make_sim_state, its controller
+// body::start_controller's (a period outside 1-9 throws BadInput).
 SimState start_walk_state(const SimModel& model, const std::vector<int>& periods);
-
-// Runs the neural controller alone for `steps` steps: the robot does not move.
-void warm_up_controller(const SimModel& model, SimState& state, long steps);
 
 // Everything a Stepper's run is between two steps (the Python API's state()/restore()).
 struct StepperCheckpoint {

@@ -13,9 +13,6 @@ namespace {
 
 // Named by the spec's keys (OptionError): the CLI and Python name their flags and arguments.
 void check_spec(const SimModel& model, const WalkSpec& spec) {
-  require_in("steps", spec.steps, body::kRunStepsLimits);
-  require_in("window", spec.window, body::kRunStepsLimits);
-  require_in("settle", spec.settle, body::kStepLimits);
   require_in("start.warmup", spec.start.warmup, body::kStepLimits);
   if (!spec.start.periods.empty() && spec.start.periods.size() != model.legs.size()) {
     throw OptionError("start.periods", "expected " + std::to_string(model.legs.size()) +
@@ -29,15 +26,7 @@ void check_spec(const SimModel& model, const WalkSpec& spec) {
   } catch (const BadInput& e) {
     throw OptionError("faults", e.what());
   }
-  const long total = spec.settle + spec.steps;
-  for (const body::Fault& f : spec.faults) {
-    if (f.step >= total) {
-      throw OptionError("faults", std::string(f.recover ? "a recovery" : "a fault") + " at step " +
-                                      std::to_string(f.step) +
-                                      " comes after the last step of the walk, " +
-                                      std::to_string(total - 1));
-    }
-  }
+  body::validate_walk(spec.faults, spec.settle, spec.steps, spec.window);
 }
 
 // Trunk poses at the rows a walk's measures need (rows settle, settle + window, ... and the
@@ -69,19 +58,14 @@ class WindowPoses final : public Observer {
 void measure_poses(const SimModel& model, long steps, const std::vector<body::Pose2>& boundaries,
                    const body::Pose2& last, WalkResult& result) {
   result.duration_s = static_cast<double>(steps) * model.control_dt;
-  const body::WindowMeasure whole = measure_window(boundaries.front(), last);
-  result.distance_m = std::hypot(whole.forward_m, whole.lateral_m);
-  result.forward_m = whole.forward_m;
-  result.lateral_m = whole.lateral_m;
+  body::WalkMeasure m = body::measure_walk(boundaries, last);
+  result.distance_m = m.distance_m;
+  result.forward_m = m.forward_m;
+  result.lateral_m = m.lateral_m;
   result.speed_m_s = result.distance_m / result.duration_s;
-  result.window_deviations_deg.clear();
-  result.windows.clear();
-  for (std::size_t k = 1; k < boundaries.size(); ++k) {
-    result.window_deviations_deg.push_back(
-        wrap_degrees(boundaries[k].yaw_deg - boundaries[k - 1].yaw_deg));
-    result.windows.push_back(measure_window(boundaries[k - 1], boundaries[k]));
-  }
-  result.final_yaw_deg = last.yaw_deg;
+  result.window_deviations_deg = std::move(m.window_deviations_deg);
+  result.windows = std::move(m.windows);
+  result.final_yaw_deg = m.final_yaw_deg;
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ std::string papers_after_text(const paper::TunnelResult& sc) {
 // "passed, -5.1°", "wall at 0.82 m, -21.1°", "too slow, -3.0°".
 std::string outcome_text(const experiments::TunnelRun& t) {
   const std::string angle = fixed(t.deviation_deg, 1) + "°";
-  if (t.passed) return "passed, " + angle;
+  if (t.passed_or_false()) return "passed, " + angle;
   if (t.touched_wall) return "wall at " + fixed(t.forward_m, 2) + " m, " + angle;
   return "too slow, " + angle;
 }
@@ -236,10 +236,11 @@ ScenarioOutput run_scenario(const StageContext& ctx, const sim::SimModel& corrid
                    page);
       out.replays.push_back(ctx.rel(page));
     }
-    out.rows.push_back({name, robot::period_map_text(morph, v.periods, disabled), v.source,
-                        fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
-                        t.passed ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
-                        "≈" + v.paper});
+    out.rows.push_back(
+        {name, robot::period_map_text(morph, v.periods, disabled), v.source,
+         fixed(t.deviation_deg, 2), fixed(t.forward_m, 2), fixed(t.lateral_m, 2),
+         t.passed_or_false() ? "passed" : (t.touched_wall ? "hit a wall" : "too slow"),
+         "≈" + v.paper});
     if (v.path == nullptr) continue;
     for (std::size_t i = 0; i < t.record.rows(); ++i) {
       v.path->push_back({t.record.x[i], t.record.y[i]});
@@ -338,7 +339,7 @@ Section tunnel_stage(const StageContext& ctx) {
                             paper::combination_text(sc.learned) +
                             ": the robot passes (Table 1, on " + own + ")",
                         "passed, " + papers_after_text(sc), outcome_text(r.papers),
-                        r.papers.passed ? Reproduced::yes : Reproduced::no});
+                        r.papers.passed_or_false() ? Reproduced::yes : Reproduced::no});
   }
   Section section{
       "tunnel",

@@ -7,9 +7,11 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
-#include "hw/emulator.h"
+#include "emulator/emulator.h"
 
-namespace multicpg::hw {
+namespace multicpg::emulator {
+// The emulator speaks the hardware's protocols (hw/): their frames, files and ports.
+using namespace hw;
 namespace {
 
 struct KindName {
@@ -89,4 +91,4 @@ std::string to_string(const Injection& in) {
   return fmt::format("{}{}@{}", k.name, k.value ? fmt::format("={}", in.value) : "", in.step);
 }
 
-}  // namespace multicpg::hw
+}  // namespace multicpg::emulator

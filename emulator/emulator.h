@@ -17,7 +17,7 @@
 #include "hw/serial_port.h"
 #include "sim/sim.h"
 
-namespace multicpg::hw {
+namespace multicpg::emulator {
 
 // One injected fault, from command frame `step` on (KIND[=VALUE]@STEP).
 struct Injection {
@@ -35,7 +35,7 @@ struct Injection {
 };
 // "drop=0.2@100", "silent=5@300", "silent-yaw@40", ... Throws BadInput naming the kinds, a value
 // out of range or missing.
-Injection parse_injection(std::string_view text, const HardwareFile& file);
+Injection parse_injection(std::string_view text, const hw::HardwareFile& file);
 std::string to_string(const Injection& injection);
 
 struct EmulatorSpec {
@@ -61,7 +61,7 @@ class Emulator {
  public:
   // Opens the pseudo-terminals (the bus's, and the yaw line's when the file has one) and starts
   // `model`'s robot in its start pose.
-  Emulator(const sim::SimModel& model, const HardwareFile& file, EmulatorSpec spec);
+  Emulator(const sim::SimModel& model, const hw::HardwareFile& file, EmulatorSpec spec);
   Emulator(const Emulator&) = delete;
   Emulator& operator=(const Emulator&) = delete;
   ~Emulator();
@@ -74,9 +74,9 @@ class Emulator {
 
  private:
   class Impl;
-  Pty bus_;
-  Pty yaw_;
+  hw::Pty bus_;
+  hw::Pty yaw_;
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace multicpg::hw
+}  // namespace multicpg::emulator

@@ -1,5 +1,5 @@
 // The emulator (emulator.h): a fake robot serving the hardware file's protocol on pseudo-terminals.
-#include "hw/emulator.h"
+#include "emulator/emulator.h"
 
 #include <poll.h>
 #include <unistd.h>
@@ -24,7 +24,9 @@
 #include "hw/dynamixel.h"
 #include "hw/yaw_line.h"
 
-namespace multicpg::hw {
+namespace multicpg::emulator {
+// The emulator speaks the hardware's protocols (hw/): their frames, files and ports.
+using namespace hw;
 namespace {
 
 constexpr double kDegPerRad = 180.0 / std::numbers::pi;
@@ -537,4 +539,4 @@ EmulatorSummary Emulator::run() {
   return impl_->run();
 }
 
-}  // namespace multicpg::hw
+}  // namespace multicpg::emulator

@@ -1,35 +1,14 @@
-#include "apps/hardware_flags.h"
+#include "apps/hardware_output.h"
 
 #include <fmt/format.h>
 
 #include <iostream>
 
-#include "apps/flag_checks.h"
 #include "common/atomic_file.h"
-#include "common/errors.h"
 
 namespace multicpg::apps {
 
-void add_hardware_flags(CLI::App& cmd, hw::HardwareFlags& flags) {
-  cmd.add_option("--hardware", flags.file,
-                 "run on a real robot through this hardware file (docs/hardware.md), in real time "
-                 "at the control rate");
-  cmd.add_flag("--lock-step", flags.lock_step,
-               "with --hardware: no pacing, each step as soon as the last one's answers came "
-               "(rehearsal with `multicpg emulate`; never on a real robot)");
-}
-
-hw::HardwareSetup hardware_setup(const experiments::RunSpec& spec, const hw::HardwareFlags& flags,
-                                 const RunFlags& run) {
-  if (flags.lock_step && !flags.given()) throw BadInput("--lock-step needs --hardware");
-  try {
-    return hw::hardware_setup(spec, flags);
-  } catch (const OptionError& e) {
-    throw BadInput(flag_of(e.key(), run) + ": " + e.what());
-  }
-}
-
-hw::StoppedSink stopped_record(bool json, const std::string& file) {
+experiments::StoppedSink stopped_record(bool json, const std::string& file) {
   return [json, file](const nlohmann::json& record) {
     if (!file.empty()) write_file_atomic(file, record.dump(2) + "\n");
     if (json) std::cout << record.dump(2) << "\n" << std::flush;
