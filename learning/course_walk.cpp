@@ -21,9 +21,7 @@ CourseWalk::CourseWalk(body::Body& body, const CompensationOptions& options, Cou
 void CourseWalk::steps(long n) {
   for (long i = 0; i < n; ++i) {
     if (state_.steering) {
-      neural::ControllerState& c = body_.controller();
-      c.drive = steer(options_.steering_params, *state_.steering, body_.pose(), c.drive);
-      state_.cut_sum += std::abs(state_.steering->last_cut);
+      state_.cut_sum += steer_body(options_.steering_params, *state_.steering, body_);
     }
     body_.step();
     take_faults();

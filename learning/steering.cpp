@@ -59,4 +59,10 @@ neural::DriveInputs steer(const SteeringParams& p, SteeringState& s, const body:
   return drive;
 }
 
+double steer_body(const SteeringParams& params, SteeringState& state, body::Body& body) {
+  neural::ControllerState& c = body.controller();
+  c.drive = steer(params, state, body.pose(), c.drive);
+  return std::abs(state.last_cut);
+}
+
 }  // namespace multicpg::learning

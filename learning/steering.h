@@ -13,6 +13,7 @@
 
 #include <optional>
 
+#include "body/body.h"
 #include "body/deviation.h"
 #include "common/limits.h"
 #include "neural/drive.h"
@@ -60,5 +61,11 @@ std::optional<double> course_yaw_deg(const std::optional<SteeringState>& steerin
 // One reflex step: reads the pose, returns the drive inputs with turn_left / turn_right set.
 neural::DriveInputs steer(const SteeringParams& params, SteeringState& state,
                           const body::Pose2& now, neural::DriveInputs drive);
+
+// The one steering hook, before a body's step: the reflex reads what the body senses (its yaw
+// sensor, its position) and sets the controller's steering inputs. Every run that steers (the
+// online loop, the walk after learning, the tunnel, Python's Simulation and replays) steers
+// through it. Returns the step's |swing cut| (0..1).
+double steer_body(const SteeringParams& params, SteeringState& state, body::Body& body);
 
 }  // namespace multicpg::learning

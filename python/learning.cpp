@@ -100,6 +100,7 @@ const Signature& learn_signature() {
                                              fault_params(),
                                              learning_params(),
                                              {{"record", py::bool_(false)}},
+                                             hardware_params(),
                                              observer_params(),
                                              progress_params()}));
   return *s;
@@ -111,14 +112,22 @@ py::dict learn(const Keywords& k) {
   const body::FaultTimeline timeline = fault_timeline(morph, k);
   experiments::RunSpec spec = run_spec(*robot, {}, timeline, learning_options(k));
   spec.record.steps = flag(k["record"], "record");
+  const std::optional<experiments::HardwareSetup> setup = hardware_setup(k, spec);
+  if (setup && spec.record.steps) {
+    value_error("record", "records the simulation's every step; a real robot's run has none");
+  }
   Watch watch(k["progress"], "learn", 0, k["observer"], &morph);
   experiments::LearningRun run;
   {
     const py::gil_scoped_release release;
-    run = experiments::run_learning(*robot->model, spec, 0, &watch);
+    experiments::Watchers watchers;
+    watchers.observer = &watch;
+    run = experiments::run_learning(*robot->model, spec, setup ? &*setup : nullptr, 0, watchers);
   }
   watch.finish();
-  py::dict out = to_python(experiments::learn_json(spec, run.result));
+  Json json = experiments::learn_json(spec, run.result);
+  if (setup) json["hardware"] = run.hardware;
+  py::dict out = to_python(json);
   out["trace_arrays"] = trace_arrays(spec.learning->learner.name, run.result, morph.size());
   if (spec.record.steps) out["path"] = path_arrays(run.record);
   return out;
@@ -161,6 +170,7 @@ const Signature& tunnel_signature() {
                                               {"video", py::none()}},
                                              learning_params(),
                                              sim_params(),
+                                             hardware_params(),
                                              observer_params(),
                                              progress_params(),
                                              {{"scale_tunnel", py::bool_(false)}}}));
@@ -196,6 +206,13 @@ py::dict tunnel(const Keywords& k) {
   std::optional<learning::CompensationOptions> options;
   if (learns) options = learning_options(k);
   experiments::RunSpec spec = run_spec(*robot, start, fault_timeline(morph, k), options);
+  const std::optional<experiments::HardwareSetup> setup = hardware_setup(k, spec);
+  if (setup && !video.empty()) {
+    value_error("video", "films the simulated tunnel; a real robot's run has none");
+  }
+  if (setup && flag(k["scale_tunnel"], "scale_tunnel")) {
+    value_error("scale_tunnel", "scales the simulated tunnel; not with hardware");
+  }
   std::optional<experiments::TunnelScale> scale;
   if (flag(k["scale_tunnel"], "scale_tunnel")) {
     try {
@@ -221,7 +238,8 @@ py::dict tunnel(const Keywords& k) {
       film_observer.emplace(*film, label.str());
     }
     sim::Observers walk({film_observer ? &*film_observer : nullptr, &watch});
-    out = experiments::run_tunnel(spec, corridor, max_steps, &walk, &watch);
+    out = experiments::run_tunnel(spec, corridor, max_steps, &walk, &watch,
+                                  setup ? &*setup : nullptr);
     if (film) film->finish();
   }
   watch.finish();
@@ -229,7 +247,7 @@ py::dict tunnel(const Keywords& k) {
   if (out.learned) {
     result["trace_arrays"] = trace_arrays(spec.learning->learner.name, *out.learned, morph.size());
   }
-  result["path"] = path_arrays(out.run.record);
+  if (!setup) result["path"] = path_arrays(out.run.record);
   return result;
 }
 

@@ -15,6 +15,7 @@
 #include "report/replay/rerun.h"
 #include "sim/checkpoint.h"
 #include "sim/json.h"
+#include "sim/sim_body.h"
 #include "sim/stepper.h"
 #include "sim/walk.h"
 
@@ -115,8 +116,8 @@ py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::ha
     if (!document.at("steering").is_null()) {
       steering = document.at("steering").get<learning::SteeringState>();
       stepper.set_before_step([&steering](sim::Stepper& s) {
-        neural::ControllerState& c = s.state().controller;
-        c.drive = learning::steer(learning::SteeringParams{}, *steering, s.pose(), c.drive);
+        sim::SimBody body(s);
+        learning::steer_body(learning::SteeringParams{}, *steering, body);
       });
     }
     gate.open = true;

@@ -19,6 +19,7 @@ std::string argument_of(const std::string& key) {
   if (key == "start.periods") return "periods";
   if (key == "start.warmup") return "warmup";
   if (key == "faults") return "disable/faults/recoveries";
+  if (key == "hardware.file") return "hardware";
   if (key.rfind("sim.", 0) == 0) return sim_argument(key.substr(4));
   if (key == "learning.annealing.threshold_deg") return "threshold";
   if (key == "learning.window_steps") return "window";
@@ -130,6 +131,27 @@ learning::CompensationOptions learning_options(const Keywords& k) {
 
 Params progress_params() {
   return {{"progress", py::bool_(true)}};
+}
+
+Params hardware_params() {
+  return {{"hardware", py::none()}, {"lock_step", py::bool_(false)}};
+}
+
+std::optional<experiments::HardwareSetup> hardware_setup(const Keywords& k,
+                                                         experiments::RunSpec& spec) {
+  const bool lock_step = flag(k["lock_step"], "lock_step");
+  if (k["hardware"].is_none()) {
+    if (lock_step) value_error("lock_step", "needs hardware: it paces a real robot's run");
+    return std::nullopt;
+  }
+  spec.hardware = experiments::HardwareSpec{path(k["hardware"], "hardware"), lock_step};
+  try {
+    return experiments::hardware_setup(spec);
+  } catch (const OptionError& e) {
+    value_error(argument_of(e.key()), e.what());
+  } catch (const BadInput& e) {
+    value_error("hardware", e.what());
+  }
 }
 
 experiments::RunSpec run_spec(const Robot& robot, body::StartSpec start, body::FaultTimeline faults,

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "body/events.h"
+#include "experiments/bodies.h"
 #include "experiments/run_spec.h"
 #include "learning/compensation.h"
 #include "python/keywords.h"
@@ -32,6 +33,14 @@ learning::CompensationOptions learning_options(const Keywords& k);
 
 // progress (True, False or a callable, python/watch.h).
 Params progress_params();
+
+// hardware (a hardware file, docs/hardware.md: a real robot walks the run) and lock_step (no
+// pacing: the emulator's rehearsal), as `--hardware` and `--lock-step`.
+Params hardware_params();
+// The run's hardware from those arguments: sets spec.hardware and returns what the run needs of
+// it, checked before any port opens (a ValueError naming the argument); nothing without one.
+std::optional<experiments::HardwareSetup> hardware_setup(const Keywords& k,
+                                                         experiments::RunSpec& spec);
 
 // A run checked whole (experiments::validate); a bad value is a ValueError naming its argument.
 experiments::RunSpec run_spec(const Robot& robot, body::StartSpec start, body::FaultTimeline faults,

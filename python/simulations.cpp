@@ -22,6 +22,7 @@
 #include "report/film.h"
 #include "report/render.h"
 #include "robot/leg_sets.h"
+#include "sim/sim_body.h"
 #include "sim/walk.h"
 
 namespace multicpg::python {
@@ -124,7 +125,7 @@ class Simulation {
     const bool steering = flag(on, "on");
     const auto lock = lock_with_gil();
     if (steering) {
-      steering_ = learning::start_steering(stepper_->pose());
+      steering_ = learning::start_steering(stepper_->sensed_pose());
     } else {
       steering_.reset();
       neural::DriveInputs& drive = stepper_->state().controller.drive;
@@ -150,10 +151,11 @@ class Simulation {
       const py::gil_scoped_release release;
       const std::lock_guard<std::mutex> lock(mutex_);
       require_room(steps, "steps");
-      const body::Pose2 from = stepper_->pose();
+      // What the robot senses, as the learner measures (learning/course_walk.h).
+      const body::Pose2 from = stepper_->sensed_pose();
       cut_sum_ = 0.0;
       watched_steps(steps, watch);
-      m = body::measure_window(from, stepper_->pose(), learning::course_yaw_deg(steering_));
+      m = body::measure_window(from, stepper_->sensed_pose(), learning::course_yaw_deg(steering_));
       m.steering_effort = cut_sum_ / static_cast<double>(steps);
     }
     return py::dict(py::arg("yaw_deg") = m.yaw_deg, py::arg("path_deg") = m.path_deg,
@@ -324,9 +326,8 @@ class Simulation {
     if (recording_) recorder_.append(stepper_->state());
     stepper_->set_before_step([this](sim::Stepper& s) {
       if (!steering_) return;
-      neural::ControllerState& c = s.state().controller;
-      c.drive = learning::steer(steering_params_, *steering_, s.pose(), c.drive);
-      cut_sum_ += std::abs(steering_->last_cut);
+      sim::SimBody body(s);
+      cut_sum_ += learning::steer_body(steering_params_, *steering_, body);
     });
   }
 

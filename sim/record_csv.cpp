@@ -14,7 +14,7 @@ namespace {
 constexpr int kCsvDigits = 9;
 
 void write_header(std::ostream& out, const robot::Morphology& morph) {
-  out << "step,time_s,x_m,y_m,z_m,yaw_deg";
+  out << "step,time_s,x_m,y_m,z_m,yaw_deg,sensed_yaw_deg";
   for (const robot::Leg& leg : morph.legs) {
     for (robot::Joint j : robot::kJoints) {
       const std::string name = leg.name + "_" + std::string(robot::to_string(j));
@@ -29,7 +29,7 @@ void write_header(std::ostream& out, const robot::Morphology& morph) {
 void write_row(std::ostream& out, std::size_t legs, const WalkRecord& r, std::size_t row,
                std::size_t step) {
   out << step << "," << r.time[row] << "," << r.x[row] << "," << r.y[row] << "," << r.z[row] << ","
-      << r.yaw_deg[row];
+      << r.yaw_deg[row] << "," << r.sensed_yaw_deg[row];
   for (std::size_t leg = 0; leg < legs; ++leg) {
     for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
       const std::size_t k = (row * legs + leg) * robot::kJointsPerLeg + j;
@@ -58,8 +58,8 @@ void RecordCsvWriter::on_step(const SimModel& model, const SimState& state) {
 }
 
 void RecordCsvWriter::write(const SimModel& model, const SimState& state) {
-  for (auto* v : {&row_.time, &row_.x, &row_.y, &row_.z, &row_.yaw_deg, &row_.command, &row_.target,
-                  &row_.actual}) {
+  for (auto* v : {&row_.time, &row_.x, &row_.y, &row_.z, &row_.yaw_deg, &row_.sensed_yaw_deg,
+                  &row_.command, &row_.target, &row_.actual}) {
     v->clear();
   }
   row_.contact.clear();

@@ -7,6 +7,7 @@
 
 #include "common/errors.h"
 #include "common/limits.h"
+#include "sim/fault_effects.h"
 
 namespace multicpg::sim {
 namespace {
@@ -44,7 +45,7 @@ class WindowPoses final : public Observer {
  private:
   void take(const SimModel& model, const SimState& state) {
     const Position p = trunk_position(model, state);
-    last = {p.x, p.y, trunk_yaw_deg(model, state)};
+    last = {p.x, p.y, sensed_yaw_deg(model, state)};
     if (row_ >= settle_ && (row_ - settle_) % window_ == 0) boundaries.push_back(last);
     ++row_;
   }
@@ -95,7 +96,7 @@ WalkResult walk(const SimModel& model, const WalkSpec& spec) {
     return result;
   }
   const auto rows = static_cast<std::size_t>(total) + 1;
-  for (auto* v : {&r.time, &r.x, &r.y, &r.z, &r.yaw_deg}) v->reserve(rows);
+  for (auto* v : {&r.time, &r.x, &r.y, &r.z, &r.yaw_deg, &r.sensed_yaw_deg}) v->reserve(rows);
   if (spec.record) {
     const std::size_t legs = model.legs.size();
     r.command.reserve(rows * legs * robot::kJointsPerLeg);
@@ -115,9 +116,10 @@ void measure_walk(const SimModel& model, long settle, long steps, long window, W
   std::vector<body::Pose2> boundaries;
   const auto w = static_cast<std::size_t>(window);
   for (auto row = static_cast<std::size_t>(settle); row < r.rows(); row += w) {
-    boundaries.push_back({r.x[row], r.y[row], r.yaw_deg[row]});
+    boundaries.push_back({r.x[row], r.y[row], r.sensed_yaw_deg[row]});
   }
-  measure_poses(model, steps, boundaries, {r.x.back(), r.y.back(), r.yaw_deg.back()}, result);
+  measure_poses(model, steps, boundaries, {r.x.back(), r.y.back(), r.sensed_yaw_deg.back()},
+                result);
 }
 
 }  // namespace multicpg::sim

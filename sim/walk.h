@@ -44,7 +44,7 @@ struct WalkResult {
   std::vector<double> window_deviations_deg;
   // Yaw change and Table 1 path angle of each complete window (sim/deviation.h).
   std::vector<body::WindowMeasure> windows;
-  double final_yaw_deg = 0.0;  // front trunk yaw at the end; the robot starts at yaw 0
+  double final_yaw_deg = 0.0;  // the yaw sensor's reading at the end; the robot starts at yaw 0
   SimState final_state;        // the robot at the end
 };
 

@@ -1,5 +1,7 @@
 #include "sim/walk_record.h"
 
+#include "sim/fault_effects.h"
+
 namespace multicpg::sim {
 
 void append_record(const SimModel& model, const SimState& state, bool joints, WalkRecord& r) {
@@ -9,6 +11,7 @@ void append_record(const SimModel& model, const SimState& state, bool joints, Wa
   r.y.push_back(p.y);
   r.z.push_back(p.z);
   r.yaw_deg.push_back(trunk_yaw_deg(model, state));
+  r.sensed_yaw_deg.push_back(sensed_yaw_deg(model, state));
   if (!joints) return;
   for (std::size_t leg = 0; leg < r.legs; ++leg) {
     const neural::MotorCommands& m = state.controller.legs[leg].command;

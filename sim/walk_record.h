@@ -15,6 +15,9 @@ struct WalkRecord {
   std::vector<double> time;     // s
   std::vector<double> x, y, z;  // trunk position, m
   std::vector<double> yaw_deg;  // front trunk yaw, (-180, 180]
+  // What the yaw sensor reads (sim::sensed_yaw_deg: a drifting or noisy sensor's error included),
+  // what the learner, the reflex and every window's measure read.
+  std::vector<double> sensed_yaw_deg;
   // Only when joints are recorded, indexed [row * legs * 3 + leg * 3 + joint] (TC, CTr, FTi):
   std::vector<double> command;         // motor command m in [-1, 1] (docs/controller.md)
   std::vector<double> target;          // commanded joint angle, rad

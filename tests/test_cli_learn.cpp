@@ -60,7 +60,7 @@ TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
             "tabu_redraw");
   EXPECT_EQ(count_lines(trace), j.at("trials").get<int>() + 1);
   const std::string steps = read_file(fs::path(dir) / "run/steps.csv");
-  EXPECT_EQ(steps.rfind("step,time_s,x_m,y_m,z_m,yaw_deg,R1_TC_command,", 0), 0u);
+  EXPECT_EQ(steps.rfind("step,time_s,x_m,y_m,z_m,yaw_deg,sensed_yaw_deg,R1_TC_command,", 0), 0u);
   EXPECT_EQ(count_lines(steps), j.at("steps_walked").get<int>() + 2);  // header + row 0
   fs::remove_all(dir);
 }

@@ -88,7 +88,7 @@ TEST(CliWalk, CsvHasEveryStepAndColumn) {
   const auto r = run_cli("walk --robot quadruped --steps 30 --settle 5 --csv " + dir + "/w.csv");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string csv = read_file(dir + "/w.csv");
-  std::string header = "step,time_s,x_m,y_m,z_m,yaw_deg";
+  std::string header = "step,time_s,x_m,y_m,z_m,yaw_deg,sensed_yaw_deg";
   for (const char* leg : {"R1", "R2", "L1", "L2"}) {
     for (const char* joint : {"TC", "CTr", "FTi"}) {
       const std::string n = std::string(leg) + "_" + joint;

@@ -85,5 +85,41 @@ TEST(HardwareClosedLoop, TableOneScenariosLearnAsInProcess) {
   }
 }
 
+// A run on hardware keeps what a simulated one keeps: its replay, its picture, its records; the
+// tunnel's JSON with its hardware record and the yaw change a robot without position can give.
+TEST(HardwareClosedLoop, ARunOnHardwareWritesItsReplayPictureAndRecords) {
+  const std::string dir = make_temp_dir("hw-run-");
+  {
+    Rehearsal dxl("dynamixel-hexapod.toml", kTimeoutMs);
+    const CliResult r =
+        run_cli("learn --mode paper --disable R1 --lock-step --hardware " + dxl.file() +
+                " --replay " + dir + "/run.html --plot " + dir + "/run.png --out " + dir + "/out");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(dxl.finish());
+    EXPECT_NE(r.out.find("    1  4x"), std::string::npos) << "the table streams its trials\n"
+                                                          << r.out;
+    EXPECT_NE(r.out.find("wrote " + dir + "/run.html"), std::string::npos) << r.out;
+    const std::string page = read_file(dir + "/run.html");
+    EXPECT_NE(page.find("<html"), std::string::npos);
+    EXPECT_GT(read_file(dir + "/run.png").size(), 1000u);
+    const nlohmann::json learned = nlohmann::json::parse(read_file(dir + "/out/learning.json"));
+    EXPECT_EQ(learned.at("status"), "converged");
+    EXPECT_EQ(learned.at("hardware").at("protocol"), "dynamixel");
+    EXPECT_NE(read_file(dir + "/out/hardware.csv").find("step,time_s"), std::string::npos);
+  }
+  {
+    Rehearsal dxl("dynamixel-hexapod.toml", kTimeoutMs);
+    const CliResult r = run_cli("tunnel --disable R1 --max-steps 200 --lock-step --hardware " +
+                                dxl.file() + " --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(dxl.finish());
+    const nlohmann::json t = nlohmann::json::parse(r.out);
+    EXPECT_TRUE(t.at("passed").is_null()) << "no position sensed: nobody can tell";
+    EXPECT_EQ(t.at("steps"), 200);
+    EXPECT_TRUE(t.at("yaw_change_deg").is_number());
+    EXPECT_EQ(t.at("hardware").at("stop").at("cause"), "the tunnel walk ended");
+  }
+}
+
 }  // namespace
 }  // namespace multicpg::testing

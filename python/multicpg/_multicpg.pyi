@@ -240,9 +240,10 @@ def learn(robot: Union[Robot, str] = "hexapod", *, terrain: Union[None, "Terrain
           hold_windows: int = 3, monitor_windows: int = 6, period_learning: bool = True,
           beta: float = 0.5, threshold: float = 8.0, window: int = 400,
           settle: Optional[int] = None, max_trials: int = 200, seed: int = 1,
-          record: bool = False, observer: Observer = None,
-          progress: Progress = True) -> Dict[str, Any]:
-    """`multicpg learn`: the dict of `learn --json` plus trace_arrays (and path)."""
+          record: bool = False, hardware: Optional[PathLike] = None, lock_step: bool = False,
+          observer: Observer = None, progress: Progress = True) -> Dict[str, Any]:
+    """`multicpg learn`: the dict of `learn --json` plus trace_arrays (and path); with hardware,
+    on the real robot of that hardware file (its hardware record under 'hardware')."""
 
 def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disable_at: int = 0,
            faults: Faults = None, recoveries: Faults = None, periods: Optional[Periods] = None, learn: bool = False, max_steps: int = 12000,
@@ -254,9 +255,11 @@ def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disabl
            control_dt: float = 0.037, physics_dt: Optional[float] = None,
            servo_gain: Optional[float] = None, terrain: Union["Terrain", str] = "flat",
            model: str = "paper-sim", body: Optional[Mapping[str, Any]] = None,
+           hardware: Optional[PathLike] = None, lock_step: bool = False,
            observer: Observer = None, progress: Progress = True,
            scale_tunnel: bool = False) -> Dict[str, Any]:
-    """`multicpg tunnel`: the dict of `tunnel --json` plus path (and trace_arrays)."""
+    """`multicpg tunnel`: the dict of `tunnel --json` plus path (and trace_arrays); with
+    hardware, on the real robot of that hardware file (no path)."""
 
 class Annealer:
     """The simulated annealing of paper §3, one call per step."""

@@ -6,7 +6,9 @@ import numpy as np
 
 import multicpg
 from multicpg.env import CompensationEnv
-from conftest import SOURCE_DIR, cli_json
+import json
+
+from conftest import SOURCE_DIR, cli_json, run_cli
 
 ROBOT_FILE = str(SOURCE_DIR / "examples" / "robots" / "hobby_hexapod.toml")
 
@@ -69,3 +71,49 @@ def test_reprs_say_what_an_object_is():
     assert repr(annealer).startswith("<multicpg.Annealer of multicpg.Robot('hexapod'): 0 trials")
     assert repr(CompensationEnv(max_trials=1)).startswith(
         "<multicpg.env.CompensationEnv robust mode")
+
+
+def test_a_drifting_yaw_sensor_reads_the_same_from_the_cli_python_and_an_experiment_file(
+        tmp_path):
+    """One way to measure: every window is what the robot senses (a drifting sensor's error
+    included), from the CLI, Python's Simulation and learn(), and an experiment file."""
+    drift = "imu:drift=1@0"
+    walked = cli_json("walk", "--disable", "R1", "--fault", drift)
+    sim = multicpg.Simulation(disable="R1", faults=[drift])
+    windows = [sim.walk_window(400) for _ in walked["windows"]]
+    for mine, cli in zip(windows, walked["windows"]):
+        assert mine["yaw_deg"] == cli["yaw_deg"]
+        assert mine["path_deg"] == cli["path_deg"]
+    assert sim.measure()["windows"] == walked["windows"]
+    straight = multicpg.Simulation(disable="R1")
+    assert straight.walk_window(400)["yaw_deg"] != windows[0]["yaw_deg"], "the drift is read"
+
+    # An experiment file's run and the same run from the CLI and Python (bayes draws nothing, so
+    # the experiment's seed of its own is no matter).
+    experiment = tmp_path / "drift.toml"
+    experiment.write_text('''robot = "hexapod"
+scenarios = [{ name = "R1+R3-drift", faults = [{ step = 0, legs = ["R1", "R3"] },
+                                               { step = 0, kind = "drift", value = 1.0 }] }]
+runs = 1
+seed = 1
+
+[learning]
+learner = { name = "bayes" }
+monitor_windows = 2
+
+[learning.annealing]
+max_trials = 3
+''')
+    run_cli("run", str(experiment), "--out", str(tmp_path / "out"), "--jobs", "1")
+    runs = sorted((tmp_path / "out" / "runs").glob("*.json"))
+    assert len(runs) == 1
+    run = json.loads(runs[0].read_text())
+    cli = cli_json("learn", "--disable", "R1,R3", "--fault", drift, "--learner", "bayes",
+                   "--max-trials", "3", "--monitor-windows", "2")
+    mine = multicpg.learn(disable="R1,R3", faults=[drift], learner="bayes", max_trials=3,
+                          monitor_windows=2, progress=False)
+    assert cli["trace"], "the drift makes the robot learn"
+    assert mine["trace"] == cli["trace"]
+    assert mine["final_windows"] == cli["final_windows"]
+    assert run["result"]["trace"] == cli["trace"]
+    assert run["result"]["final_windows"] == cli["final_windows"]
