@@ -28,6 +28,7 @@
 #include "common/errors.h"
 #include "common/interrupt.h"
 #include "common/json_diff.h"
+#include "common/worker_threads.h"
 #include "experiments/processes.h"
 
 namespace multicpg::experiments {
@@ -283,10 +284,11 @@ class Session {
         }
       }
     };
-    const std::size_t threads = std::min(todo_.size(), static_cast<std::size_t>(jobs));
-    std::vector<std::thread> pool;
-    for (std::size_t t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
+    try {
+      WorkerThreads(std::min(todo_.size(), static_cast<std::size_t>(jobs)), worker).join();
+    } catch (const RuntimeFailure&) {
+      failed(std::current_exception());  // no thread ran a task
+    }
   }
 
   // Every result, or the first failure rethrown (Interrupted when a signal stopped the runs).
@@ -463,8 +465,7 @@ RunnerOutcome serve_primary(const std::vector<Task>& tasks, const TaskFunction& 
       changed.notify_all();
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < options.jobs; ++t) pool.emplace_back(worker);
+  WorkerThreads pool(static_cast<std::size_t>(options.jobs), worker);
 
   int busy = 0;  // tasks assigned and not yet answered
   bool told_to_stop = false;
@@ -480,25 +481,33 @@ RunnerOutcome serve_primary(const std::vector<Task>& tasks, const TaskFunction& 
     ++busy;
     changed.notify_all();
   };
-  for (;;) {
-    while (!told_to_stop && busy < options.jobs) tell(kAsk, "");
-    if (busy == 0) break;
-    std::pair<Tag, std::string> answer;
+  const auto quit_workers = [&] {
     {
-      std::unique_lock lock(mutex);
-      changed.wait(lock, [&] { return !answers.empty(); });
-      answer = std::move(answers.front());
-      answers.pop_front();
+      const std::lock_guard<std::mutex> lock(mutex);
+      quit = true;
     }
-    --busy;
-    tell(answer.first, answer.second);
+    changed.notify_all();
+  };
+  try {
+    for (;;) {
+      while (!told_to_stop && busy < options.jobs) tell(kAsk, "");
+      if (busy == 0) break;
+      std::pair<Tag, std::string> answer;
+      {
+        std::unique_lock lock(mutex);
+        changed.wait(lock, [&] { return !answers.empty(); });
+        answer = std::move(answers.front());
+        answers.pop_front();
+      }
+      --busy;
+      tell(answer.first, answer.second);
+    }
+  } catch (...) {
+    quit_workers();  // the pool joins its threads as the failure unwinds past it
+    throw;
   }
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    quit = true;
-  }
-  changed.notify_all();
-  for (std::thread& t : pool) t.join();
+  quit_workers();
+  pool.join();
 
   const nlohmann::json end = nlohmann::json::parse(broadcast_from_primary(""));
   if (end.contains("failure")) std::rethrow_exception(exception_from(end.at("failure")));

@@ -12,11 +12,11 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "common/worker_threads.h"
 #include "experiments/landscape.h"
 #include "experiments/learner_benchmark.h"
 #include "experiments/results_page.h"
@@ -117,9 +117,7 @@ class Reproduction {
     started_.assign(stages_.size(), false);
     const int workers = std::max(
         1, std::min<int>(o_.jobs > 0 ? o_.jobs : experiments::default_jobs(), stages_.size()));
-    std::vector<std::thread> threads;
-    for (int w = 0; w < workers; ++w) threads.emplace_back([this] { work(); });
-    for (std::thread& t : threads) t.join();
+    WorkerThreads(static_cast<std::size_t>(workers), [this] { work(); }).join();
     if (failure_) std::rethrow_exception(failure_);
     write_results_page();
     write_file_atomic(o_.out / "index.html",

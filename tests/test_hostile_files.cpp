@@ -354,5 +354,31 @@ TEST(HostileFiles, TheLimitsThemselvesAreAccepted) {
   fs::remove_all(dir);
 }
 
+// An address space of 3 GB: the program and its libraries fit, 4096 thread stacks (8 MiB each
+// by default) do not.
+constexpr long kAddressSpaceKb = 3'000'000;
+
+// Threads the system refuses end a command with one line and exit 1, not std::terminate: the
+// learner benchmark's, and the runner's with as many runs as threads.
+TEST(HostileLimits, ThreadsTheSystemRefusesEndInOneLine) {
+#ifdef MULTICPG_ASAN
+  GTEST_SKIP() << "AddressSanitizer's shadow memory does not fit under an address-space limit";
+#endif
+  const std::string dir = make_temp_dir("multicpg-jobs-");
+  std::ofstream(dir + "/many.toml") << "scenarios = [\"R1\"]\nruns = 4096\n";
+  for (const std::string& args :
+       {"learner-benchmark --steering off --seeds 1 --jobs 4096 --out " + dir + "/bench",
+        "run " + dir + "/many.toml --jobs 4096 --out " + dir + "/run"}) {
+    SCOPED_TRACE(args);
+    const CliResult r = run_shell("ulimit -v " + std::to_string(kAddressSpaceKb) + " && exec " +
+                                  MULTICPG_EXE + " " + args);
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_EQ(count_lines(r.err.substr(r.err.find("multicpg: "))), 1) << r.err;
+    EXPECT_NE(r.err.find("multicpg: cannot start thread "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(" of 4096 ("), std::string::npos) << r.err;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace multicpg::testing
