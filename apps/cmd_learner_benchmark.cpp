@@ -13,6 +13,7 @@
 #include "apps/options.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/table.h"
 #include "experiments/learner_benchmark.h"
 #include "experiments/runner.h"
 #include "learning/landscapes.h"
@@ -108,32 +109,42 @@ void run(const BenchmarkOptions& o) {
       experiments::run_learner_benchmark(spec, o.jobs.value_or(experiments::default_jobs()));
   experiments::write_learner_benchmark(b, o.out);
 
-  report::draw_learner_benchmark(b, o.out);
+  const std::optional<report::FigureFiles> figure = report::draw_learner_benchmark(b, o.out);
   const nlohmann::json summary = experiments::benchmark_summary(b);
-  std::cout << morph.name << ", " << b.cells.size() / spec.learners.size() << " scenarios x "
-            << spec.seeds << " seeds, " << o.mode << " trials, held within " << spec.budget
-            << " trials (scenarios where a combination holds):\n";
-  std::cout << std::fixed << std::setprecision(1);
-  for (const nlohmann::json& l : summary.at("learners")) {
-    const auto text = [](const nlohmann::json& v) {
-      std::ostringstream s;
-      if (v.is_null()) {
-        s << "never";
-      } else {
-        s << std::fixed << std::setprecision(0) << v.get<double>();
-      }
-      return s.str();
-    };
-    std::cout << "  " << std::left << std::setw(10) << l.at("learner").at("name").get<std::string>()
-              << std::right << " held " << std::setw(5) << 100.0 * l.at("share_held").get<double>()
-              << "% [" << std::setw(5) << 100.0 * l.at("share_low").get<double>() << ", "
-              << std::setw(5) << 100.0 * l.at("share_high").get<double>()
-              << "], trials to held: median " << text(l.at("median_trials")) << " (quartiles "
-              << text(l.at("q1_trials")) << "–" << text(l.at("q3_trials")) << "), false stops "
-              << l.at("false_stops") << "\n";
+  const std::size_t holding = experiments::holding_scenarios(b);
+  std::cout << morph.name << ", "
+            << counted(static_cast<long>(b.cells.size() / spec.learners.size()), "scenario")
+            << " x " << counted(spec.seeds, "seed") << ", " << o.mode << " trials, held within "
+            << spec.budget << " trials, pooled over the "
+            << counted(static_cast<long>(holding), "scenario")
+            << " where a combination holds (share held with its 95% interval):\n";
+  if (holding > 0) {
+    std::cout << std::fixed << std::setprecision(1);
+    for (const nlohmann::json& l : summary.at("learners")) {
+      const auto text = [](const nlohmann::json& v) {
+        std::ostringstream s;
+        if (v.is_null()) {
+          s << "never";
+        } else {
+          s << std::fixed << std::setprecision(0) << v.get<double>();
+        }
+        return s.str();
+      };
+      std::cout << "  " << std::left << std::setw(10)
+                << l.at("learner").at("name").get<std::string>() << std::right << " held "
+                << std::setw(5) << 100.0 * l.at("share_held").get<double>() << "% (95% interval "
+                << 100.0 * l.at("share_low").get<double>() << "–"
+                << 100.0 * l.at("share_high").get<double>() << "%), trials to held: median "
+                << text(l.at("median_trials")) << " (quartiles " << text(l.at("q1_trials")) << "–"
+                << text(l.at("q3_trials")) << "), false stops " << l.at("false_stops") << "\n";
+    }
+  } else {
+    std::cout << "  nothing pooled: " << report::no_benchmark_figure(b) << "\n";
   }
-  std::cout << std::setprecision(1) << "replayed in " << b.seconds << " s; wrote " << o.out
-            << "/benchmark.{csv,md}, benchmark-figure.{png,svg}, runs.csv and summary.json\n";
+  std::cout << std::fixed << std::setprecision(1) << "replayed in " << b.seconds << " s; wrote "
+            << o.out << "/benchmark.{csv,md}, "
+            << (figure ? "benchmark-figure.{png,svg,csv}, " : "") << "runs.csv and summary.json"
+            << (figure ? "" : "; no figure: nothing pooled") << "\n";
 }
 
 }  // namespace

@@ -6,10 +6,12 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
-#include <thread>
+#include <set>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/interrupt.h"
+#include "common/worker_threads.h"
 #include "experiments/runner.h"
 #include "robot/leg_sets.h"
 
@@ -17,6 +19,10 @@ namespace multicpg::experiments {
 namespace {
 
 constexpr int kJsonIndent = 2;
+// benchmark.md's words for what has no number: a quartile among the runs that never held, and a
+// baseline of a scenario where nothing holds.
+constexpr const char* kNever = "never";
+constexpr const char* kNoneHolds = "none holds";
 constexpr double kZ95 = 1.959963984540054;  // the normal quantile of a two-sided 95% interval
 
 // The q-quantile (nearest rank) of `values` where `missing` more values are larger than any;
@@ -114,6 +120,7 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
       try {
         std::vector<learning::ReplayRun> runs;
         for (int k = 0; k < spec.seeds; ++k) {
+          check_interrupted();  // a replay takes milliseconds: SIGINT stops the threads at once
           const std::uint64_t seed = derive_seed(spec.seed, name + "#" + std::to_string(k));
           std::optional<std::uint64_t> learner_seed;
           if (spec.live_seeds) learner_seed = spec.seed + static_cast<std::uint64_t>(k);
@@ -128,10 +135,7 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
       }
     }
   };
-  std::vector<std::thread> threads;
-  for (int t = 1; t < std::max(1, jobs); ++t) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
+  WorkerThreads(static_cast<std::size_t>(std::max(1, jobs)), work).join();
   if (error) std::rethrow_exception(error);
   b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return b;
@@ -265,13 +269,99 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
           {"hold_windows", s.protocol.hold_windows},
           {"window_order", learning::to_string(s.protocol.window_order)},
           {"scenarios", b.cells.size() / std::max<std::size_t>(1, s.learners.size())},
+          {"holding_scenarios", holding_scenarios(b)},
           {"learners", learners}};
+}
+
+std::size_t holding_scenarios(const LearnerBenchmark& b) {
+  std::set<std::string> holding;
+  for (const BenchmarkCell& c : b.cells) {
+    if (c.holding > 0) holding.insert(c.scenario);
+  }
+  return holding.size();
+}
+
+std::string benchmark_markdown(const LearnerBenchmark& b) {
+  const LearnerBenchmarkSpec& s = b.spec;
+  const std::string budget = std::to_string(s.budget);
+  Table t;
+  for (const char* c : {"scenario", "learner"}) t.columns.push_back({c, Align::left});
+  for (const std::string& c :
+       {std::string("combinations"), std::string("holding"), std::string("runs"),
+        "held within " + budget + " trials", std::string("share held")}) {
+    t.columns.push_back({c});
+  }
+  t.columns.push_back({"95 % interval", Align::left});
+  t.columns.push_back({"trials to held: median (quartiles)", Align::left});
+  for (const char* c : {"false stops", "mean trials", "gap to best (°)",
+                        "random search: expected trials", "oracle: trials"}) {
+    t.columns.push_back({c});
+  }
+  const auto percent = [](double share) { return fixed(100.0 * share, 1) + " %"; };
+  const auto trials = [](const std::optional<double>& median, const std::optional<double>& q1,
+                         const std::optional<double>& q3) {
+    const auto text = [](const std::optional<double>& v) {
+      return v ? fixed(*v, 0) : std::string(kNever);
+    };
+    return text(median) + " (" + text(q1) + "–" + text(q3) + ")";
+  };
+  for (const BenchmarkCell& c : b.cells) {
+    t.add_row({c.scenario, c.learner, std::to_string(c.combinations), std::to_string(c.holding),
+               std::to_string(c.runs), std::to_string(c.held_within), percent(c.share_held),
+               percent(c.share_low) + "–" + percent(c.share_high), trials(c.median, c.q1, c.q3),
+               std::to_string(c.false_stops), fixed(c.mean_trials, 1), fixed(c.mean_gap_deg, 2),
+               c.random_expected ? fixed(*c.random_expected, 1) : std::string(kNoneHolds),
+               c.holding > 0 ? "1" : kNoneHolds});
+  }
+  const std::size_t holding = holding_scenarios(b);
+  const nlohmann::json summary = benchmark_summary(b);
+  const auto optional = [](const nlohmann::json& v) {
+    return v.is_null() ? std::nullopt : std::optional<double>(v.get<double>());
+  };
+  if (holding > 0) {
+    for (const nlohmann::json& l : summary.at("learners")) {
+      t.add_row({"pooled (" + counted(static_cast<long>(holding), "scenario") + ")",
+                 l.at("learner").at("name").get<std::string>(), "", "",
+                 std::to_string(l.at("runs").get<int>()),
+                 std::to_string(l.at("held_within_budget").get<int>()),
+                 percent(l.at("share_held").get<double>()),
+                 percent(l.at("share_low").get<double>()) + "–" +
+                     percent(l.at("share_high").get<double>()),
+                 trials(optional(l.at("median_trials")), optional(l.at("q1_trials")),
+                        optional(l.at("q3_trials"))),
+                 std::to_string(l.at("false_stops").get<int>()), "", "", "", ""});
+    }
+  }
+  const std::string scenarios = counted(
+      static_cast<long>(b.cells.size() / std::max<std::size_t>(1, s.learners.size())), "scenario");
+  const std::string protocol =
+      s.protocol.yaw_only ? "paper trials (one window's yaw)"
+                          : "robust trials (up to " + counted(s.protocol.hold_windows, "window") +
+                                ", worst of yaw and path angle)";
+  return "# Learner benchmark: " + std::string(robot::to_string(b.dataset.robot)) + ", " +
+         scenarios + " x " + counted(s.seeds, "seed") + "\n\n" +
+         "Each learner replayed on the landscape dataset `" + s.dataset.string() + "` with " +
+         protocol + ", windows " + std::string(learning::to_string(s.protocol.window_order)) +
+         ", at most " + std::to_string(s.search.max_trials) + " trials, seed " +
+         std::to_string(s.seed) +
+         " (docs/learning.md \"Learner benchmark\"). A run is held when its answer holds every "
+         "window the landscape measured (under " +
+         shortest(s.search.threshold_deg) + "°), reached within " + budget +
+         " trials. Trials to held: quartiles over the runs, a run that never held counting as "
+         "more than any (\"" +
+         kNever + "\": that share of runs never held). \"" + kNoneHolds +
+         "\": the scenario has no combination that holds. " +
+         (holding > 0
+              ? "The pooled rows sum the " + counted(static_cast<long>(holding), "scenario") +
+                    " where a combination holds (summary.json)."
+              : "No scenario here has a combination that holds: nothing is pooled.") +
+         "\n\n" + to_markdown(t);
 }
 
 void write_learner_benchmark(const LearnerBenchmark& b, const std::filesystem::path& out) {
   const Table table = benchmark_table(b);
   write_file_atomic(out / "benchmark.csv", to_csv(table));
-  write_file_atomic(out / "benchmark.md", to_markdown(table));
+  write_file_atomic(out / "benchmark.md", benchmark_markdown(b));
   write_file_atomic(out / "runs.csv", to_csv(benchmark_runs_table(b)));
   write_file_atomic(out / "summary.json", benchmark_summary(b).dump(kJsonIndent) + "\n");
 }

@@ -97,6 +97,12 @@ Table benchmark_runs_table(const LearnerBenchmark& b);
 // The per-learner totals over the scenarios with at least one holding combination (pooled
 // runs), and the options that decided the results.
 nlohmann::json benchmark_summary(const LearnerBenchmark& b);
+// How many scenarios of `b` have a combination that holds: those the pooled scores sum.
+std::size_t holding_scenarios(const LearnerBenchmark& b);
+// benchmark.md, for reading: a caption (what was replayed, how a run is scored), a row per
+// scenario and learner in words ("never" for a quartile among the runs that never held) and a
+// pooled row per learner.
+std::string benchmark_markdown(const LearnerBenchmark& b);
 // Writes OUT/benchmark.{csv,md}, OUT/runs.csv, OUT/summary.json.
 void write_learner_benchmark(const LearnerBenchmark& b, const std::filesystem::path& out);
 

@@ -1,16 +1,34 @@
 #include "report/benchmark_figure.h"
 
-#include <optional>
-#include <set>
 #include <string>
+#include <system_error>
 #include <vector>
 
+#include "common/table.h"
 #include "robot/morphology.h"
 
 namespace multicpg::report {
 
-FigureFiles draw_learner_benchmark(const experiments::LearnerBenchmark& b,
-                                   const std::filesystem::path& out_dir, std::string_view stem) {
+std::string no_benchmark_figure(const experiments::LearnerBenchmark& b) {
+  if (experiments::holding_scenarios(b) > 0) return {};
+  return "none of the " +
+         counted(
+             static_cast<long>(b.cells.size() / std::max<std::size_t>(1, b.spec.learners.size())),
+             "scenario") +
+         " has a combination that holds, so no run can be held (benchmark.md lists each one)";
+}
+
+std::optional<FigureFiles> draw_learner_benchmark(const experiments::LearnerBenchmark& b,
+                                                  const std::filesystem::path& out_dir,
+                                                  std::string_view stem) {
+  if (!no_benchmark_figure(b).empty()) {
+    const std::string name(stem.empty() ? figure_by_name("learner-benchmark").stem : stem);
+    for (const char* ext : {".png", ".svg", ".csv"}) {
+      std::error_code ec;
+      std::filesystem::remove(out_dir / (name + ext), ec);
+    }
+    return std::nullopt;
+  }
   const nlohmann::json summary = experiments::benchmark_summary(b);
   const auto optional_number = [](const nlohmann::json& v) {
     return v.is_null() ? std::nullopt : std::optional<double>(v.get<double>());
@@ -21,13 +39,9 @@ FigureFiles draw_learner_benchmark(const experiments::LearnerBenchmark& b,
                       l.at("share_low"), l.at("share_high"), optional_number(l.at("q1_trials")),
                       optional_number(l.at("median_trials")), optional_number(l.at("q3_trials"))});
   }
-  std::set<std::string> holding;
-  for (const experiments::BenchmarkCell& c : b.cells) {
-    if (c.holding > 0) holding.insert(c.scenario);
-  }
   return plot_learner_benchmark(scores,
                                 {std::string(robot::to_string(b.dataset.robot)), b.spec.budget,
-                                 static_cast<int>(holding.size()), b.spec.seeds},
+                                 static_cast<int>(experiments::holding_scenarios(b)), b.spec.seeds},
                                 out_dir, stem);
 }
 

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "experiments/learner_benchmark.h"
@@ -10,10 +12,17 @@
 
 namespace multicpg::report {
 
+// Why `b` has no figure, or empty when it has one. The figure pools the scenarios where a
+// combination holds; a selection with none has no share held to draw (benchmark.md has each
+// scenario's runs).
+std::string no_benchmark_figure(const experiments::LearnerBenchmark& b);
+
 // Draws <out_dir>/<stem or benchmark-figure>.{png,svg,csv}: each learner's share held within
 // the budget and its trials to a held combination, pooled over the scenarios where one holds.
-FigureFiles draw_learner_benchmark(const experiments::LearnerBenchmark& b,
-                                   const std::filesystem::path& out_dir,
-                                   std::string_view stem = {});
+// Without a figure (no_benchmark_figure) it draws none, removes those files if an earlier run
+// left them (they would show another selection) and returns nothing.
+std::optional<FigureFiles> draw_learner_benchmark(const experiments::LearnerBenchmark& b,
+                                                  const std::filesystem::path& out_dir,
+                                                  std::string_view stem = {});
 
 }  // namespace multicpg::report

@@ -272,22 +272,37 @@ FigureFiles plot_learner_benchmark(const std::vector<LearnerScore>& learners,
                                    std::string_view stem) {
   const FigureInfo& info = figure_by_name("learner-benchmark");
   require(!learners.empty(), info.name, "no learners");
+  require(setting.budget > 0, info.name, "the budget must be positive");
   ensure_writable_dir(out_dir);
-  // A quartile that does not exist (more than that share never held) is NaN: no bar drawn.
-  const auto cell = [](const std::optional<double>& v) { return v ? shortest(*v) : "NaN"; };
-  Csv csv({"learner", "share_held", "share_low", "share_high", "q1_trials", "median_trials",
-           "q3_trials"});
+  // The trials axis: twice the budget, or the largest median when it is larger, so that no bar is
+  // cut; a whisker past it ends at it, and each label gives the numbers themselves.
+  double cut = 2.0 * setting.budget;
+  for (const LearnerScore& l : learners) {
+    if (l.median_trials) cut = std::max(cut, *l.median_trials);
+  }
+  const auto text = [](const std::optional<double>& v) {
+    return v ? fixed(*v, 0) : std::string("never");
+  };
+  // Every row has a label at a finite height: gnuplot 5.4 crashes on a label plot with no point.
+  Csv csv({"learner", "share_held", "share_low", "share_high", "share_label", "bar_trials",
+           "whisker_low", "whisker_high", "trials_label", "trials_label_y"});
   for (const LearnerScore& l : learners) {
     require(l.share_low <= l.share_held && l.share_held <= l.share_high, info.name,
             l.name + ": the share lies outside its interval");
+    const double high = std::min(l.q3_trials.value_or(cut), cut);
     csv.row({l.name, shortest(l.share_held), shortest(l.share_low), shortest(l.share_high),
-             cell(l.q1_trials), cell(l.median_trials), cell(l.q3_trials)});
+             std::to_string(std::lround(100.0 * l.share_held)) + "%",
+             l.median_trials ? shortest(*l.median_trials) : "NaN",
+             shortest(std::min(l.q1_trials.value_or(cut), cut)), shortest(high),
+             text(l.median_trials) + " (" + text(l.q1_trials) + "–" + text(l.q3_trials) + ")",
+             shortest(l.median_trials ? high : 0.0)});
   }
   Params params;
   params.text("robot", setting.robot)
       .num("budget", setting.budget)
-      .num("scenarios", setting.scenarios)
-      .num("seeds", setting.seeds);
+      .text("replayed", counted(setting.scenarios, "scenario") + " where a combination holds x " +
+                            counted(setting.seeds, "seed"))
+      .num("cut", cut);
   return draw(info, out_dir, stem, csv, params);
 }
 

@@ -485,6 +485,74 @@ TEST_F(Dataset, TheBenchmarkCommandScoresLearnersTheSameOnAnyThreadCount) {
   EXPECT_FALSE(fs::exists(dir_ + "/bad/benchmark.csv"));
 }
 
+// Every selection of the dataset's scenarios gets its figure, or none and the reason: the
+// figure pools the scenarios where a combination holds (R1+R2 has none). Small and odd benchmarks
+// too: one seed, a budget and cap of one trial, one learner that never holds.
+TEST_F(Dataset, TheBenchmarkFigureIsDrawnOrLeftOutSayingWhyForEverySelection) {
+  const std::vector<std::string> holding{"R1", "R2", "L1", "L2"};
+  std::vector<std::string> selections{"R1+R2", "R1,R2,L1,L2,R1+R2"};
+  for (const std::string& s : holding) {
+    selections.push_back(s);
+    selections.push_back(s + ",R1+R2");
+  }
+  int n = 0;
+  for (const std::string& scenarios : selections) {
+    for (const std::string args :
+         {"--learners random --seeds 3", "--seeds 1 --budget 1 --max-trials 1",
+          "--learners annealing --seeds 1 --max-trials 1", "--learners prior,greedy --seeds 2"}) {
+      SCOPED_TRACE(scenarios + " " + args);
+      const std::string out = dir_ + "/sel" + std::to_string(n++);
+      const CliResult r = run_cli("learner-benchmark --dataset " + stem() + " --scenarios " +
+                                  scenarios + " " + args + " --out " + out);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      EXPECT_EQ(r.err, "");
+      const bool holds = scenarios != "R1+R2";
+      EXPECT_EQ(is_png(out + "/benchmark-figure.png"), holds);
+      EXPECT_EQ(fs::exists(out + "/benchmark-figure.svg"), holds);
+      EXPECT_EQ(r.out.find("no figure: nothing pooled") != std::string::npos, !holds) << r.out;
+      if (!holds) {
+        EXPECT_NE(r.out.find("none of the 1 scenario has a combination that holds"),
+                  std::string::npos)
+            << r.out;
+      }
+      const std::string md = read_file(out + "/benchmark.md");
+      EXPECT_EQ(md.rfind("# Learner benchmark: quadruped, ", 0), 0u) << md;
+      EXPECT_EQ(md.find("| scenario | learner | combinations | holding | runs | held within "),
+                md.find("| scenario"))
+          << md;
+      EXPECT_EQ(md.find("| pooled (") != std::string::npos, holds) << md;
+      EXPECT_EQ(md.find(" - "), std::string::npos) << md;
+    }
+  }
+  // The committed hexapod dataset's R1+R2, where no combination holds.
+  const CliResult r = run_cli(
+      "learner-benchmark --steering off --scenarios R1+R2 --learners random --seeds 3 --out " +
+      dir_ + "/hexapod");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("no figure: nothing pooled"), std::string::npos) << r.out;
+}
+
+// The terminal and benchmark.md say what the bracketed numbers are; the pooled row holds the
+// summary's numbers.
+TEST_F(Dataset, TheBenchmarkLabelsItsIntervalAndPoolsItsScenarios) {
+  const CliResult r = run_cli("learner-benchmark --dataset " + stem() +
+                              " --learners random --seeds 4 --out " + dir_ + "/b");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("5 scenarios x 4 seeds"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pooled over the 4 scenarios where a combination holds"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("% (95% interval "), std::string::npos) << r.out;
+  const std::string md = read_file(dir_ + "/b/benchmark.md");
+  EXPECT_NE(md.find("| share held | 95 % interval | trials to held: median (quartiles) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| pooled (4 scenarios) | random |  |  | 16 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| R1+R2 | random | "), std::string::npos) << md;
+  EXPECT_NE(md.find("| none holds | none holds |"), std::string::npos) << md;
+  const auto summary = nlohmann::json::parse(read_file(dir_ + "/b/summary.json"));
+  EXPECT_EQ(summary.at("holding_scenarios"), 4);
+}
+
 TEST(CliLearner, LearnTakesALearnerAndItsOptionsAndRecordsThem) {
   const CliResult r = run_cli(
       "learn --robot quadruped --disable L2 --learner bayes --learner-option kappa=1.5 --seed 1 "

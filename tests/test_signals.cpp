@@ -142,5 +142,30 @@ TEST(Signals, RunStopsKeepsItsSavedRunsAndResumes) {
   fs::remove_all(dir);
 }
 
+// The threads of a running process (/proc/PID/status), 0 once it is gone.
+int thread_count(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("Threads:", 0) == 0) return std::stoi(line.substr(line.find(':') + 1));
+  }
+  return 0;
+}
+
+// The learner benchmark replays for as long as it is let: stopped by either signal while its two
+// threads replay, with no result written.
+TEST(Signals, LearnerBenchmarkStopsAndWritesNoResult) {
+  for (const Signal& s : kSignals) {
+    SCOPED_TRACE(s.name);
+    const std::string dir = make_temp_dir("multicpg-sig-bench-");
+    CliProcess cli({"learner-benchmark", "--steering", "off", "--seeds", "100000", "--jobs", "2",
+                    "--out", dir});
+    ASSERT_TRUE(wait_until([&] { return thread_count(cli.pid()) >= 3; }, kStartGuard)) << cli.err();
+    expect_stopped(cli, s);
+    EXPECT_TRUE(fs::is_empty(dir));
+    EXPECT_EQ(cli.out(), "");
+    fs::remove_all(dir);
+  }
+}
+
 }  // namespace
 }  // namespace multicpg::testing

@@ -79,9 +79,10 @@ Section learner_benchmark_stage(const StageContext& ctx) {
         spec, ctx.options.jobs > 0 ? ctx.options.jobs : experiments::default_jobs());
     const std::string folder = "experiments/learner-benchmark-" + std::to_string(windows) + "w";
     experiments::write_learner_benchmark(b, ctx.dir(folder));
-    const FigureFiles figure = draw_learner_benchmark(
+    // The committed dataset has holding scenarios, so both figures are drawn.
+    const std::optional<FigureFiles> figure = draw_learner_benchmark(
         b, ctx.dir("figures"), "learner-benchmark-" + std::to_string(windows) + "-windows");
-    images.push_back(ctx.image(figure));
+    if (figure) images.push_back(ctx.image(*figure));
     files.push_back(folder + "/benchmark.csv");
     files.push_back(folder + "/summary.json");
     scenarios = b.cells.size() / spec.learners.size();
