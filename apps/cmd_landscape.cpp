@@ -2,7 +2,6 @@
 // walked and measured, saved as it finishes (resumable), with its map. The ground
 // truth the learners are scored against.
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -13,6 +12,7 @@
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "experiments/landscape.h"
 #include "experiments/processes.h"
 #include "experiments/scenarios.h"
@@ -42,10 +42,14 @@ struct LandscapeOptions {
 std::vector<learning::Periods> read_learned(const std::string& path,
                                             const experiments::LandscapeSpec& spec) {
   if (path.empty()) return {};
-  std::ifstream in(path);
-  if (!in) throw BadInput("--learned: cannot read '" + path + "'");
+  std::string text;
   try {
-    return experiments::parse_learned(nlohmann::json::parse(in), spec);
+    text = read_input_file(path, kMaxRecordBytes, kMaxRecordText, "a list of learned combinations");
+  } catch (const BadInput& e) {
+    throw BadInput(std::string("--learned: ") + e.what());
+  }
+  try {
+    return experiments::parse_learned(nlohmann::json::parse(text), spec);
   } catch (const nlohmann::json::exception& e) {
     throw BadInput("--learned: '" + path + "' is not JSON (" + e.what() + ")");
   }

@@ -11,6 +11,11 @@
 
 namespace multicpg {
 
+// The most a file multicpg wrote and reads back may have (a run record, a learning result, an
+// experiment's summary, a report's section): a learning result of 100,000 trials is some 35 MB.
+inline constexpr std::size_t kMaxRecordBytes = std::size_t{64} << 20;
+inline constexpr std::string_view kMaxRecordText = "64 MiB";
+
 // The bytes of `path`, at most `max_bytes` (whose text, e.g. "1 MiB", `max_text` gives).
 // Throws BadInput "NAME: cannot read (strerror)", "NAME: is a directory, not a file", "NAME: is a
 // FIFO, not a file" (device, socket), or "NAME: is N bytes, more than the MAX_TEXT WHAT may

@@ -1,7 +1,7 @@
 // The calibration's numbers as JSON, and candidates.json (calibration.h) written and read back.
-#include <fstream>
 
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "experiments/calibration.h"
 #include "experiments/calibration_detail.h"
 #include "sim/json.h"
@@ -111,10 +111,10 @@ nlohmann::json calibration_json(const Calibration& cal) {
 }
 
 Calibration read_calibration(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw BadInput("cannot read calibration '" + path.string() + "'");
+  const std::string text =
+      read_input_file(path, kMaxRecordBytes, kMaxRecordText, "a calibration record");
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = nlohmann::json::parse(text);
     Calibration cal;
     const nlohmann::json& args = j.at("arguments");
     cal.spec.target = parse_calibration_target(args.at("target").get<std::string>());

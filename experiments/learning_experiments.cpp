@@ -1,10 +1,10 @@
 #include "experiments/learning_experiments.h"
 
-#include <fstream>
 #include <stdexcept>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "experiments/scenarios.h"
 #include "experiments/sweep.h"
 #include "learning/json.h"
@@ -78,11 +78,14 @@ nlohmann::json experiment_arguments(const ExperimentSpec& spec, ExperimentKind e
 
 ExperimentTable read_experiment(const std::filesystem::path& out) {
   const std::filesystem::path file = out / "summary.json";
-  std::ifstream in(file);
-  if (!in) throw BadInput("no experiment results in '" + out.string() + "' (missing summary.json)");
-  nlohmann::json j;
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) {
+    throw BadInput("no experiment results in '" + out.string() + "' (missing summary.json)");
+  }
+  const std::string text =
+      read_input_file(file, kMaxRecordBytes, kMaxRecordText, "an experiment summary");
   try {
-    in >> j;
+    const nlohmann::json j = nlohmann::json::parse(text);
     ExperimentTable table{parse_experiment_kind(j.at("experiment").get<std::string>()),
                           j.at("robot").get<std::string>(),
                           {}};

@@ -1,27 +1,31 @@
 #include "experiments/run_robot.h"
 
 #include <algorithm>
-#include <fstream>
 #include <string>
 
 #include "common/checksum.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/limits.h"
 #include "robot/body_models.h"
 #include "sim/robot_file.h"
 
 namespace multicpg::experiments {
+namespace {
+
+constexpr std::string_view kMaxRobotFileText = "1 MiB";  // sim::kMaxRobotFileBytes
+
+}  // namespace
 
 std::shared_ptr<const RunRobotFile> load_run_robot_file(const std::filesystem::path& path) {
   auto loaded = std::make_shared<RunRobotFile>();
   loaded->file = sim::load_robot_file(path);
-  // Read again for its bytes, as bounded as the first reading (which checked it is a regular
-  // file of at most kMaxRobotFileBytes).
-  std::ifstream in(path, std::ios::binary);
-  std::string toml(sim::kMaxRobotFileBytes + 1, '\0');
-  in.read(toml.data(), static_cast<std::streamsize>(toml.size()));
-  toml.resize(static_cast<std::size_t>(in.gcount()));
-  if (!in.is_open() || in.bad() || toml.size() > sim::kMaxRobotFileBytes) {
+  // Read again for its bytes, as bounded as the first reading (a file swapped for a FIFO in
+  // between is refused, not waited on).
+  std::string toml;
+  try {
+    toml = read_input_file(path, sim::kMaxRobotFileBytes, kMaxRobotFileText, "a robot file");
+  } catch (const BadInput&) {
     throw BadInput(path.string() + ": file: changed while it was read");
   }
   loaded->record = {path.string(), loaded->file.name, checksum_text(toml),

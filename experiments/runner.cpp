@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <deque>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -26,6 +25,7 @@
 #include "common/checksum.h"
 #include "common/dir_lock.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/interrupt.h"
 #include "common/json_diff.h"
 #include "common/worker_threads.h"
@@ -117,10 +117,11 @@ void claim_out_dir(const fs::path& out, const std::vector<Task>& tasks,
 void record_session(const fs::path& out, const nlohmann::json& provenance) {
   const fs::path path = out / "provenance.json";
   nlohmann::json sessions = nlohmann::json::array();
-  if (std::ifstream in(path, std::ios::binary); in) {
-    std::ostringstream text;
-    text << in.rdbuf();
-    sessions = nlohmann::json::parse(text.str(), nullptr, false);
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    sessions = nlohmann::json::parse(
+        read_input_file(path, kMaxRecordBytes, kMaxRecordText, "a provenance record"), nullptr,
+        false);
     if (!sessions.is_array()) {
       throw BadInput("'" + path.string() + "' is damaged (not a JSON array); delete it");
     }
@@ -597,11 +598,9 @@ RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
 }
 
 std::optional<nlohmann::json> read_sealed(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_sealed(text.str(), path);
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return std::nullopt;
+  return parse_sealed(read_input_file(path, kMaxRecordBytes, kMaxRecordText, "a run record"), path);
 }
 
 }  // namespace multicpg::experiments

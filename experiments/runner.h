@@ -93,7 +93,9 @@ RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
 // throws BadInput naming `path` when `text` is not a JSON object, has no checksum or the checksum
 // does not match (an edited or damaged file).
 nlohmann::json parse_sealed(const std::string& text, const std::filesystem::path& path);
-// The sealed record saved in `path` (parse_sealed), or nothing when the file cannot be opened.
+// The sealed record saved in `path` (parse_sealed), or nothing when there is no file there.
+// Throws BadInput (one line naming it) for one that is no regular file (common/input_file.h),
+// larger than kMaxRecordBytes or unreadable.
 std::optional<nlohmann::json> read_sealed(const std::filesystem::path& path);
 
 }  // namespace multicpg::experiments

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <condition_variable>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -15,6 +14,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/table.h"
 #include "common/worker_threads.h"
 #include "experiments/landscape.h"
@@ -101,6 +101,12 @@ std::vector<const Stage*> selected(const std::vector<std::string>& only) {
   return out;
 }
 
+// A record an earlier run left in the report folder, parsed (nlohmann's exception when it is not
+// JSON); BadInput naming it when it is no regular file (common/input_file.h) or too large.
+nlohmann::json read_record(const fs::path& file, std::string_view what) {
+  return nlohmann::json::parse(read_input_file(file, kMaxRecordBytes, kMaxRecordText, what));
+}
+
 class Reproduction {
  public:
   explicit Reproduction(const ReproduceOptions& o)
@@ -174,9 +180,13 @@ class Reproduction {
     const std::string id(stage.id);
     const fs::path saved = o_.out / "sections" / (id + ".json");
     if (fs::exists(saved)) {
-      std::ifstream in(saved);
       progress(id + ": already done");
-      return section_from_json(nlohmann::json::parse(in));
+      try {
+        return section_from_json(read_record(saved, "a saved section"));
+      } catch (const nlohmann::json::exception&) {
+        throw BadInput("'" + saved.string() +
+                       "' is not a saved section; delete it to run the stage again");
+      }
     }
     const auto begin = std::chrono::steady_clock::now();
     progress(id + ": started");
@@ -222,10 +232,9 @@ class Reproduction {
         {"quick", o_.quick}, {"seed", o_.seed}, {"model", o_.sim.model}, {"body", o_.sim.body}};
     const fs::path file = o_.out / "reproduce.json";
     if (fs::exists(file)) {
-      std::ifstream in(file);
       nlohmann::json old;
       try {
-        old = nlohmann::json::parse(in);
+        old = read_record(file, "a reproduce record");
       } catch (const nlohmann::json::exception&) {
         throw BadInput("'" + file.string() + "' is not a reproduce record");
       }

@@ -354,6 +354,42 @@ TEST(HostileFiles, TheLimitsThemselvesAreAccepted) {
   fs::remove_all(dir);
 }
 
+// The other files the program reads are held to the same rule as experiment files: a run file
+// given to replay (a result, or an experiment's run file) and landscape --learned are refused,
+// naming the file, when they are a FIFO (without waiting for a writer) or a device (without
+// reading it).
+TEST(HostileFiles, RunFilesAndLearnedCombinationsMustBeRegularFiles) {
+  const std::string dir = make_temp_dir("multicpg-hostile-runs-");
+  const std::string fifo = dir + "/fifo.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // An experiment's run file: DIR/runs/ID.json beside DIR/experiment.json.
+  fs::create_directories(dir + "/experiment/runs");
+  std::ofstream(dir + "/experiment/experiment.json") << "{}\n";
+  const std::string run_fifo = dir + "/experiment/runs/r1.json";
+  ASSERT_EQ(::mkfifo(run_fifo.c_str(), 0600), 0);
+  const std::string html = " --out " + dir + "/replay.html";
+  const std::string landscape = "landscape --disable R1 --windows 1 --out " + dir + "/l --learned ";
+  for (const auto& [args, line] : std::vector<std::pair<std::string, std::string>>{
+           {"replay " + fifo + html, fifo + ": is a FIFO, not a file"},
+           {"replay /dev/zero" + html, "/dev/zero: is a device, not a file"},
+           {"replay " + run_fifo + html, run_fifo + ": is a FIFO, not a file"},
+           {landscape + fifo, "--learned: " + fifo + ": is a FIFO, not a file"},
+           {landscape + "/dev/zero", "--learned: /dev/zero: is a device, not a file"},
+       }) {
+    SCOPED_TRACE(args);
+    std::vector<std::string> words;
+    std::istringstream split(args);
+    for (std::string w; split >> w;) words.push_back(w);
+    CliProcess cli(words);
+    ASSERT_TRUE(cli.wait(kHangGuard)) << "hangs";
+    EXPECT_EQ(cli.exit_code(), 2) << cli.err();
+    EXPECT_EQ(cli.err(), "multicpg: " + line + "\n");
+    EXPECT_EQ(cli.out(), "");
+  }
+  EXPECT_FALSE(fs::exists(dir + "/replay.html"));
+  fs::remove_all(dir);
+}
+
 // An address space of 3 GB: the program and its libraries fit, 4096 thread stacks (8 MiB each
 // by default) do not.
 constexpr long kAddressSpaceKb = 3'000'000;

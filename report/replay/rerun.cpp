@@ -1,9 +1,7 @@
 #include "report/replay/rerun.h"
 
-#include <fstream>
-#include <sstream>
-
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "experiments/learning_run.h"
 #include "experiments/run_json.h"
 #include "experiments/run_robot.h"
@@ -43,13 +41,16 @@ std::string first_line(const std::string& text) {
   return text.substr(0, text.find('\n'));
 }
 
+// The run file's bytes: a regular file of at most kMaxRecordBytes (a FIFO or device is refused
+// without waiting on it).
+std::string read_run_file(const fs::path& path) {
+  return read_input_file(path, kMaxRecordBytes, kMaxRecordText, "a run file");
+}
+
 json read_json(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw BadInput("cannot open the run file " + quoted(path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::string text = read_run_file(path);
   try {
-    return json::parse(text.str());
+    return json::parse(text);
   } catch (const json::parse_error& e) {
     throw BadInput(quoted(path.string()) +
                    " is not a whole JSON document (truncated or damaged): " + first_line(e.what()));
@@ -106,13 +107,12 @@ std::string faults_title(const robot::Morphology& morph, const body::FaultTimeli
 }
 
 RerunReplay rerun_experiment_run(const fs::path& file) {
-  const std::optional<json> saved = experiments::read_sealed(file);
-  if (!saved) throw BadInput("cannot open the run file " + quoted(file.string()));
+  const json saved = experiments::parse_sealed(read_run_file(file), file);
   const fs::path dir = file.parent_path().parent_path();
   const experiments::RecordedSweep recorded = experiments::read_sweep(dir);
   const std::string id = file.stem().string();
   const experiments::PlannedRun* planned = experiments::find_run(recorded.sweep, id);
-  if (planned == nullptr || !saved->contains("result")) {
+  if (planned == nullptr || !saved.contains("result")) {
     throw BadInput(quoted(file.string()) + " is not a run of the experiment in " +
                    quoted(dir.string()));
   }
@@ -120,7 +120,7 @@ RerunReplay rerun_experiment_run(const fs::path& file) {
   RerunReplay out;
   ReplayRecorder recorder;
   const json result = experiments::run_sweep_task(spec, &recorder);
-  if (saved->at("result") != result) differs(quoted(file.string()));
+  if (saved.at("result") != result) differs(quoted(file.string()));
   out.recording = recorder.recording();
   out.title = "run " + id + " of " + dir.filename().string() + ": " +
               experiments::morphology(spec.robot).name + ", " +
@@ -236,7 +236,6 @@ bool is_experiment_run(const fs::path& path) {
 RerunReplay rerun_saved(const fs::path& path, const sim::SimOptions& sim) {
   std::error_code error;
   if (fs::is_directory(path, error)) return rerun_saved(path / kLearnResultFile, sim);
-  if (!fs::exists(path, error)) throw BadInput("cannot open the run file " + quoted(path.string()));
   if (is_experiment_run(path)) return rerun_experiment_run(path);
   const json saved = read_json(path);
   const std::string name = quoted(path.string());

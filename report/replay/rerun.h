@@ -29,8 +29,9 @@ struct RerunReplay {
 // The run saved at `path` (a run file, a JSON result or a `learn --out` directory) made again
 // and recorded; `sim` is the simulation a learning or walk result is made again with (its time
 // steps are the result's). Throws BadInput, one line naming the file, for a file that is missing,
-// unreadable, truncated or damaged, of another kind or another version of multicpg, whose robot
-// file changed, or whose run does not rerun as saved.
+// unreadable, no regular file (a FIFO is refused without waiting on it, a device without reading
+// it), larger than kMaxRecordBytes (common/input_file.h), truncated or damaged, of another kind or
+// another version of multicpg, whose robot file changed, or whose run does not rerun as saved.
 RerunReplay rerun_saved(const std::filesystem::path& path, const sim::SimOptions& sim);
 
 // Whether `path` is an experiment's run file (DIR/runs/ID.json beside DIR/experiment.json), which

@@ -5,14 +5,13 @@
 #include "experiments/calibration.h"
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 #include <system_error>
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/table.h"
 #include "experiments/paper.h"
 #include "report/stages/stage.h"
@@ -39,11 +38,7 @@ fs::path calibration_dir() {
 }
 
 std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RuntimeFailure("cannot read '" + path.string() + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return read_input_file(path, kMaxRecordBytes, kMaxRecordText, "a calibration record");
 }
 
 // Every body parameter: its value in each model and where real's comes from.
