@@ -10,6 +10,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/provenance.h"
+#include "common/table.h"
 #include "experiments/experiment_file.h"
 #include "experiments/processes.h"
 #include "experiments/scenarios.h"
@@ -73,8 +74,10 @@ void run(const RunOptions& o) {
   for (const experiments::GridAxis& a : sweep.grid) points *= a.values.size();
   const std::size_t scenarios = sweep.resolved.at("scenarios").size();
   std::ostringstream count;
-  count << o.file << ": " << sweep.runs.size() << " runs (" << points << " grid points x "
-        << scenarios << " scenarios x " << sweep.resolved.at("runs") << " runs)";
+  count << o.file << ": " << counted(static_cast<long>(sweep.runs.size()), "run") << " ("
+        << counted(static_cast<long>(points), "grid point") << " x "
+        << counted(static_cast<long>(scenarios), "scenario") << " x "
+        << counted(sweep.resolved.at("runs").get<long>(), "run") << ")";
   if (shard.count > 1) count << ", " << in_shard << " in shard " << o.shard;
   if (o.check) {
     if (experiments::is_primary_process()) std::cout << count.str() << "\n";

@@ -466,6 +466,11 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     const long fail_step = learning_point.at(kFailStepKey).get<long>();
     require_in(std::string("learning.") + kFailStepKey, fail_step, body::kStepLimits);
     learning_point.erase(kFailStepKey);
+    // The default learner (the paper's annealing, no options) is the one the options' JSON
+    // leaves out (learning/json.h): it reads back as given only when left out here.
+    if (learning_point.value("learner", json()) == json(learning::LearnerChoice{})) {
+      learning_point.erase("learner");
+    }
     check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(canonical_sim(sim_point), "sim");

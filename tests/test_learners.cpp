@@ -620,5 +620,32 @@ TEST(CliLearner, AnExperimentFileTakesALearnerOrAGridOfThem) {
   fs::remove_all(dir);
 }
 
+// docs/learning.md's own grid, the paper's annealing beside the prior, runs (and the annealing
+// alone or in any list is accepted: the default learner reads back as the default). Periods
+// alone (steering off): the prior learns from the committed dataset of that walk.
+TEST(CliLearner, TheDocumentedLearnerGridRuns) {
+  const std::string dir = make_temp_dir("learner-grid-");
+  const std::string head =
+      "robot = \"quadruped\"\nscenarios = [\"L2\"]\nruns = 1\n[learning]\nsteering = \"off\"\n";
+  const std::string documented =
+      "learner = [{ name = \"annealing\" }, { name = \"prior\" }]\n[learning.annealing]\n"
+      "max_trials = 3\n";
+  std::ofstream(dir + "/grid.toml") << head + documented;
+  const CliResult r = run_cli("run " + dir + "/grid.toml --jobs 2 --out " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string runs = read_file(dir + "/out/runs.csv");
+  EXPECT_EQ(count_lines(runs), 3) << runs;
+  EXPECT_NE(runs.find("annealing"), std::string::npos) << runs;
+  EXPECT_NE(runs.find("prior"), std::string::npos) << runs;
+  for (const std::string learner :
+       {"learner = { name = \"annealing\" }\n", "learner = [{ name = \"annealing\" }]\n",
+        "learner = [{ name = \"random\" }, { name = \"annealing\", options = {} }]\n"}) {
+    std::ofstream(dir + "/check.toml") << head + learner;
+    const CliResult check = run_cli("run " + dir + "/check.toml --check");
+    EXPECT_EQ(check.exit_code, 0) << learner << check.err;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace multicpg::testing

@@ -50,9 +50,9 @@ max_trials = 4
 TEST(Sweep, EachExampleFileValidates) {
   const std::vector<std::pair<std::string, std::string>> files{
       {"quick.toml", "8 runs (2 grid points x 2 scenarios x 2 runs)"},
-      {"paper-table-hexapod.toml", "240 runs (1 grid points x 24 scenarios x 10 runs)"},
-      {"paper-table-quadruped.toml", "40 runs (1 grid points x 4 scenarios x 10 runs)"},
-      {"paper-beta.toml", "350 runs (7 grid points x 1 scenarios x 50 runs)"},
+      {"paper-table-hexapod.toml", "240 runs (1 grid point x 24 scenarios x 10 runs)"},
+      {"paper-table-quadruped.toml", "40 runs (1 grid point x 4 scenarios x 10 runs)"},
+      {"paper-beta.toml", "350 runs (7 grid points x 1 scenario x 50 runs)"},
       {"landscape-r1.toml", "a landscape of 3125 combinations"},
       {"landscape-quadruped-l2.toml", "a landscape of 125 combinations"}};
   for (const auto& [file, count] : files) {
@@ -78,7 +78,7 @@ control_dt = [0.037, 0.074]
   EXPECT_NE(r.out.find("72 runs (12 grid points x 2 scenarios x 3 runs)"), std::string::npos)
       << r.out;
   const CliResult shard = run_cli("run " + file + " --check --shard 4/5 --runs 1");
-  EXPECT_NE(shard.out.find("24 runs (12 grid points x 2 scenarios x 1 runs), 4 in shard 4/5"),
+  EXPECT_NE(shard.out.find("24 runs (12 grid points x 2 scenarios x 1 run), 4 in shard 4/5"),
             std::string::npos)
       << shard.out;
   // "all": every set of 1-3 legs up to mirror, as experiments::mirror_scenarios.
@@ -91,7 +91,7 @@ runs = 2
 )");
   const CliResult timeline = run_cli("run " + file + " --check");
   EXPECT_EQ(timeline.exit_code, 0) << timeline.err;
-  EXPECT_NE(timeline.out.find("4 runs (1 grid points x 2 scenarios x 2 runs)"), std::string::npos)
+  EXPECT_NE(timeline.out.find("4 runs (1 grid point x 2 scenarios x 2 runs)"), std::string::npos)
       << timeline.out;
   // Terrain is a grid axis like any simulation option, written as --terrain takes it
   // (docs/faults.md), and faults of any kind are scenarios.
@@ -102,7 +102,7 @@ terrain = ["flat", "slope:5", "rough:0.01:3"]
 )");
   const CliResult terrain = run_cli("run " + file + " --check");
   EXPECT_EQ(terrain.exit_code, 0) << terrain.err;
-  EXPECT_NE(terrain.out.find("9 runs (3 grid points x 3 scenarios x 1 runs)"), std::string::npos)
+  EXPECT_NE(terrain.out.find("9 runs (3 grid points x 3 scenarios x 1 run)"), std::string::npos)
       << terrain.out;
   // A terrain axis names its runs' files ("slope:5" as "slope_5"); two short robust runs.
   write(file,
