@@ -122,10 +122,19 @@ void run_learn(const LearnOptions& o) {
     steps->commit();
   }
   replay.write();
-  plot.learning(r, spec.learning->annealing.threshold_deg);
+  plot.learning(r, spec.learning->search.threshold_deg);
   plot.write();
+  // Learning that did not reach a combination that holds exits 3 (docs/cli.md), after every
+  // output is written.
+  const auto end = [&r] {
+    if (r.outcome == learning::Outcome::not_converged ||
+        r.outcome == learning::Outcome::budget_reached) {
+      throw GoalNotReached(std::string(learning::to_string(r.outcome)));
+    }
+  };
   if (o.json) {
     std::cout << json.dump(2) << "\n";
+    end();
     return;
   }
   print_learning_end(std::cout, spec, r);
@@ -135,6 +144,7 @@ void run_learn(const LearnOptions& o) {
   }
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
+  end();
 }
 
 }  // namespace

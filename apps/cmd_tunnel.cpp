@@ -99,7 +99,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (film) film->finish();
   replay.write();
   plot.tunnel(corridor.scene.tunnel_length, corridor.scene.tunnel_width);
-  if (out.learned) plot.learning(*out.learned, spec.learning->annealing.threshold_deg);
+  if (out.learned) plot.learning(*out.learned, spec.learning->search.threshold_deg);
   plot.write();
   const experiments::TunnelRun& run = out.run;
   if (o.json) {

@@ -1,5 +1,7 @@
 #include "apps/learning_options.h"
 
+#include <fmt/format.h>
+
 #include <string>
 
 #include "apps/flag_checks.h"
@@ -50,11 +52,12 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
       },
       "robust mode: keep the periods, compensate by steering alone");
   if (with_beta) {
-    cmd.add_option("--beta", o.annealing.beta, "annealing factor: 0 random search, 10 greedy")
+    cmd.add_option("--beta", f.beta,
+                   "the annealing's factor: 0 random search, 10 greedy (its learner option beta)")
         ->check(in(learning::kBetaLimits))
-        ->capture_default_str();
+        ->default_str(fmt::format("{}", learning::kDefaultBeta));
   }
-  cmd.add_option("--threshold", o.annealing.threshold_deg,
+  cmd.add_option("--threshold", o.search.threshold_deg,
                  "deviation (deg) below which learning stops")
       ->check(in(learning::kThresholdLimits))
       ->capture_default_str();
@@ -65,9 +68,16 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
                  "unmeasured steps after each period change (default: slowest CPG lock + "
                  "longest delay, 337 for the hexapod; robust mode: 863)")
       ->check(in(learning::kSettleStepsLimits));
-  cmd.add_option("--max-trials", o.annealing.max_trials, "trials before a run ends 'not converged'")
+  cmd.add_option("--max-trials", o.search.max_trials,
+                 "trials an episode may take before it ends 'not converged'")
       ->check(in(learning::kMaxTrialsLimits))
       ->capture_default_str();
+  cmd.add_option("--max-episodes", o.max_episodes,
+                 "robust mode: episodes (detection, then learning) before the run ends 'episode "
+                 "cap reached'")
+      ->check(in(learning::kMaxEpisodesLimits))
+      ->capture_default_str()
+      ->each(robust_only);
   cmd.add_option("--step-budget", o.step_budget,
                  "controller steps the run may spend in trials, over all its episodes, before it "
                  "ends 'budget reached' (docs/learning.md \"Step budget\")")
@@ -98,10 +108,21 @@ learning::CompensationOptions learning_options(const LearningFlags& f) {
     }
     o.learner.options[key] = std::move(value);
   }
+  if (f.beta) {
+    if (o.learner.name != learning::kDefaultLearner) {
+      throw BadInput("--beta: the annealing's option; --learner " + o.learner.name +
+                     " has no beta");
+    }
+    if (o.learner.options.contains("beta")) {
+      throw BadInput("--beta: given twice (also as --learner-option beta=...)");
+    }
+    o.learner.options["beta"] = *f.beta;
+  }
   if (o.mode == learning::Mode::paper) {
     if (f.robust_only) {
       throw BadInput(
-          "--steering, --hold-windows, --monitor-windows and --no-period-learning are "
+          "--steering, --hold-windows, --monitor-windows, --max-episodes and --no-period-learning "
+          "are "
           "robust-mode options");
     }
     o.steering = learning::Steering::off;  // recorded as it runs: paper mode never steers

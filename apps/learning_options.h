@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,10 +18,12 @@ struct LearningFlags {
   learning::CompensationOptions options;  // every flag writes its field here
   bool robust_only = false;  // a robust-mode flag (--steering, --hold-windows, ...) was given
   std::vector<std::string> learner_options;  // --learner-option KEY=VALUE, repeatable
+  std::optional<double> beta;  // --beta: the annealing's option beta (learning/learners.h)
 };
 
 // Adds --mode --learner --learner-option --steering --hold-windows --monitor-windows
-// --no-period-learning --beta --threshold --window --settle --max-trials --step-budget --seed, each
+// --no-period-learning --beta --threshold --window --settle --max-trials --max-episodes
+// --step-budget --seed, each
 // range shown in --help and checked at parse time (without --beta when `with_beta` is false: the
 // beta study sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);

@@ -53,6 +53,8 @@ std::string stop_text(learning::StopReason reason) {
       return "the trial cap (--max-trials) was reached";
     case learning::StopReason::space_exhausted:
       return "every combination was tried";
+    case learning::StopReason::episode_cap:
+      return "the episode cap (--max-episodes) was reached";
     case learning::StopReason::running:
       break;
   }
@@ -106,9 +108,10 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
   }
   if (options.learner.name != learning::kDefaultLearner)
     out << ", learner " << options.learner.name;
-  out << ", beta " << options.annealing.beta << ", threshold "
-      << degrees(options.annealing.threshold_deg) << ", window " << options.window_steps
-      << ", settle " << settle_steps << ", seed " << options.seed << "\n"
+  if (const std::optional<double> beta = learning::annealing_beta(options.learner))
+    out << ", beta " << *beta;
+  out << ", threshold " << degrees(options.search.threshold_deg) << ", window "
+      << options.window_steps << ", settle " << settle_steps << ", seed " << options.seed << "\n"
       << world_text(spec) << ", step budget " << options.step_budget << "\n\n";
   out << "trial";
   for (const robot::Leg& leg : morph.legs) out << std::setw(4) << leg.name;
@@ -120,7 +123,7 @@ LearningTable::LearningTable(std::ostream& out, const experiments::RunSpec& spec
 
 void LearningTable::event(const body::Event& e) {
   const robot::Morphology& morph = experiments::morphology(spec_.robot);
-  const double threshold = spec_.learning->annealing.threshold_deg;
+  const double threshold = spec_.learning->search.threshold_deg;
   switch (e.kind) {
     case body::EventKind::fault:
     case body::EventKind::recovery:
@@ -207,7 +210,7 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   const learning::CompensationOptions& options = *spec.learning;
   const std::vector<std::size_t> failing = body::failing_legs(spec.faults);
-  const double threshold = options.annealing.threshold_deg;
+  const double threshold = options.search.threshold_deg;
   const bool robust = r.mode == learning::Mode::robust;
   const bool reflex = robust && options.steering == learning::Steering::reflex;
   if (robust) {
@@ -284,6 +287,16 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
     out << "The trials used up the step budget of " << options.step_budget
         << " steps (--step-budget): learning stopped, and the robot walks on with the "
            "learner's answer so far.\n";
+    print_best_trial(out, spec, r);
+  } else if (r.outcome == learning::Outcome::not_converged &&
+             r.reason == learning::StopReason::episode_cap) {
+    const learning::Episode& last = r.episodes.back();
+    out << "Learning gave up: the episode cap (--max-episodes " << options.max_episodes
+        << ") was reached. The last episode "
+        << (last.held ? std::string("held under the threshold")
+                      : "ended: " + stop_text(last.reason.value_or(learning::StopReason::running)))
+        << ", but the windows walked after it did not hold, and no episode was left to learn "
+           "again.\n";
     print_best_trial(out, spec, r);
   } else if (r.outcome == learning::Outcome::not_converged && r.reason) {
     out << "Learning gave up: " << stop_text(*r.reason) << ".\n";

@@ -186,6 +186,10 @@ experiments::Ending run(int argc, char** argv) {
     return failed(2, e.key() + " " + e.what());
   } catch (const BadInput& e) {
     return failed(2, e.what());
+  } catch (const GoalNotReached&) {
+    // Every output is written and has said what happened: no further line.
+    if (interrupt_signal() != 0) return stopped(Interrupted(interrupt_signal()));
+    return {GoalNotReached::kExitCode, ""};
   } catch (const experiments::FailedElsewhere& e) {
     return {e.code(), ""};  // the failing process reports it
   } catch (const Interrupted& e) {

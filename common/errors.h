@@ -1,7 +1,7 @@
-// Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1, Interrupted ->
-// 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/cli.md "Exit codes and signals"). Every
-// message is made printable (common/user_text.h): text the user typed that holds a NUL, newline or
-// escape sequence is shown escaped, on one line, whole.
+// Error kinds the CLI maps to exit codes: BadInput -> 2, RuntimeFailure -> 1, GoalNotReached ->
+// 3, Interrupted -> 128 + the signal (130 for SIGINT, 143 for SIGTERM; docs/cli.md "Exit codes and
+// signals"). Every message is made printable (common/user_text.h): text the user typed that holds a
+// NUL, newline or escape sequence is shown escaped, on one line, whole.
 #pragma once
 
 #include <stdexcept>
@@ -35,6 +35,15 @@ class OptionError : public BadInput {
 class RuntimeFailure : public std::runtime_error {
  public:
   explicit RuntimeFailure(const std::string& what) : std::runtime_error(printable(what)) {}
+};
+
+// The run went to its end and wrote every output, but did not reach what it was run for: learning
+// that did not converge. Its output has said so; the exit code says it to a script (docs/cli.md
+// "Exit codes and signals").
+class GoalNotReached : public std::runtime_error {
+ public:
+  explicit GoalNotReached(const std::string& what) : std::runtime_error(printable(what)) {}
+  static constexpr int kExitCode = 3;
 };
 
 // The user stopped the run (SIGINT or SIGTERM, common/interrupt.h). Thrown where the work checks

@@ -4,6 +4,7 @@
 #include <limits>
 #include <numeric>
 
+#include "common/random.h"
 #include "common/table.h"
 #include "experiments/calibration.h"
 #include "experiments/calibration_detail.h"
@@ -14,18 +15,12 @@ namespace multicpg::experiments {
 namespace calibration_detail {
 namespace {
 
-// SplitMix64: a portable stream (the same draws on every machine and library).
+// A portable stream of draws (common/random.h).
 class Stream {
  public:
   explicit Stream(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1) with 53 bits.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+  std::uint64_t next() { return splitmix64_next(state_); }
+  double uniform() { return unit_from_bits(next()); }
   // Uniform in 0..n-1 (n small: the modulo bias is below 2^-50).
   std::size_t below(std::size_t n) { return static_cast<std::size_t>(next() % n); }
 

@@ -150,8 +150,8 @@ learning::CompensationOptions landscape_options(const LandscapeSpec& spec) {
   learning::CompensationOptions o;
   o.mode = learning::Mode::robust;
   o.steering = spec.steering;
-  o.annealing.period_set = spec.period_set;
-  o.annealing.threshold_deg = spec.threshold_deg;
+  o.search.period_set = spec.period_set;
+  o.search.threshold_deg = spec.threshold_deg;
   o.window_steps = spec.window_steps;
   o.hold_windows = spec.windows;
   return o;

@@ -35,7 +35,7 @@ struct LearnerBenchmarkSpec {
   // instead of from its run seed (learning::replay_run's learner_seed).
   bool live_seeds = false;
   int budget = kDefaultBenchmarkBudget;
-  learning::AnnealingParams search;  // the dataset's period set and threshold; the trial cap
+  learning::SearchBounds search;  // the dataset's period set and threshold; the trial cap
   learning::TrialProtocol protocol;
   std::vector<std::vector<std::size_t>> scenarios;  // empty: every scenario of the dataset
 };

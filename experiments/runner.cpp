@@ -28,6 +28,7 @@
 #include "common/input_file.h"
 #include "common/interrupt.h"
 #include "common/json_diff.h"
+#include "common/random.h"
 #include "common/worker_threads.h"
 #include "experiments/processes.h"
 
@@ -37,22 +38,10 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// SplitMix64 (Steele, Lea, Flood 2014) constants.
-constexpr std::uint64_t kGoldenGamma = 0x9e3779b97f4a7c15ULL;
-constexpr std::uint64_t kMix1 = 0xbf58476d1ce4e5b9ULL;
-constexpr std::uint64_t kMix2 = 0x94d049bb133111ebULL;
-
 constexpr int kKeyRunDigits = 3;
 constexpr int kJsonIndent = 2;
 constexpr long kSecondsPerMinute = 60;
 constexpr long kSecondsPerHour = 3600;
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += kGoldenGamma;
-  x = (x ^ (x >> 30)) * kMix1;
-  x = (x ^ (x >> 27)) * kMix2;
-  return x ^ (x >> 31);
-}
 
 void check_keys(const std::vector<Task>& tasks) {
   std::set<std::string> seen;

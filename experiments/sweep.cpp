@@ -364,6 +364,32 @@ nlohmann::json learning_document(const learning::CompensationOptions& options, l
   return j;
 }
 
+namespace {
+
+// The annealing named with its beta as a learner option, `learner = { name = "annealing",
+// options = { beta = B } }`, written as its record writes it: beta under "annealing", the learner
+// left out when nothing else is left.
+void canonical_annealing(json& learning_point) {
+  if (!learning_point.contains("learner")) return;
+  json& learner = learning_point["learner"];
+  if (!learner.is_object() || learner.value("name", json()) != learning::kDefaultLearner) return;
+  json* options = learner.contains("options") ? &learner["options"] : nullptr;
+  if (options && options->is_object() && options->contains("beta")) {
+    const json beta = options->at("beta");
+    json& annealing = learning_point["annealing"];
+    if (annealing.is_object() && annealing.contains("beta") &&
+        annealing.at("beta") != json(learning::kDefaultBeta) && annealing.at("beta") != beta) {
+      throw OptionError("learning.learner.options.beta",
+                        "and learning.annealing.beta give the annealing two betas");
+    }
+    annealing["beta"] = beta;
+    options->erase("beta");
+  }
+  if (learner == json(learning::LearnerChoice{})) learning_point.erase("learner");
+}
+
+}  // namespace
+
 Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
   if (!doc.is_object()) throw OptionError("", "an experiment must be a table of keys");
   document::check_bounds(doc);
@@ -466,11 +492,10 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     const long fail_step = learning_point.at(kFailStepKey).get<long>();
     require_in(std::string("learning.") + kFailStepKey, fail_step, body::kStepLimits);
     learning_point.erase(kFailStepKey);
-    // The default learner (the paper's annealing, no options) is the one the options' JSON
-    // leaves out (learning/json.h): it reads back as given only when left out here.
-    if (learning_point.value("learner", json()) == json(learning::LearnerChoice{})) {
-      learning_point.erase("learner");
-    }
+    // The annealing's beta is recorded as annealing.beta and the default learner (the paper's
+    // annealing, no other option) is left out (learning/json.h): a point reads back as given only
+    // in that form.
+    canonical_annealing(learning_point);
     check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(canonical_sim(sim_point), "sim");

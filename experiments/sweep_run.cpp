@@ -58,7 +58,7 @@ json task_result(const sim::SimModel& model, const RunSpec& spec, sim::Observer*
     bool holds = true;
     for (const body::WindowMeasure& m : run.after_windows) {
       windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", m.path_deg}});
-      holds = holds && body::holds(m.worst_deg(), options.annealing.threshold_deg);
+      holds = holds && body::holds(m.worst_deg(), options.search.threshold_deg);
     }
     out["after_windows"] = windows;
     out["holds_after"] = holds;

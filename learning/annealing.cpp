@@ -6,14 +6,13 @@
 #include <string>
 
 #include "common/errors.h"
+#include "common/random.h"
 #include "robot/leg_sets.h"
 
 namespace multicpg::learning {
 namespace {
 
 // The 53 bits of a double's significand, and 2^-53 to scale them into [0, 1).
-constexpr int kDropBits = 64 - 53;
-constexpr double kTwoToMinus53 = 0x1.0p-53;
 
 // Legs among `working` whose period differs between the two combinations.
 std::size_t distance(const Periods& a, const Periods& b, const std::vector<std::size_t>& working) {
@@ -48,13 +47,12 @@ void require_pending(const AnnealingState& state) {
 
 }  // namespace
 
-void validate(const AnnealingParams& params) {
-  require_in("beta", params.beta, kBetaLimits);
-  require_in("threshold_deg", params.threshold_deg, kThresholdLimits);
-  require_in("max_trials", params.max_trials, kMaxTrialsLimits);
-  if (params.period_set.empty()) throw OptionError("period_set", "is empty");
+void validate(const SearchBounds& bounds) {
+  require_in("threshold_deg", bounds.threshold_deg, kThresholdLimits);
+  require_in("max_trials", bounds.max_trials, kMaxTrialsLimits);
+  if (bounds.period_set.empty()) throw OptionError("period_set", "is empty");
   std::set<int> seen;
-  for (int p : params.period_set) {
+  for (int p : bounds.period_set) {
     if (!robot::is_gait_period(p)) {
       throw OptionError("period_set",
                         "holds period " + std::to_string(p) +
@@ -64,6 +62,15 @@ void validate(const AnnealingParams& params) {
       throw OptionError("period_set", "holds period " + std::to_string(p) + " twice");
     }
   }
+}
+
+AnnealingParams annealing_params(const SearchBounds& bounds, double beta) {
+  return {beta, bounds.threshold_deg, bounds.max_trials, bounds.period_set};
+}
+
+void validate(const AnnealingParams& params) {
+  require_in("beta", params.beta, kBetaLimits);
+  validate(SearchBounds{params.period_set, params.threshold_deg, params.max_trials});
 }
 
 std::string_view to_string(StopReason reason) {
@@ -76,6 +83,8 @@ std::string_view to_string(StopReason reason) {
       return "trial cap";
     case StopReason::space_exhausted:
       return "search space exhausted";
+    case StopReason::episode_cap:
+      return "episode cap";
   }
   return "?";
 }
@@ -178,20 +187,6 @@ Decision decide_with_draw(const AnnealingParams& params, AnnealingState& state,
   }
   d.stop = state.stop;
   return d;
-}
-
-std::uint64_t draw_below(std::mt19937_64& rng, std::uint64_t n) {
-  if (n == 0) throw std::logic_error("draw_below(0)");
-  // Outputs below 2^64 mod n are rejected, so the rest splits into n classes of equal size.
-  const std::uint64_t reject_below = (0 - n) % n;
-  for (;;) {
-    const std::uint64_t x = rng();
-    if (x >= reject_below) return x % n;
-  }
-}
-
-double draw_unit(std::mt19937_64& rng) {
-  return static_cast<double>(rng() >> kDropBits) * kTwoToMinus53;
 }
 
 }  // namespace multicpg::learning

@@ -12,24 +12,16 @@
 #include <vector>
 
 #include "common/limits.h"
+#include "learning/search_bounds.h"
 
 namespace multicpg::learning {
 
-// One period per leg, in morphology order (R1..Rn, L1..Ln).
-using Periods = std::vector<int>;
-
-inline constexpr double kDefaultBeta = 0.5;          // paper §3: "usually 0.5"
-inline constexpr double kDefaultThresholdDeg = 8.0;  // E_req, paper §4
-inline constexpr int kDefaultMaxTrials = 200;        // docs/learning.md "Stop and trial cap"
-inline constexpr int kStartPeriod = 4;               // C0 = all 4 (tripod), Table 2
-
-// Documented ranges: beta far past the paper's greedy 10 (Fig. 14); a threshold
-// between a thousandth of a degree and a U-turn; a trial cap far past the paper's 200.
+inline constexpr double kDefaultBeta = 0.5;  // paper §3: "usually 0.5"
+// Documented range: beta far past the paper's greedy 10 (Fig. 14).
 inline constexpr Limits<double> kBetaLimits{0.0, 100.0};
-inline constexpr Limits<double> kThresholdLimits{0.001, 180.0};
-inline constexpr Limits<int> kMaxTrialsLimits{1, 100'000};
 
-// What the search is (immutable during a run).
+// What the search is (immutable during a run): the bounds every learner shares (learning/
+// search_bounds.h) and the annealing's own beta.
 struct AnnealingParams {
   double beta = kDefaultBeta;                   // 0 = random search, 10 ~ greedy (paper Fig. 14)
   double threshold_deg = kDefaultThresholdDeg;  // stop when E < threshold
@@ -37,13 +29,12 @@ struct AnnealingParams {
   std::vector<int> period_set{4, 5, 6, 8, 9};   // Table 2 step (2)
 };
 
+// The annealing's parameters for a search of `bounds` with this beta.
+AnnealingParams annealing_params(const SearchBounds& bounds, double beta);
+
 // Throws OptionError (key "beta", "threshold_deg", "max_trials", "period_set") for a value
 // outside its limits, or a period set that is empty, repeats a value or holds a period outside 1-9.
 void validate(const AnnealingParams& params);
-
-// Why a run stopped.
-enum class StopReason { running, below_threshold, trial_cap, space_exhausted };
-std::string_view to_string(StopReason reason);
 
 // A combination to try next.
 struct Candidate {
@@ -103,11 +94,5 @@ Decision decide(const AnnealingParams& params, AnnealingState& state, double dev
 // The same with the uniform draw given (used only when E >= E_ref), for scripted tests.
 Decision decide_with_draw(const AnnealingParams& params, AnnealingState& state,
                           double deviation_deg, double uniform_draw);
-
-// Draws used by the search, written out so traces are identical across standard libraries.
-// Uniform integer in [0, n), n >= 1: rejection on the raw 64-bit output (no modulo bias).
-std::uint64_t draw_below(std::mt19937_64& rng, std::uint64_t n);
-// Uniform double in [0, 1): the top 53 bits of one output.
-double draw_unit(std::mt19937_64& rng);
 
 }  // namespace multicpg::learning

@@ -10,10 +10,22 @@
 namespace multicpg::learning {
 namespace {
 
+// The annealing's one option: beta (paper §3, Fig. 14), the CLI's --beta and the experiment
+// files' learning.annealing.beta.
+struct AnnealingOptions {
+  double beta = kDefaultBeta;
+  bool operator==(const AnnealingOptions&) const = default;
+};
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(AnnealingOptions, beta)
+
+void validate(const AnnealingOptions& o) {
+  require_in("beta", o.beta, kBetaLimits);
+}
+
 class AnnealingLearner final : public Learner {
  public:
-  explicit AnnealingLearner(const LearnerSetup& setup)
-      : params_(setup.search),
+  AnnealingLearner(const LearnerSetup& setup, double beta)
+      : params_(annealing_params(setup.search, beta)),
         state_(start_annealing(params_, setup.start, setup.fixed, setup.start_deviation_deg,
                                setup.seed)) {}
 
@@ -46,14 +58,12 @@ class AnnealingLearner final : public Learner {
 
 }  // namespace
 
-// The annealing's own constant, beta, is the run's annealing.beta (recorded with every run since
-// the paper's algorithm was the only one), so it takes no options here.
 nlohmann::json annealing_options(const nlohmann::json& asked) {
-  return read_learner_options<NoLearnerOptions>(asked);
+  return read_learner_options<AnnealingOptions>(asked);
 }
 
-std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json&) {
-  return std::make_unique<AnnealingLearner>(setup);
+std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json& options) {
+  return std::make_unique<AnnealingLearner>(setup, options.get<AnnealingOptions>().beta);
 }
 
 }  // namespace multicpg::learning

@@ -9,18 +9,10 @@
 #include "body/deviation.h"
 #include "common/enum_names.h"
 #include "common/errors.h"
+#include "common/random.h"
 
 namespace multicpg::learning {
 namespace {
-
-// SplitMix64's finaliser (Steele, Lea, Flood 2014): a different, well-mixed 64-bit value for
-// each input, so draws keyed by (seed, combination, visit) are independent of each other.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 constexpr auto kWindowOrderNames =
     enum_names<WindowOrder>({{WindowOrder::drawn, "drawn"}, {WindowOrder::walked, "walked"}});
@@ -33,8 +25,8 @@ constexpr std::uint64_t kWindowStream = 2;
 // the landscape's windows drawn from (seed, combination, visit) alone.
 std::vector<std::size_t> drawn_windows(std::uint64_t seed, std::size_t combination, int visit,
                                        std::size_t windows) {
-  std::mt19937_64 rng(
-      mix(mix(mix(seed ^ kWindowStream) ^ combination) ^ static_cast<std::uint64_t>(visit)));
+  std::mt19937_64 rng(splitmix64(splitmix64(splitmix64(seed ^ kWindowStream) ^ combination) ^
+                                 static_cast<std::uint64_t>(visit)));
   std::vector<std::size_t> order(windows);
   std::iota(order.begin(), order.end(), 0);
   for (std::size_t i = 0; i + 1 < windows; ++i) {
@@ -56,7 +48,7 @@ WindowOrder parse_window_order(std::string_view text) {
 }
 
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
-                     const LearnerChoice& choice, const AnnealingParams& search,
+                     const LearnerChoice& choice, const SearchBounds& search,
                      const TrialProtocol& protocol, std::uint64_t seed,
                      std::optional<std::uint64_t> learner_seed) {
   if (search.period_set != dataset.period_set) {
@@ -145,7 +137,7 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   setup.start_windows = {detecting};
   setup.criterion = criterion;
   setup.search = search;
-  setup.seed = learner_seed.value_or(mix(seed ^ kLearnerStream));
+  setup.seed = learner_seed.value_or(splitmix64(seed ^ kLearnerStream));
   const std::unique_ptr<Learner> learner = make_learner(choice, setup);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {

@@ -63,7 +63,7 @@ struct ReplayRun {
 // `learner_seed`, when given, seeds the learner instead (as `learn --seed` seeds a live run's
 // first episode), so a walked replay can retrace a live run trial by trial.
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
-                     const LearnerChoice& choice, const AnnealingParams& search,
+                     const LearnerChoice& choice, const SearchBounds& search,
                      const TrialProtocol& protocol, std::uint64_t seed,
                      std::optional<std::uint64_t> learner_seed = std::nullopt);
 

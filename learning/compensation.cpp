@@ -45,7 +45,7 @@ long locked_settle_steps(const neural::ControllerModel& model, const Periods& pe
 Criterion criterion(const CompensationOptions& options) {
   if (options.mode == Mode::paper) return kPaperCriterion;
   if (options.steering == Steering::reflex) {
-    return reflex_criterion(options.annealing.threshold_deg, options.steering_params.max_effort);
+    return reflex_criterion(options.search.threshold_deg, options.steering_params.max_effort);
   }
   return kPeriodsAloneCriterion;
 }
@@ -92,7 +92,7 @@ Outcome parse_outcome(std::string_view text) {
 
 StopReason parse_stop_reason(std::string_view text) {
   for (StopReason r : {StopReason::running, StopReason::below_threshold, StopReason::trial_cap,
-                       StopReason::space_exhausted}) {
+                       StopReason::space_exhausted, StopReason::episode_cap}) {
     if (text == to_string(r)) return r;
   }
   throw BadInput("unknown stop reason '" + std::string(text) + "'");
@@ -115,7 +115,13 @@ Steering parse_steering(std::string_view text) {
 }
 
 void validate(const CompensationOptions& options) {
-  within("annealing", [&] { validate(options.annealing); });
+  // The annealing's beta and the bounds, as the record spells them (learning/json.h).
+  within("annealing", [&] {
+    if (const std::optional<double> beta = annealing_beta(options.learner)) {
+      require_in("beta", *beta, kBetaLimits);
+    }
+    validate(options.search);
+  });
   require_in("window_steps", options.window_steps, kWindowStepsLimits);
   if (options.settle_steps) require_in("settle_steps", *options.settle_steps, kSettleStepsLimits);
   require_in("detection_windows", options.detection_windows, kDetectionWindowsLimits);
@@ -211,7 +217,7 @@ LearnerSetup learner_setup(const body::Body& body, const CompensationOptions& op
   setup.start_deviation_deg = start_deviation_deg;
   setup.start_windows = std::move(start_windows);
   setup.criterion = criterion(options);
-  setup.search = options.annealing;
+  setup.search = options.search;
   setup.seed = seed;
   return setup;
 }
@@ -221,7 +227,7 @@ LearningResult compensate_paper(body::Body& body, const CompensationOptions& opt
   LearningResult result;
   result.mode = Mode::paper;
   result.settle_steps = start_settle_steps(options, model);
-  const AnnealingParams& params = options.annealing;
+  const SearchBounds& params = options.search;
   CourseWalk walk(body, options);
 
   // docs/learning.md "Detection": consecutive windows until one deviates more than the threshold.
@@ -302,7 +308,7 @@ class RobustRun {
       : body_(body),
         options_(options),
         model_(body.controller_model()),
-        params_(options.annealing),
+        params_(options.search),
         walk_(body, options),
         budget_(options.step_budget) {}
 
@@ -432,6 +438,11 @@ class RobustRun {
                         : budget_.used_up() ? Outcome::budget_reached
                                             : Outcome::not_converged;
       result_.reason = last.reason;
+      // Another episode would have started had the cap allowed it: the cap ended the run.
+      if (!held && options_.learn_periods && !budget_.used_up() &&
+          static_cast<int>(result_.episodes.size()) >= options_.max_episodes) {
+        result_.reason = StopReason::episode_cap;
+      }
     }
     double worst = 0.0;
     for (const body::WindowMeasure& m : result_.final_windows) worst = std::max(worst, error(m));
@@ -441,7 +452,7 @@ class RobustRun {
   body::Body& body_;
   const CompensationOptions& options_;
   const neural::ControllerModel& model_;
-  const AnnealingParams& params_;
+  const SearchBounds& params_;
   CourseWalk walk_;
   Budget budget_;
   LearningResult result_;

@@ -82,10 +82,13 @@ inline constexpr Limits<long> kStepBudgetLimits{1, body::kMaxSteps};
 // body's fault schedule (body::FaultSchedule) says what came.
 struct CompensationOptions {
   Mode mode = Mode::robust;
-  // The search's bounds for every learner (period set, threshold, trial cap) and the
-  // annealing's beta; recorded as "annealing" since the annealing was the only learner.
-  AnnealingParams annealing;
-  LearnerChoice learner;  // which learner searches (learning/learners.h); the paper's annealing
+  // The search's bounds for every learner (period set, threshold, trial cap). A run records them
+  // with the annealing's beta as "annealing" (learning/json.h), as runs were recorded when the
+  // annealing was the only learner.
+  SearchBounds search;
+  // Which learner searches, with its options (learning/learners.h): the paper's annealing, its
+  // beta its option "beta".
+  LearnerChoice learner;
   long window_steps = kDefaultWindowSteps;
   // Unmeasured steps after every period change (paper: and before the first detection window).
   // Empty = paper: default_settle_steps(model); robust: locked_settle_steps(model, periods).

@@ -88,7 +88,7 @@ Measurement robust_trial(CourseWalk& walk, const CompensationOptions& options,
   for (int w = 0; w < windows; ++w) {
     m.windows.push_back(walk.measured_window());
     m.deviation_deg = std::max(m.deviation_deg, robust_deviation(options, m.windows.back()));
-    if (!body::holds(m.deviation_deg, options.annealing.threshold_deg)) break;
+    if (!body::holds(m.deviation_deg, options.search.threshold_deg)) break;
   }
   return m;
 }
@@ -103,7 +103,7 @@ std::vector<body::WindowMeasure> watch_until_deviation(CourseWalk& walk,
       continue;
     }
     out.push_back(m);
-    if (!body::holds(robust_deviation(options, m), options.annealing.threshold_deg)) break;
+    if (!body::holds(robust_deviation(options, m), options.search.threshold_deg)) break;
   }
   return out;
 }

@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "common/random.h"
 #include "learning/learners.h"
 #include "learning/search_space.h"
 

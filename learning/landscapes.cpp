@@ -352,7 +352,7 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
   d.windows = static_cast<int>(f.integer("windows", {1, kMaxWindows}));
   d.window_steps = f.integer("window_steps", kWindowStepsLimits);
   d.threshold_deg = f.number("threshold_deg", kThresholdLimits);
-  AnnealingParams bounds;
+  SearchBounds bounds;
   bounds.period_set = d.period_set;
   bounds.threshold_deg = d.threshold_deg;
   try {

@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "body/deviation.h"
-#include "learning/annealing.h"
 #include "learning/criterion.h"
+#include "learning/search_bounds.h"
 #include "robot/morphology.h"
 
 namespace multicpg::learning {
@@ -45,8 +45,9 @@ struct LearnerSetup {
   // of |yaw change| and |path angle|, and with the steering reflex its effort.
   Criterion criterion = kPeriodsAloneCriterion;
   // The search's bounds, the same for every learner: its period set, the threshold E must get
-  // under and the trial cap; beta is the annealing's own (docs/learning.md "The search").
-  AnnealingParams search;
+  // under and the trial cap (a learner's own constants, such as the annealing's beta, are its
+  // options).
+  SearchBounds search;
   std::uint64_t seed = 0;  // every random draw of the episode comes from it
 
   // The legs whose period may change, in morphology order.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "learning/annealing.h"
+
 namespace multicpg::learning {
 
 // Each learner's file defines these two functions (learning/learner.h "To add a learner").
@@ -94,6 +96,13 @@ std::vector<std::string> detail_columns(std::string_view learner,
     for (const auto& [key, value] : t.details.items()) keys.insert(key);
   }
   return {keys.begin(), keys.end()};
+}
+
+std::optional<double> annealing_beta(const LearnerChoice& choice) {
+  if (choice.name != kDefaultLearner) return std::nullopt;
+  if (!choice.options.is_object()) return kDefaultBeta;
+  const nlohmann::json beta = choice.options.value("beta", nlohmann::json(kDefaultBeta));
+  return beta.is_number() ? beta.get<double>() : kDefaultBeta;
 }
 
 LearnerChoice resolve_learner(const LearnerChoice& asked) {

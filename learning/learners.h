@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,6 +45,10 @@ std::string learner_names();
 // a record of `trace` carries, sorted.
 std::vector<std::string> detail_columns(std::string_view learner,
                                         const std::vector<TrialRecord>& trace);
+
+// The annealing's beta in `choice` (its option "beta", kDefaultBeta when not given); nothing for
+// another learner, which has no beta.
+std::optional<double> annealing_beta(const LearnerChoice& choice);
 
 // The choice with every default filled in. Throws OptionError: key "name" for an unknown
 // learner (naming the known ones), "options.<key>" for an unknown option or a bad value.

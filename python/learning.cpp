@@ -150,11 +150,12 @@ py::dict checked_learning_options(const Keywords& k) {
   out["hold_windows"] = o.hold_windows;
   out["monitor_windows"] = o.monitor_windows;
   out["period_learning"] = o.learn_periods;
-  out["beta"] = o.annealing.beta;
-  out["threshold"] = o.annealing.threshold_deg;
+  const std::optional<double> beta = learning::annealing_beta(o.learner);
+  out["beta"] = beta ? py::object(py::float_(*beta)) : py::none();
+  out["threshold"] = o.search.threshold_deg;
   out["window"] = o.window_steps;
   out["settle"] = o.settle_steps ? py::object(py::int_(*o.settle_steps)) : py::none();
-  out["max_trials"] = o.annealing.max_trials;
+  out["max_trials"] = o.search.max_trials;
   out["seed"] = o.seed;
   out["given"] = k.given_of(learning_params());
   return out;

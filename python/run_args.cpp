@@ -113,18 +113,29 @@ learning::CompensationOptions learning_options(const Keywords& k) {
     }
     o.learner.options = to_json(options, "learner_options");
   }
+  // beta is the annealing's option (learning/learners.h), given as its own keyword as on the CLI.
+  const double beta = real(k["beta"], "beta", learning::kBetaLimits);
+  if (k.given("beta")) {
+    if (o.learner.name != learning::kDefaultLearner) {
+      value_error("beta",
+                  "is the annealing's option; the learner '" + o.learner.name + "' has none");
+    }
+    if (o.learner.options.contains("beta")) {
+      value_error("beta", "is given twice (also in learner_options)");
+    }
+    o.learner.options["beta"] = beta;
+  }
   try {
     o.learner = learning::resolve_learner(o.learner);
   } catch (const OptionError& e) {
     value_error(learner_argument(e.key()), e.what());
   }
-  o.annealing.beta = real(k["beta"], "beta", learning::kBetaLimits);
-  o.annealing.threshold_deg = real(k["threshold"], "threshold", learning::kThresholdLimits);
+  o.search.threshold_deg = real(k["threshold"], "threshold", learning::kThresholdLimits);
   o.window_steps = whole(k["window"], "window", learning::kWindowStepsLimits);
   if (!k["settle"].is_none()) {
     o.settle_steps = whole(k["settle"], "settle", learning::kSettleStepsLimits);
   }
-  o.annealing.max_trials = whole(k["max_trials"], "max_trials", learning::kMaxTrialsLimits);
+  o.search.max_trials = whole(k["max_trials"], "max_trials", learning::kMaxTrialsLimits);
   o.seed = seed(k["seed"], "seed");
   return o;
 }

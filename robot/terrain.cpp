@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "common/random.h"
 #include "common/variants.h"
 
 namespace multicpg::robot {
@@ -42,15 +43,6 @@ std::string shortest(double v) {
   char buf[64];
   const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, ptr);
-}
-
-// SplitMix64: a fixed, portable stream of 64-bit draws, so a seed gives the same terrain on every
-// machine and library (std's distributions are not specified bit for bit).
-std::uint64_t splitmix64(std::uint64_t& x) {
-  std::uint64_t z = (x += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31);
 }
 
 // "flat, slope:DEG[:HEADING_DEG], ... or steps:HEIGHT_M:DEPTH_M (e.g. slope:5, ...)" from the
@@ -122,7 +114,7 @@ std::vector<float> Rough::heightfield_samples() const {
   std::uint64_t state = seed;
   for (float& v : out) {
     // The top 24 bits: every float in [0, 1) they give is exact.
-    v = static_cast<float>(splitmix64(state) >> 40) / static_cast<float>(1 << 24);
+    v = static_cast<float>(splitmix64_next(state) >> 40) / static_cast<float>(1 << 24);
   }
   const auto [lo, hi] = std::minmax_element(out.begin(), out.end());
   const float low = *lo;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/errors.h"
+#include "common/random.h"
 #include "learning/annealing.h"
 
 namespace multicpg::learning {

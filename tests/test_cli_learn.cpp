@@ -121,7 +121,9 @@ TEST(CliLearn, StepBudgetEndsARunThatCannotConverge) {
   const auto r =
       run_cli("learn --robot " + std::string(MULTICPG_SOURCE_DIR) +
               "/examples/robots/dog12.toml --disable R1 --step-budget 12000 --out " + dir);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Not converged: exit 3, every output written (docs/cli.md "Exit codes and signals").
+  ASSERT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
   const auto j = nlohmann::json::parse(read_file(dir + "/learning.json"));
   EXPECT_EQ(j.at("status"), "budget reached");
   EXPECT_FALSE(j.at("converged").get<bool>());
@@ -203,6 +205,11 @@ TEST(CliLearn, BadInput) {
   expect_bad_input("learn --disable R1 --threshold 0", "threshold");
   expect_bad_input("learn --disable R1 --window 0", "window");
   expect_bad_input("learn --disable R1 --max-trials 0", "--max-trials");
+  expect_bad_input("learn --disable R1 --max-episodes 0", "--max-episodes");
+  expect_bad_input("learn --disable R1 --mode paper --max-episodes 2", "robust-mode");
+  // beta is the annealing's option: refused for another learner, and given once.
+  expect_bad_input("learn --disable R1 --learner random --beta 1", "--beta");
+  expect_bad_input("learn --disable R1 --beta 1 --learner-option beta=2", "given twice");
   expect_bad_input("learn --disable R1,R2,R3,L1,L2,L3", "every leg");
   expect_bad_input("learn --disable R9", "R9");
   expect_bad_input("learn --robot quadruped --disable R3", "R3");

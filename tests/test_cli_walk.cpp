@@ -127,15 +127,17 @@ TEST(CliWalk, EveryBodyParameterChangesTheWalkAndPaperSimIsTheDefault) {
 
 // The learning and the tunnel too: --model paper-sim is the default to the byte.
 TEST(CliWalk, PaperSimIsTheDefaultBodyOfLearnAndTunnel) {
-  for (const char* command : {"learn --mode paper --disable R1 --max-trials 2 --json",
-                              "tunnel --disable R1,R3 --max-steps 200 --json"}) {
+  for (const auto& [command, exit_code] : std::vector<std::pair<std::string, int>>{
+           {"learn --mode paper --disable R1 --max-trials 2 --json", 0},
+           {"tunnel --disable R1,R3 --max-steps 200 --json", 0}}) {
     const auto plain = run_cli(command);
-    ASSERT_EQ(plain.exit_code, 0) << command << ": " << plain.err;
-    const auto paper_sim = run_cli(std::string(command) + " --model paper-sim");
-    ASSERT_EQ(paper_sim.exit_code, 0) << command << ": " << paper_sim.err;
+    ASSERT_EQ(plain.exit_code, exit_code) << command << ": " << plain.err;
+    const auto paper_sim = run_cli(command + " --model paper-sim");
+    ASSERT_EQ(paper_sim.exit_code, exit_code) << command << ": " << paper_sim.err;
     EXPECT_EQ(paper_sim.out, plain.out) << command;
-    const auto real = run_cli(std::string(command) + " --model real");
-    ASSERT_EQ(real.exit_code, 0) << command << ": " << real.err;
+    const auto real = run_cli(command + " --model real");
+    // The real body need not converge in two trials (exit 3): its output is whole either way.
+    ASSERT_TRUE(real.exit_code == 0 || real.exit_code == 3) << command << ": " << real.err;
     EXPECT_NE(real.out, plain.out) << command;
   }
 }

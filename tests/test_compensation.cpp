@@ -108,7 +108,7 @@ TEST(Compensation, LateFailureIsDetectedAfterIt) {
 TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   // A bias no period combination can cancel: 0.2 deg/step, 80 deg per window.
   CompensationOptions o = options_for(3);
-  o.annealing.max_trials = 12;
+  o.search.max_trials = 12;
   o.settle_steps = 0;
   FakeBody walker(RobotKind::hexapod, failing({0}), 0.2);
   const LearningResult r = compensate(walker, o);
@@ -182,8 +182,8 @@ TEST(Compensation, RejectsBadInput) {
   bad([](CompensationOptions& o) { o.window_steps = 0; });
   bad([](CompensationOptions& o) { o.settle_steps = -1; });
   bad([](CompensationOptions& o) { o.detection_windows = 0; });
-  bad([](CompensationOptions& o) { o.annealing.beta = -1.0; });
-  bad([](CompensationOptions& o) { o.annealing.threshold_deg = 0.0; });
+  bad([](CompensationOptions& o) { o.learner.options["beta"] = -1.0; });
+  bad([](CompensationOptions& o) { o.search.threshold_deg = 0.0; });
   // A timeline no walker can have: a schedule refuses it before any learning.
   const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
   EXPECT_THROW(body::FaultSchedule(hex, failing({0, 1, 2, 3, 4, 5})), BadInput);
@@ -288,6 +288,21 @@ TEST(RobustCompensation, SecondFaultLearnsTwice) {
   EXPECT_EQ(r.periods[0], kStartPeriod);
   EXPECT_EQ(r.periods[4], r.episodes[0].periods[4]);
   EXPECT_EQ(count(walker.events, body::EventKind::fault), 2);
+}
+
+// The second fault comes after the one episode the run may start: the windows after it deviate
+// and nothing is left to learn with, so the run ends not converged for the episode cap, although
+// its one episode held.
+TEST(RobustCompensation, EpisodeCapEndsTheRunAndIsItsReason) {
+  CompensationOptions o = robust_options(2);
+  o.max_episodes = 1;
+  FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {4}, false}});
+  const LearningResult r = compensate(walker, o);
+  ASSERT_EQ(r.episodes.size(), 1u);
+  EXPECT_TRUE(r.episodes[0].held);
+  EXPECT_EQ(r.outcome, Outcome::not_converged);
+  EXPECT_EQ(r.reason, StopReason::episode_cap);
+  EXPECT_EQ(parse_stop_reason(to_string(StopReason::episode_cap)), StopReason::episode_cap);
 }
 
 TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {

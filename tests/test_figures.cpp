@@ -275,9 +275,17 @@ TEST_F(FiguresTest, LandscapeSortsCombinationsAndMarksBestAndLearned) {
   EXPECT_NE(data.find("1,7.9,1,1,1,2,R1=9 R2=9 L1=4,7,7.9"), std::string::npos) << data;
   EXPECT_NE(data.find("3,45,0,0,0,0,R1=4 R2=4 L1=4,30,45"), std::string::npos) << data;
 
-  const std::vector<LandscapePoint> ragged{{"a", {1.0}, 1.0, true, true},
-                                           {"b", {1.0, 2.0}, 2.0, true, true}};
-  EXPECT_THROW(plot_landscape(ragged, "x", multicpg::experiments::paper::kThresholdDeg, dir_),
+  // A walked-order landscape stops a combination at its first window over the threshold: the
+  // windows it did not walk are drawn as gaps.
+  const std::vector<LandscapePoint> truncated{{"a", {9.0}, 9.0, false, false},
+                                              {"b", {1.0, 2.0}, 2.0, true, true}};
+  const auto cut = plot_landscape(truncated, "x", multicpg::experiments::paper::kThresholdDeg, dir_,
+                                  "truncated");
+  EXPECT_NE(read_text(cut.csv).find("2,9,0,0,0,0,a,9,NaN"), std::string::npos)
+      << read_text(cut.csv);
+  const std::vector<LandscapePoint> empty{{"a", {}, 1.0, true, true},
+                                          {"b", {1.0, 2.0}, 2.0, true, true}};
+  EXPECT_THROW(plot_landscape(empty, "x", multicpg::experiments::paper::kThresholdDeg, dir_),
                multicpg::BadInput);
 }
 

@@ -24,13 +24,13 @@ namespace multicpg::testing {
 namespace {
 
 namespace fs = std::filesystem;
-using learning::AnnealingParams;
 using learning::LandscapeDataset;
 using learning::LandscapePoint;
 using learning::LearnerChoice;
 using learning::Periods;
 using learning::ReplayRun;
 using learning::ScenarioLandscape;
+using learning::SearchBounds;
 using learning::StopReason;
 using learning::TrialProtocol;
 
@@ -107,8 +107,8 @@ LandscapeDataset synthetic_dataset() {
 constexpr std::size_t kL2 = 3;
 constexpr std::size_t kR2 = 1;
 
-AnnealingParams search(int max_trials) {
-  AnnealingParams p;
+SearchBounds search(int max_trials) {
+  SearchBounds p;
   p.period_set = kPeriodSet;
   p.max_trials = max_trials;
   return p;

@@ -74,7 +74,7 @@ TEST(LearningSim, RandomSearchNeedsTheMostTrials) {
   spec.base = *r1_disabled(0).learning;
   // Random search that reaches this cap already needs the most; the paper's 200 would walk
   // three such runs of 296,000 steps each.
-  spec.base.annealing.max_trials = kRandomSearchMaxTrials;
+  spec.base.search.max_trials = kRandomSearchMaxTrials;
   const auto table = experiments::run_beta_study(spec, {0.0, 0.5, 10.0});
   ASSERT_EQ(table.rows.size(), 3u);
   EXPECT_EQ(table.rows[0].group, "0");
@@ -97,7 +97,7 @@ TEST(LearningSim, ALiveTrialWalksTheLandscapesWindowsWhateverCameBefore) {
   o.mode = learning::Mode::robust;
   o.steering = learning::Steering::off;
   o.learner = learning::resolve_learner({"random", nlohmann::json::object()});
-  o.annealing.max_trials = kTrials;
+  o.search.max_trials = kTrials;
   o.max_episodes = 1;
   o.monitor_windows = 1;
   spec.start = experiments::learning_start(o.mode);
@@ -108,11 +108,11 @@ TEST(LearningSim, ALiveTrialWalksTheLandscapesWindowsWhateverCameBefore) {
   const std::vector<std::size_t> r1 = {robot::leg_index(hexapod().controller.morphology, "R1")};
   for (const learning::TrialRecord& t : run.result.trace) {
     const experiments::CombinationMeasure fresh = experiments::measure_combination(
-        hexapod(), r1, t.periods, o.hold_windows, o.window_steps, o.annealing.threshold_deg);
+        hexapod(), r1, t.periods, o.hold_windows, o.window_steps, o.search.threshold_deg);
     double expected = 0.0;  // robust mode's E: the worst window, stopping at the first over
     for (const body::WindowMeasure& w : fresh.windows) {
       expected = std::max(expected, w.worst_deg());
-      if (!body::holds(expected, o.annealing.threshold_deg)) break;
+      if (!body::holds(expected, o.search.threshold_deg)) break;
     }
     EXPECT_NEAR(t.deviation_deg, expected, kToleranceDeg) << "trial " << t.trial;
   }
@@ -129,7 +129,7 @@ TEST(LearningSim, AReflexLandscapeRowIsTheLiveRunsFirstTrial) {
   learning::CompensationOptions& o = spec.learning.emplace();  // robust, reflex: the default
   o.learner = learning::resolve_learner({"random", nlohmann::json::object()});
   o.seed = 4;
-  o.annealing.max_trials = 2;
+  o.search.max_trials = 2;
   o.max_episodes = 1;
   o.monitor_windows = 1;
   spec.start = experiments::learning_start(o.mode);
@@ -153,7 +153,7 @@ TEST(LearningSim, AReflexLandscapeRowIsTheLiveRunsFirstTrial) {
   for (std::size_t w = 0; w < row.windows.size() && w < static_cast<std::size_t>(o.hold_windows);
        ++w) {
     e = std::max(e, learning::robust_deviation(o, row.windows[w]));
-    if (!body::holds(e, o.annealing.threshold_deg)) break;
+    if (!body::holds(e, o.search.threshold_deg)) break;
   }
   EXPECT_EQ(e, first.deviation_deg);
 }

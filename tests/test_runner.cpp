@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "common/errors.h"
+#include "common/random.h"
 #include "experiments/learning_experiments.h"
 #include "experiments/runner.h"
 #include "experiments/scenarios.h"
@@ -36,13 +37,13 @@ const robot::Morphology& hexapod() {
 nlohmann::json fake_result(const Task& task) {
   std::mt19937_64 rng(task.seed);
   learning::LearningResult r;
-  r.trials = 1 + static_cast<int>(learning::draw_below(rng, 30));
-  r.outcome = learning::draw_unit(rng) < 0.8 ? learning::Outcome::converged
-                                             : learning::Outcome::not_converged;
+  r.trials = 1 + static_cast<int>(draw_below(rng, 30));
+  r.outcome =
+      draw_unit(rng) < 0.8 ? learning::Outcome::converged : learning::Outcome::not_converged;
   for (std::size_t leg = 0; leg < hexapod().size(); ++leg) {
-    r.periods.push_back(4 + static_cast<int>(learning::draw_below(rng, 2)));
+    r.periods.push_back(4 + static_cast<int>(draw_below(rng, 2)));
   }
-  r.final_deviation_deg = 20.0 * learning::draw_unit(rng);
+  r.final_deviation_deg = 20.0 * draw_unit(rng);
   r.initial_deviation_deg = 40.0;
   return learning::to_json(r, hexapod(),
                            robot::leg_set_from_json(hexapod(), task.params.at("disabled")));

@@ -14,7 +14,7 @@ namespace multicpg::report {
 Section beta_stage(const StageContext& ctx) {
   experiments::ExperimentSpec spec =
       ctx.experiment(robot::RobotKind::hexapod, "beta", ctx.sizes.beta_runs);
-  spec.base.annealing.max_trials = ctx.sizes.beta_max_trials;
+  spec.base.search.max_trials = ctx.sizes.beta_max_trials;
   const std::vector<double> betas =
       ctx.sizes.beta_values.empty()
           ? experiments::kBetaStudyValues

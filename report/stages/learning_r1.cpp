@@ -87,7 +87,7 @@ Section learning_r1_stage(const StageContext& ctx) {
   std::vector<TrialPoint> points;
   const Table trace = trace_table(morph, r, disabled, points);
   const FigureFiles fig8 =
-      plot_learning_trace(points, leg_names(morph), options.annealing.threshold_deg, figures);
+      plot_learning_trace(points, leg_names(morph), options.search.threshold_deg, figures);
 
   // Figs. 9 and 10: the last steps, walking with the learned periods.
   const sim::WalkRecord& rec = run.record;
@@ -136,7 +136,7 @@ Section learning_r1_stage(const StageContext& ctx) {
 
   write_file_atomic(figures / "learning-r1.json",
                     learning::to_json(r, morph, disabled).dump(2) + "\n");
-  const std::string threshold = fixed(options.annealing.threshold_deg, 0) + "°";
+  const std::string threshold = fixed(options.search.threshold_deg, 0) + "°";
   const bool detected = r.detection_step.has_value();
   const std::vector<Verdict> verdicts{
       {"R1 disabled, all periods 4: the first window deviates more than the threshold " +

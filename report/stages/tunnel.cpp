@@ -111,7 +111,7 @@ experiments::TunnelOutcome learn_and_walk(const StageContext& ctx, const sim::Si
   if (periods_alone) {
     // `tunnel --learn --steering off`, as docs/learning.md measures it.
     l.steering = learning::Steering::off;
-    l.annealing.max_trials = ctx.sizes.periods_alone_max_trials;
+    l.search.max_trials = ctx.sizes.periods_alone_max_trials;
     l.max_episodes = ctx.sizes.periods_alone_max_episodes;
   }
   spec.start = experiments::learning_start(l.mode);
