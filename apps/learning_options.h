@@ -19,6 +19,12 @@ struct LearningFlags {
   std::vector<std::string> learner_options;  // --learner-option KEY=VALUE, repeatable
 };
 
+// The names each choice of the learning options takes, for one_of (apps/flag_checks.h): the
+// modes (robust, paper), the steering (reflex, off) and the learners (learning/learners.h).
+std::vector<std::string> mode_names();
+std::vector<std::string> steering_names();
+std::vector<std::string> learner_name_list();
+
 // Adds --mode --learner --learner-option --steering --hold-windows --monitor-windows
 // --no-period-learning --beta --threshold --window --settle --max-trials --step-budget --seed, each
 // range shown in --help and checked at parse time (without --beta when `with_beta` is false: the

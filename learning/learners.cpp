@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "common/user_text.h"
+
 namespace multicpg::learning {
 
 // Each learner's file defines these two functions (learning/learner.h "To add a learner").
@@ -65,7 +67,9 @@ const Entry& entry(const std::string& name) {
   const auto it =
       std::find_if(t.begin(), t.end(), [&](const Entry& e) { return e.info.name == name; });
   if (it == t.end()) {
-    throw OptionError("name", "unknown learner '" + name + "' (" + learner_names() + ")");
+    std::vector<std::string> names;
+    for (const Entry& e : t) names.emplace_back(e.info.name);
+    throw OptionError("name", unknown_name("learner", name, names));
   }
   return *it;
 }
