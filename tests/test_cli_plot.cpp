@@ -73,4 +73,40 @@ TEST(CliPlot, BadPathIsRefusedBeforeTheRun) {
   fs::remove_all(dir);
 }
 
+// An output path that is a symbolic link is written through: the file it names is replaced,
+// the link stays (docs/cli.md "Exit codes and signals").
+TEST(CliPlot, OutputsThroughASymbolicLinkReplaceTheFileItNames) {
+  const std::string dir = make_temp_dir("plot-link-");
+  fs::create_directory(dir + "/real");
+  for (const char* name : {"walk.png", "walk.html", "walk.csv"}) {
+    fs::create_symlink(dir + "/real/" + name, dir + "/" + name);  // dangling until written
+  }
+  const auto r = run_cli("walk --disable R1 --steps 100 --plot " + dir + "/walk.png --replay " +
+                         dir + "/walk.html --csv " + dir + "/walk.csv");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"walk.png", "walk.html", "walk.csv"}) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(dir + "/" + name)));
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir + "/real/" + name)));
+  }
+  expect_picture(fs::path(dir) / "real" / "walk.png", 850);
+  fs::remove_all(dir);
+}
+
+// docs/replay.md: a replay's name ends in .html (not .htm), and its page's title is the command
+// with the file's name, not the folders it was typed with.
+TEST(CliPlot, ReplayNameAndTitle) {
+  const std::string dir = make_temp_dir("replay-title-");
+  expect_bad_input("walk --steps 10 --replay " + dir + "/r.htm", "--replay");
+  const auto r = run_cli("walk --disable R1 --steps 20 --replay " + dir + "/walk.html");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string page = read_file(dir + "/walk.html");
+  const std::size_t open = page.find("<title>");
+  ASSERT_NE(open, std::string::npos);
+  const std::string title = page.substr(open, page.find("</title>") - open);
+  EXPECT_NE(title.find("--replay walk.html"), std::string::npos) << title;
+  EXPECT_EQ(title.find(dir), std::string::npos) << title;
+  fs::remove_all(dir);
+}
+
 }  // namespace
