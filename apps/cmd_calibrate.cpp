@@ -163,9 +163,12 @@ void register_calibrate(CLI::App& app) {
       "search the body parameters for the body that fails like the real robot (paper §5 "
       "Table 1; resumable; docs/fidelity.md)");
   cmd->add_option("--robot", o->robot, "the robot (Table 1 is the hexapod's)")
+      ->check(one_of(robot::kRobotKindNames.names(), "robot"))
       ->capture_default_str();
   cmd->add_option("--target", o->target,
                   "what to fit: table1 (paper §5 Table 1, before learning: 42°, 21°, 23° right)")
+      ->check(one_of({std::string(experiments::to_string(experiments::CalibrationTarget::table1))},
+                     "calibration target"))
       ->capture_default_str();
   cmd->add_option("--out", o->out,
                   "directory for the candidates, CSV, JSON, summary and figure (resumes)")

@@ -73,7 +73,10 @@ void register_emulate(CLI::App& app) {
       "simulated robot with what it receives (docs/hardware.md)");
   cmd->add_option("--hardware", o->hardware, "the hardware file to emulate")->required();
   cmd->add_option("--protocol", o->protocol,
-                  "amosii or dynamixel: must be the file's (a check, not a choice)");
+                  "amosii or dynamixel: must be the file's (a check, not a choice)")
+      ->check(one_of({std::string(hw::to_string(hw::Protocol::amosii)),
+                      std::string(hw::to_string(hw::Protocol::dynamixel))},
+                     "protocol"));
   add_robot_flag(*cmd, o->run);
   cmd->add_option("--inject", o->injections,
                   "a fault from command frame STEP on, repeatable: drop=P@STEP, corrupt=P@STEP "

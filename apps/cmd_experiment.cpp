@@ -90,6 +90,7 @@ void register_experiment(CLI::App& app) {
   t->add_option("--robot", table->robot,
                 "hexapod (24 scenarios), quadruped (4) or a robot file FILE.toml (its layout's "
                 "one- and two-leg losses; docs/robots.md)")
+      ->check(robot_name())
       ->capture_default_str();
   add_common(*t, *table, experiments::kScenarioRuns, true);
   t->callback([table] {

@@ -74,7 +74,9 @@ void run_gait(const GaitOptions& o) {
 void register_gait(CLI::App& app) {
   auto opts = std::make_shared<GaitOptions>();
   CLI::App* cmd = app.add_subcommand("gait", "print the gait diagram of one period (paper Fig. 2)");
-  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")
+      ->check(one_of(robot::kRobotKindNames.names(), "robot"))
+      ->capture_default_str();
   cmd->add_option("--period", opts->period, "CPG period: 1 (stop), 4, 5, 6, 8 or 9")
       ->capture_default_str();
   cmd->add_option("--steps", opts->steps, "steps to show")

@@ -8,6 +8,7 @@
 
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
+#include "apps/learning_options.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -153,6 +154,7 @@ void register_landscape(CLI::App& app) {
       "(resumable)");
   cmd->add_option("--robot", o->robot,
                   "hexapod, quadruped, octopod or a robot file FILE.toml (docs/robots.md)")
+      ->check(robot_name())
       ->capture_default_str();
   cmd->add_option("--disable", o->disable, "legs that fail, e.g. R1 or R1,L2");
   cmd->add_flag("--every-loss", o->every_loss,
@@ -179,6 +181,7 @@ void register_landscape(CLI::App& app) {
          "off: periods alone, every window walked; reflex: as the default robust run walks, each "
          "combination a first trial with the steering reflex, until its first window over the "
          "threshold (docs/learning.md \"The landscape dataset\")")
+      ->check(one_of(steering_names(), "steering"))
       ->default_str(std::string(learning::to_string(o->steering)));
   cmd->add_option("--learned", o->learned,
                   "JSON array of learned combinations ({leg: period} objects) to mark");

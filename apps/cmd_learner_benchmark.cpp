@@ -160,6 +160,7 @@ void register_learner_benchmark(CLI::App& app) {
                   "NAME.json (default: the repository's data/landscapes/hexapod)");
   cmd->add_option("--learners", o->learners, "learners to replay, e.g. annealing,bayes")
       ->delimiter(',')
+      ->check(one_of(learner_name_list(), "learner"))
       ->capture_default_str();
   cmd->add_option("--learner-option", o->learner_options,
                   "LEARNER.KEY=VALUE, one of a learner's options (repeatable), e.g. bayes.kappa=2");
@@ -184,11 +185,14 @@ void register_learner_benchmark(CLI::App& app) {
   cmd->add_option("--mode", o->mode,
                   "how a trial is measured: robust (worst of yaw and path over up to "
                   "--hold-windows windows) or paper (one window's yaw)")
+      ->check(one_of(mode_names(), "mode"))
       ->capture_default_str();
   cmd->add_option_function<std::string>(
-      "--steering", [o](const std::string& text) { o->steering = learning::parse_steering(text); },
-      "which of the repository's hexapod datasets: reflex (walked as the default robust run "
-      "walks, the default in robust mode) or off (periods alone; paper mode's)");
+         "--steering",
+         [o](const std::string& text) { o->steering = learning::parse_steering(text); },
+         "which of the repository's hexapod datasets: reflex (walked as the default robust run "
+         "walks, the default in robust mode) or off (periods alone; paper mode's)")
+      ->check(one_of(steering_names(), "steering"));
   cmd->add_option("--hold-windows", o->hold_windows, "robust mode: windows a trial must hold")
       ->check(in(learning::kHoldWindowsLimits))
       ->capture_default_str();
@@ -197,7 +201,10 @@ void register_learner_benchmark(CLI::App& app) {
                   "trial noise) or walked (in the order the landscape walked them, as the "
                   "simulation does); default: drawn, walked for a dataset walked with the "
                   "reflex (it holds each combination's windows only up to the first over the "
-                  "threshold)");
+                  "threshold)")
+      ->check(one_of({std::string(learning::to_string(learning::WindowOrder::drawn)),
+                      std::string(learning::to_string(learning::WindowOrder::walked))},
+                     "window order"));
   cmd->add_option("--jobs", o->jobs, "threads (default: every core)")
       ->check(in(experiments::kJobsLimits));
   cmd->add_option(

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "apps/commands.h"
+#include "apps/flag_checks.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
 #include "robot/body_json.h"
@@ -170,7 +171,9 @@ void register_model(CLI::App& app) {
   auto opts = std::make_shared<ModelOptions>();
   CLI::App* cmd = app.add_subcommand(
       "model", "print a robot's MuJoCo model (MJCF), or with --list the body models");
-  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")->capture_default_str();
+  cmd->add_option("--robot", opts->robot, "hexapod, quadruped or octopod")
+      ->check(one_of(robot::kRobotKindNames.names(), "robot"))
+      ->capture_default_str();
   cmd->add_flag("--tunnel", opts->tunnel, "add the 3.0 m x 1.2 m corridor of paper §5");
   cmd->add_flag("--list", opts->list,
                 "list the body models (--model) with every parameter's value and source");

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "common/limits.h"
 
@@ -46,6 +47,15 @@ inline CLI::Validator seed_value() {
       },
       "in " + kSeedLimits.text());
 }
+
+// A name from `names` (an enum's, a registry's), checked at parse time: "--mode: unknown mode
+// 'Paper' (did you mean paper?)", or the names when none is near ("(paper or robust)").
+// `what` names the kind of value ("mode"). No description: the flag's help lists the names.
+CLI::Validator one_of(std::vector<std::string> names, std::string what);
+
+// --robot: a built-in robot's name (did you mean, as one_of) or a robot file (FILE.toml,
+// docs/robots.md).
+CLI::Validator robot_name();
 
 // A path or name that is not the empty string. No description: it holds for every flag, so
 // --help would only repeat it after each one.

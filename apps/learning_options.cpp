@@ -10,6 +10,22 @@
 
 namespace multicpg::apps {
 
+std::vector<std::string> mode_names() {
+  return {std::string(learning::to_string(learning::Mode::robust)),
+          std::string(learning::to_string(learning::Mode::paper))};
+}
+
+std::vector<std::string> steering_names() {
+  return {std::string(learning::to_string(learning::Steering::reflex)),
+          std::string(learning::to_string(learning::Steering::off))};
+}
+
+std::vector<std::string> learner_name_list() {
+  std::vector<std::string> names;
+  for (const learning::LearnerInfo& l : learning::learner_list()) names.emplace_back(l.name);
+  return names;
+}
+
 void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
   learning::CompensationOptions& o = f.options;
   o.seed = 1;
@@ -18,10 +34,12 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
          "--mode", [&o](const std::string& text) { o.mode = learning::parse_mode(text); },
          "robust (yaw and path angle, several windows to accept, monitoring, steering) "
          "or paper (paper §3 exactly: one window, yaw only)")
+      ->check(one_of(mode_names(), "mode"))
       ->default_str(std::string(learning::to_string(o.mode)));
   cmd.add_option("--learner", o.learner.name,
                  "which learner searches: " + learning::learner_names() +
                      " (docs/learning.md \"Learners\")")
+      ->check(one_of(learner_name_list(), "learner"))
       ->capture_default_str();
   cmd.add_option("--learner-option", f.learner_options,
                  "KEY=VALUE, one of the learner's options (repeatable; VALUE is read as JSON "
@@ -33,6 +51,7 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
            f.robust_only = true;
          },
          "robust mode: reflex (orientation reflex on the VRN steering inputs) or off")
+      ->check(one_of(steering_names(), "steering"))
       ->default_str(std::string(learning::to_string(o.steering)));
   cmd.add_option("--hold-windows", o.hold_windows,
                  "robust mode: consecutive windows a combination must hold")

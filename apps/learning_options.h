@@ -21,6 +21,12 @@ struct LearningFlags {
   std::optional<double> beta;  // --beta: the annealing's option beta (learning/learners.h)
 };
 
+// The names each choice of the learning options takes, for one_of (apps/flag_checks.h): the
+// modes (robust, paper), the steering (reflex, off) and the learners (learning/learners.h).
+std::vector<std::string> mode_names();
+std::vector<std::string> steering_names();
+std::vector<std::string> learner_name_list();
+
 // Adds --mode --learner --learner-option --steering --hold-windows --monitor-windows
 // --no-period-learning --beta --threshold --window --settle --max-trials --max-episodes
 // --step-budget --seed, each

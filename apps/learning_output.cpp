@@ -141,7 +141,13 @@ void LearningTable::event(const body::Event& e) {
     case body::EventKind::trial_end: {
       ++trials_;
       std::ostringstream decision;
-      decision << (e.accepted ? "kept" : "rejected");
+      // "kept" is the annealing's: the search moves on from this combination (E_ref), a worse one
+      // with probability P (paper §3). The other learners answer with their best so far.
+      if (spec_.learning->learner.name == learning::kDefaultLearner) {
+        decision << (e.accepted ? "kept" : "rejected");
+      } else {
+        decision << (e.accepted ? "new best" : "not better");
+      }
       // The annealing's acceptance probability of a worse combination (paper §3).
       const double p = e.details.value("acceptance_probability", 1.0);
       if (p < 1.0) decision << " (P = " << std::setprecision(3) << std::scientific << p << ")";

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 #include <iterator>
+#include <new>
 #include <optional>
 #include <set>
 #include <string>
@@ -194,6 +195,10 @@ experiments::Ending run(int argc, char** argv) {
     return {e.code(), ""};  // the failing process reports it
   } catch (const Interrupted& e) {
     return stopped(e);
+  } catch (const std::bad_alloc&) {
+    // An address-space limit (ulimit -v) or a full machine: say so, not std::bad_alloc.
+    if (interrupt_signal() != 0) return stopped(Interrupted(interrupt_signal()));
+    return failed(1, "out of memory: ask for fewer --jobs or a smaller run");
   } catch (const std::exception& e) {
     // A failure a signal caused (a child process killed by the same Ctrl-C) is the signal's.
     if (interrupt_signal() != 0) return stopped(Interrupted(interrupt_signal()));

@@ -1,6 +1,7 @@
-// `--plot FILE.png` of walk, learn and tunnel: the run recorded as it goes (its trunk path and its
-// feet's contact over the last steps) and drawn on the spot as one picture, with the tunnel and
-// the learning trace where the run has them (report/figures.h, RunPicture).
+// `--plot FILE.png` of walk, learn and tunnel: the run recorded as it goes (its trunk path, the
+// body's reach, its feet's contact over the last steps, where faults, detections and learned gaits
+// came) and drawn on the spot as one picture, with the tunnel and the learning trace where the
+// run has them (report/figures.h, RunPicture).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -25,14 +26,33 @@ class PlotRecorder final : public sim::Observer {
  public:
   void on_start(const sim::SimModel& model, const sim::SimState& state) override;
   void on_step(const sim::SimModel& model, const sim::SimState& state) override;
+  // Marks where a fault came, where the deviation was detected and where the gait an episode
+  // ended with started (its trial's start; where it was set, when set after the episode).
+  void on_event(const sim::SimModel& model, const sim::SimState& state,
+                const body::Event& event) override;
   report::RunPicture& picture() { return picture_; }
-  std::deque<std::vector<bool>>& contact() { return contact_; }
+  const report::RunPicture& picture() const { return picture_; }
+  const std::deque<std::vector<bool>>& contact() const { return contact_; }
+  // The body's lateral reach at each path point (sim/robot_width.h).
+  const std::vector<report::LateralSpan>& span() const { return span_; }
   long steps() const { return steps_; }
+  // Whether a learning episode ended, and whether the run walked on after the last one.
+  bool learned() const { return last_episode_end_.has_value(); }
+  bool walked_after_learning() const {
+    return last_episode_end_ && *last_episode_end_ + 1 < picture_.path.size();
+  }
 
  private:
+  std::size_t here() const { return picture_.path.empty() ? 0 : picture_.path.size() - 1; }
+
   report::RunPicture picture_;
   std::deque<std::vector<bool>> contact_;  // the last steps' contact, [step][leg]
-  long steps_ = 0;                         // rows recorded
+  std::vector<report::LateralSpan> span_;
+  long steps_ = 0;  // rows recorded
+  // The episode's last trial: where it started and the combination it set.
+  std::size_t trial_start_ = 0;
+  std::vector<int> trial_periods_;
+  std::optional<std::size_t> last_episode_end_;  // path index of the last episode's end
 };
 
 class PlotOutput {
@@ -46,12 +66,16 @@ class PlotOutput {
   // The learning the run did: trial 0 (the detection window, all periods 4) and every trial,
   // numbered across episodes.
   void learning(const learning::LearningResult& result, double threshold_deg);
-  // Draws the picture (when --plot named a file), titled with the command line.
+  // The picture as write() draws it (only with --plot): the run so far, titled with the command
+  // line, the body's reach with the tunnel, a subtitle when the run ended with its last trial.
+  report::RunPicture picture() const;
+  // Draws the picture (when --plot named a file).
   void write();
 
  private:
   std::string path_;
   std::optional<PlotRecorder> recorder_;
+  bool learned_ = false;  // learning() was told a result
 };
 
 }  // namespace multicpg::apps

@@ -2,15 +2,38 @@
 
 #include <mujoco/mujoco.h>
 
+#include <filesystem>
+
 #include "common/errors.h"
 #include "common/provenance.h"
 #include "report/replay/page.h"
 
 namespace multicpg::apps {
+namespace {
+
+// `word` with an absolute path ("/home/me/runs/walk.html", "--out=/tmp/x") cut to the file's
+// name: a page or picture shared with others does not carry the folders of who made it.
+std::string without_folders(const std::string& word) {
+  const std::size_t eq = word.find('=');
+  const std::size_t start = word.rfind("--", 0) == 0 && eq != std::string::npos ? eq + 1 : 0;
+  if (word.compare(start, 1, "/") != 0) return word;
+  return word.substr(0, start) + std::filesystem::path(word.substr(start)).filename().string();
+}
+
+}  // namespace
+
 std::string command_title() {
   const std::string line = provenance(mj_versionString()).at("command_line").get<std::string>();
-  const std::size_t space = line.find(' ');
-  return "multicpg" + (space == std::string::npos ? std::string() : line.substr(space));
+  std::string title = "multicpg";
+  std::size_t space = line.find(' ');
+  while (space != std::string::npos) {
+    const std::size_t next = line.find(' ', space + 1);
+    title +=
+        ' ' + without_folders(line.substr(
+                  space + 1, next == std::string::npos ? std::string::npos : next - space - 1));
+    space = next;
+  }
+  return title;
 }
 
 void add_replay_flag(CLI::App& cmd, std::string& path) {

@@ -11,7 +11,7 @@
 namespace multicpg::apps {
 
 // "multicpg learn --disable R1 ...": the command line with the program's name as users type it
-// (the replay's and the --plot picture's title).
+// (the replay's and the --plot picture's title), an absolute path cut to its file's name.
 std::string command_title();
 
 // Adds --replay, bound to `path`.

@@ -53,6 +53,7 @@ std::string fault_flags(const RunFlags& f) {
 void add_robot_flag(CLI::App& cmd, RunFlags& f) {
   cmd.add_option("--robot", f.robot,
                  "hexapod, quadruped, octopod or a robot file FILE.toml (docs/robots.md)")
+      ->check(robot_name())
       ->capture_default_str();
 }
 

@@ -135,19 +135,6 @@ CLI::Validator terrain_value() {
       "TERRAIN");
 }
 
-CLI::Validator model_name() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        try {
-          robot::parse_body_model(text);
-        } catch (const BadInput& e) {
-          return e.what();
-        }
-        return {};
-      },
-      "MODEL");
-}
-
 }  // namespace
 
 std::string sim_flag(const std::string& key) {
@@ -200,7 +187,7 @@ void add_body_flags(CLI::App& cmd, BodyFlags& body) {
   cmd.add_option("--model", body.model,
                  "body model: " + models +
                      " (multicpg model --list shows their values); the Body flags override it")
-      ->check(model_name())
+      ->check(one_of(robot::kBodyModelNames.names(), "body model"))
       ->capture_default_str();
   CLI::Option_group* group = cmd.add_option_group(
       "Body", "physical parameters, each over the --model's value (docs/robots.md)");

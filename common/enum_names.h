@@ -8,6 +8,7 @@
 //   kJointNames.name(Joint::CTr)  -> "CTr"
 //   kJointNames.find("FTi")       -> Joint::FTi (none for an unknown name)
 //   kJointNames.list(" or ")      -> "TC, CTr or FTi"
+//   kJointNames.names()           -> {"TC", "CTr", "FTi"}
 #pragma once
 
 #include <array>
@@ -16,6 +17,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace multicpg {
 
@@ -50,6 +52,14 @@ class EnumNames {
       if (i > 0) out += i + 1 == N ? last : ", ";
       out += entries_[i].second;
     }
+    return out;
+  }
+
+  // Every name in the table's order (for closest_name and unknown_name, common/user_text.h:
+  // the "did you mean" of a mistyped name, case slips included).
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const Entry& e : entries_) out.emplace_back(e.second);
     return out;
   }
 

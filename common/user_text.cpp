@@ -32,6 +32,15 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return d[a.size()][b.size()];
 }
 
+// `text` with A-Z as a-z: a case slip ("Paper", "--Mode") costs no edit.
+std::string lower(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(), [](char c) {
+    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+  });
+  return out;
+}
+
 }  // namespace
 
 std::string printable(std::string_view text) {
@@ -65,14 +74,29 @@ std::optional<std::string> closest_name(std::string_view typed,
                                         std::size_t min_edits) {
   std::optional<std::string> best;
   std::size_t best_distance = std::max(min_edits, typed.size() / kTypoFraction) + 1;
+  const std::string lower_typed = lower(typed);
   for (const std::string& name : known) {
-    const std::size_t d = edit_distance(typed, name);
+    const std::size_t d = edit_distance(lower_typed, lower(name));
     if (d < best_distance) {
       best = name;
       best_distance = d;
     }
   }
   return best;
+}
+
+std::string unknown_name(std::string_view what, std::string_view typed,
+                         const std::vector<std::string>& known) {
+  const std::string head = "unknown " + std::string(what) + " '" + std::string(typed) + "'";
+  if (const std::optional<std::string> near = closest_name(typed, known)) {
+    return head + " (did you mean " + *near + "?)";
+  }
+  std::string names;
+  for (std::size_t i = 0; i < known.size(); ++i) {
+    if (i > 0) names += i + 1 == known.size() ? " or " : ", ";
+    names += known[i];
+  }
+  return head + " (" + names + ")";
 }
 
 }  // namespace multicpg

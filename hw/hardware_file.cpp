@@ -11,6 +11,7 @@
 
 #include "common/checksum.h"
 #include "common/errors.h"
+#include "common/user_text.h"
 #include "hw/amosii.h"
 #include "hw/dynamixel.h"
 #include "hw/serial_port.h"
@@ -361,7 +362,7 @@ std::string_view to_string(Protocol protocol) {
 Protocol parse_protocol(std::string_view text) {
   if (text == "amosii") return Protocol::amosii;
   if (text == "dynamixel") return Protocol::dynamixel;
-  throw BadInput("unknown protocol '" + std::string(text) + "' (amosii or dynamixel)");
+  throw BadInput(unknown_name("protocol", text, {"amosii", "dynamixel"}));
 }
 
 std::string_view to_string(StopAction action) {

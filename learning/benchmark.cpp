@@ -10,6 +10,7 @@
 #include "common/enum_names.h"
 #include "common/errors.h"
 #include "common/random.h"
+#include "common/user_text.h"
 
 namespace multicpg::learning {
 namespace {
@@ -43,8 +44,7 @@ std::string_view to_string(WindowOrder order) {
 
 WindowOrder parse_window_order(std::string_view text) {
   if (const std::optional<WindowOrder> order = kWindowOrderNames.find(text)) return *order;
-  throw BadInput("unknown window order '" + std::string(text) + "' (" +
-                 kWindowOrderNames.list(" or ") + ")");
+  throw BadInput(unknown_name("window order", text, kWindowOrderNames.names()));
 }
 
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,

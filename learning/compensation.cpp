@@ -11,6 +11,7 @@
 #include "common/angles.h"
 #include "common/errors.h"
 #include "common/limits.h"
+#include "common/user_text.h"
 #include "learning/course_walk.h"
 
 namespace multicpg::learning {
@@ -105,13 +106,13 @@ std::string_view to_string(Steering steering) {
 Mode parse_mode(std::string_view text) {
   if (text == "paper") return Mode::paper;
   if (text == "robust") return Mode::robust;
-  throw BadInput("unknown mode '" + std::string(text) + "' (paper or robust)");
+  throw BadInput(unknown_name("mode", text, {"paper", "robust"}));
 }
 
 Steering parse_steering(std::string_view text) {
   if (text == "off") return Steering::off;
   if (text == "reflex") return Steering::reflex;
-  throw BadInput("unknown steering '" + std::string(text) + "' (off or reflex)");
+  throw BadInput(unknown_name("steering", text, {"off", "reflex"}));
 }
 
 void validate(const CompensationOptions& options) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "common/user_text.h"
 #include "learning/annealing.h"
 
 namespace multicpg::learning {
@@ -67,7 +68,9 @@ const Entry& entry(const std::string& name) {
   const auto it =
       std::find_if(t.begin(), t.end(), [&](const Entry& e) { return e.info.name == name; });
   if (it == t.end()) {
-    throw OptionError("name", "unknown learner '" + name + "' (" + learner_names() + ")");
+    std::vector<std::string> names;
+    for (const Entry& e : t) names.emplace_back(e.info.name);
+    throw OptionError("name", unknown_name("learner", name, names));
   }
   return *it;
 }

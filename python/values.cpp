@@ -1,10 +1,49 @@
 #include "python/values.h"
 
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "python/args.h"
 
 namespace multicpg::python {
 
 using Json = nlohmann::json;
+
+namespace {
+
+// A leg's place in morphology order (robot/morphology.cpp: the right legs front to back, then the
+// left), from its name "R1".."Rn", "L1".."Ln"; none for any other key.
+std::optional<std::pair<int, long>> leg_place(const std::string& key) {
+  if (key.size() < 2 || (key[0] != 'R' && key[0] != 'L') || key[1] == '0') return std::nullopt;
+  long number = 0;
+  for (std::size_t i = 1; i < key.size(); ++i) {
+    if (key[i] < '0' || key[i] > '9' || i > 3) return std::nullopt;
+    number = number * 10 + (key[i] - '0');
+  }
+  return std::pair{key[0] == 'R' ? 0 : 1, number};
+}
+
+// An object's keys in the order its dict shows them: JSON objects keep their keys sorted (L1 before
+// R1), so an object of legs alone is put back in leg order; any other keeps the sorted order.
+std::vector<std::string> key_order(const Json& object) {
+  std::vector<std::string> keys;
+  bool legs = !object.empty();
+  for (const auto& [key, value] : object.items()) {
+    keys.push_back(key);
+    legs = legs && leg_place(key).has_value();
+  }
+  if (legs) {
+    std::sort(keys.begin(), keys.end(), [](const std::string& a, const std::string& b) {
+      return *leg_place(a) < *leg_place(b);
+    });
+  }
+  return keys;
+}
+
+}  // namespace
 
 py::object to_python(const Json& j) {
   switch (j.type()) {
@@ -25,7 +64,7 @@ py::object to_python(const Json& j) {
     }
     case Json::value_t::object: {
       py::dict out;
-      for (const auto& [key, value] : j.items()) out[py::str(key)] = to_python(value);
+      for (const std::string& key : key_order(j)) out[py::str(key)] = to_python(j.at(key));
       return out;
     }
     default:

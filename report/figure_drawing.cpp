@@ -44,7 +44,10 @@ fs::path scripts_dir() {
 
 void run_gnuplot(const fs::path& script, const std::string& terminal, const Params& params,
                  const fs::path& out) {
-  const std::string tmp = temp_name(out);
+  // A symlink is written through (the file it names replaced, the link kept), as every output
+  // file is (common/atomic_file.h).
+  const fs::path target = follow_symlinks(out);
+  const std::string tmp = temp_name(target);
   const std::string preamble = terminal + "; set output " + gp_string(tmp) + "; " + params.code();
   const ProcessResult result = run_process({kGnuplot, "-e", preamble, script.string()});
   std::error_code ec;
@@ -54,11 +57,11 @@ void run_gnuplot(const fs::path& script, const std::string& terminal, const Para
                          (result.exit_code == 0 ? "wrote no picture (" + tool_error(result) + ")"
                                                 : tool_error(result)));
   }
-  fs::rename(tmp, out, ec);
-  if (ec) {
-    const std::string why = ec.message();
+  try {
+    sync_and_rename(tmp, target);
+  } catch (const RuntimeFailure&) {
     fs::remove(tmp, ec);
-    throw RuntimeFailure("cannot move '" + tmp + "' into place: " + why);
+    throw;
   }
 }
 

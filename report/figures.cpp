@@ -7,6 +7,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "common/user_text.h"
 #include "report/figure_drawing.h"
 
 namespace multicpg::report {
@@ -77,12 +78,9 @@ const FigureInfo& figure_by_name(std::string_view name) {
   for (const FigureInfo& f : kFigures) {
     if (f.name == name) return f;
   }
-  std::string known;
-  for (const FigureInfo& f : kFigures) {
-    if (!known.empty()) known += ", ";
-    known += f.name;
-  }
-  throw BadInput("unknown figure '" + std::string(name) + "' (known: " + known + ")");
+  std::vector<std::string> known;
+  for (const FigureInfo& f : kFigures) known.emplace_back(f.name);
+  throw BadInput(unknown_name("figure", name, known));
 }
 
 FigureFiles plot_gait_diagrams(const std::vector<GaitPanel>& panels,

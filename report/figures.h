@@ -187,19 +187,51 @@ FigureFiles plot_calibration(const CalibrationMap& map, const std::filesystem::p
 // trunk's path seen from above (with the tunnel's walls and its axis, the course the robot should
 // hold, where there is a tunnel), the learning trace when the run learned (Fig. 8's form), and a
 // gait strip: the feet's contact over the run's last steps (blue = stance, Fig. 2's colours).
+// What happened where on the path: a fault came, the deviation was detected (learning starts),
+// the learned gait (the combination an episode ended with) starts.
+enum class RunMarkKind { fault, detection, learned };
+struct RunMark {
+  RunMarkKind kind = RunMarkKind::fault;
+  std::size_t at = 0;  // index into RunPicture::path
+  std::string label;   // e.g. "R1 fails", "detected 37.9°"
+};
+// The body's lateral reach at one path point (world y, m): where the robot's outermost parts are,
+// so that a path ending short of a wall still shows the body touching it.
+struct LateralSpan {
+  double low;
+  double high;
+};
 struct RunPicture {
-  std::string title;  // e.g. the command line
+  std::string title;     // e.g. the command line
+  std::string subtitle;  // a second line under the title; empty: none
   std::vector<Point2> path;
+  std::vector<LateralSpan> span;  // empty, or one per path point: the band drawn around the path
+  std::vector<RunMark> marks;
   std::vector<std::vector<Point2>> walls;
   std::vector<Point2> course;
   std::vector<TrialPoint> trials;  // empty: no learning panel; `trial` is the x position
   double threshold_deg = 0.0;      // the learning panel's threshold line
+  // Written in the learning panel instead of a trace when no trial was made (trials holds only
+  // trial 0, the detection window); empty: a generic sentence.
+  std::string no_trial_note;
   std::vector<std::string> legs;
   std::vector<std::vector<bool>> contact;  // [step][leg], true = the foot touches the ground
   long first_contact_step = 0;             // the run's step of contact[0]
 };
 // Throws BadInput (one line, naming the path) unless `png` ends in .png and can be created.
 void check_run_picture_path(const std::filesystem::path& png);
+// The data gnuplot reads for a run picture: CSV texts and the script's variables that carry
+// text. plot_run_picture writes these to a temporary folder; tests read them here.
+struct RunPictureData {
+  std::string path;   // series,x_m,y_m,y_low_m,y_high_m (series: path | wall | course)
+  std::string marks;  // kind,label,x_m,y_m,step (kind: fault | detection | learned)
+  std::string trace;  // trial,deviation_deg,accepted,reference_deg
+  std::string gait;   // leg,row,stance_start_step,stance_end_step
+  std::string subtitle;
+  std::string trace_note;  // non-empty: the learning panel is this text alone
+};
+// Throws BadInput as plot_run_picture for unusable data.
+RunPictureData run_picture_data(const RunPicture& picture);
 // Writes the picture to `png` alone (whole or not at all); the data gnuplot reads live in a
 // temporary folder removed afterwards. Errors as the figures above.
 void plot_run_picture(const RunPicture& picture, const std::filesystem::path& png);

@@ -89,6 +89,21 @@ std::string_view to_string(Reproduced r) {
   return "";
 }
 
+std::string verdict_line(const std::vector<Section>& sections) {
+  int claims = 0;
+  int yes = 0;
+  int partly = 0;
+  for (const Section& s : sections) {
+    for (const Verdict& v : s.verdicts) {
+      ++claims;
+      yes += v.reproduced == Reproduced::yes ? 1 : 0;
+      partly += v.reproduced == Reproduced::partly ? 1 : 0;
+    }
+  }
+  return std::to_string(yes) + " of " + std::to_string(claims) + " claims reproduced" +
+         (partly > 0 ? " (" + std::to_string(partly) + " partly)" : "");
+}
+
 nlohmann::json to_json(const Section& s) {
   nlohmann::json tables = nlohmann::json::array();
   for (const Table& t : s.tables) {
@@ -150,8 +165,10 @@ std::string index_html(const std::string& title, const std::string& intro,
   std::ostringstream out;
   out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>"
       << html_escape(title) << "</title>\n"
-      << kStyle << "\n</head>\n<body>\n<h1>" << html_escape(title) << "</h1>\n<p>"
-      << html_escape(intro) << "</p>\n"
+      << kStyle << "\n</head>\n<body>\n<h1>" << html_escape(title) << "</h1>\n"
+      << "<p class=\"verdict\"><strong>" << html_escape(verdict_line(sections))
+      << "</strong> (<a href=\"#verdicts\">each claim</a>)</p>\n<p>" << html_escape(intro)
+      << "</p>\n"
       << verdict_table(sections) << "<nav>";
   for (const Section& s : sections) {
     out << "<a href=\"#" << html_escape(s.id) << "\">" << html_escape(s.title) << "</a> ";

@@ -46,6 +46,10 @@ struct Section {
   double seconds = 0.0;
 };
 
+// "N of M claims reproduced" over every section's verdicts, with how many partly ("; K partly"):
+// the report's first line and the run's last.
+std::string verdict_line(const std::vector<Section>& sections);
+
 nlohmann::json to_json(const Section& section);
 Section section_from_json(const nlohmann::json& j);
 

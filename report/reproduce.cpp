@@ -129,6 +129,7 @@ class Reproduction {
     write_file_atomic(o_.out / "index.html",
                       index_html("multicpg: the paper reproduced", intro(), sections_));
     progress("wrote " + (o_.out / "index.html").string());
+    std::cout << verdict_line(sections_) << std::endl;  // the run's verdict, as the page opens
   }
 
  private:

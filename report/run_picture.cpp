@@ -1,4 +1,5 @@
 // The picture of one run (figures.h RunPicture): path, learning trace and gait strip in one PNG.
+#include <algorithm>
 #include <cstdlib>
 #include <system_error>
 
@@ -57,29 +58,47 @@ void check_run_picture_path(const fs::path& png) {
   require_writable_file(png);
 }
 
-void plot_run_picture(const RunPicture& picture, const fs::path& png) {
+RunPictureData run_picture_data(const RunPicture& picture) {
   constexpr std::string_view name = "run picture";
-  check_run_picture_path(png);
   require(!picture.path.empty(), name, "no trunk path");
+  require(picture.span.empty() || picture.span.size() == picture.path.size(), name,
+          "need one lateral span per path point or none");
   require(picture.trials.empty() || picture.threshold_deg > 0.0, name,
           "threshold must be positive");
   require_rows(picture.contact, picture.legs, name);
-  const TempDir data;
+  RunPictureData data;
 
-  Csv path({"series", "x_m", "y_m"});
+  // y_low_m, y_high_m: the body's lateral reach around the path (NaN where not drawn).
+  Csv path({"series", "x_m", "y_m", "y_low_m", "y_high_m"});
   const std::size_t stride = (picture.path.size() + kPicturePathPoints - 1) / kPicturePathPoints;
   for (std::size_t i = 0; i < picture.path.size(); ++i) {
     if (i % stride != 0 && i + 1 != picture.path.size()) continue;
-    path.row({"path", shortest(picture.path[i].x), shortest(picture.path[i].y)});
+    const bool spans = !picture.span.empty();
+    path.row({"path", shortest(picture.path[i].x), shortest(picture.path[i].y),
+              spans ? shortest(picture.span[i].low) : "NaN",
+              spans ? shortest(picture.span[i].high) : "NaN"});
   }
   path.gap();
   const auto block = [&path](const std::string& series, const std::vector<Point2>& points) {
-    for (const Point2& p : points) path.row({series, shortest(p.x), shortest(p.y)});
+    for (const Point2& p : points) {
+      path.row({series, shortest(p.x), shortest(p.y), "NaN", "NaN"});
+    }
     path.gap();
   };
   for (const auto& wall : picture.walls) block("wall", wall);
   if (!picture.course.empty()) block("course", picture.course);
-  write_file_atomic(data.path() / "path.csv", path.text());
+  data.path = path.text();
+
+  Csv marks({"kind", "label", "x_m", "y_m", "step"});
+  for (const RunMark& m : picture.marks) {
+    require(m.at < picture.path.size(), name, "a mark lies past the path's end");
+    const char* kind = m.kind == RunMarkKind::fault       ? "fault"
+                       : m.kind == RunMarkKind::detection ? "detection"
+                                                          : "learned";
+    marks.row({kind, m.label, shortest(picture.path[m.at].x), shortest(picture.path[m.at].y),
+               std::to_string(m.at)});
+  }
+  data.marks = marks.text();
 
   Csv trace({"trial", "deviation_deg", "accepted", "reference_deg"});
   const std::vector<double> references = reference_deviations(picture.trials);
@@ -88,7 +107,12 @@ void plot_run_picture(const RunPicture& picture, const fs::path& png) {
     trace.row({std::to_string(t.trial), shortest(t.deviation_deg), t.accepted ? "1" : "0",
                shortest(references[i])});
   }
-  write_file_atomic(data.path() / "trace.csv", trace.text());
+  data.trace = trace.text();
+  // Trial 0 alone is no trace: one lone point would read as a learning run of one trial.
+  if (picture.trials.size() == 1) {
+    data.trace_note =
+        picture.no_trial_note.empty() ? "No trial: nothing was learned" : picture.no_trial_note;
+  }
 
   Csv gait({"leg", "row", "stance_start_step", "stance_end_step"});
   const long first = picture.first_contact_step;
@@ -99,18 +123,43 @@ void plot_run_picture(const RunPicture& picture, const fs::path& png) {
                 std::to_string(first + static_cast<long>(end))});
     }
   }
-  write_file_atomic(data.path() / "gait.csv", gait.text());
+  data.gait = gait.text();
+  data.subtitle = picture.subtitle;
+  return data;
+}
+
+void plot_run_picture(const RunPicture& picture, const fs::path& png) {
+  check_run_picture_path(png);
+  const RunPictureData csv = run_picture_data(picture);
+  const TempDir data;
+  write_file_atomic(data.path() / "path.csv", csv.path);
+  write_file_atomic(data.path() / "marks.csv", csv.marks);
+  write_file_atomic(data.path() / "trace.csv", csv.trace);
+  write_file_atomic(data.path() / "gait.csv", csv.gait);
 
   const fs::path dir = scripts_dir();
+  const long first = picture.first_contact_step;
+  const auto count = [&picture](RunMarkKind kind) {
+    return static_cast<double>(std::count_if(picture.marks.begin(), picture.marks.end(),
+                                             [kind](const RunMark& m) { return m.kind == kind; }));
+  };
   Params params;
   params.text("dir", (dir / "").string())
       .text("path", (data.path() / "path.csv").string())
+      .text("marks", (data.path() / "marks.csv").string())
       .text("trace", (data.path() / "trace.csv").string())
       .text("gait", (data.path() / "gait.csv").string())
       .text("title", picture.title)
+      .text("subtitle", csv.subtitle)
       .num("has_walls", picture.walls.empty() ? 0 : 1)
       .num("has_course", picture.course.empty() ? 0 : 1)
+      .num("has_span", picture.span.empty() ? 0 : 1)
+      .num("has_marks", picture.marks.empty() ? 0 : 1)
+      .num("n_fault", count(RunMarkKind::fault))
+      .num("n_detection", count(RunMarkKind::detection))
+      .num("n_learned", count(RunMarkKind::learned))
       .num("has_trace", picture.trials.empty() ? 0 : 1)
+      .text("trace_note", csv.trace_note)
       .num("threshold", picture.threshold_deg)
       .text("legs", join(picture.legs))
       .num("first_step", static_cast<double>(first))

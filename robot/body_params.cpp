@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/errors.h"
+#include "robot/leg_sets.h"
 
 namespace multicpg::robot {
 namespace {
@@ -101,7 +102,7 @@ std::vector<LegPosture> disabled_postures(const BodyParams& params, const Morpho
     const LegPostureOverride& o = params.leg_postures[i];
     std::size_t leg = 0;
     try {
-      leg = leg_index(morph, o.leg);
+      leg = parse_leg(morph, o.leg);
     } catch (const BadInput& e) {
       throw OptionError(indexed("leg", i), e.what());
     }

@@ -2,7 +2,9 @@
 #include "robot/leg_sets.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <optional>
 
 #include "common/errors.h"
 
@@ -34,6 +36,81 @@ int parse_gait_period(std::string_view text, std::string_view leg) {
   return value;
 }
 
+// Places along the body a leg's two-letter name gives.
+constexpr int kNoPlace = -1;
+constexpr int kFront = 0;
+constexpr int kMiddle = 1;
+constexpr int kHind = 2;
+constexpr int kNoSide = -1;
+
+// A letter of a leg's usual two-letter name ("RF", "LH", "FR"): its side (robot::Side's order),
+// or its place along the body (front, middle, hind, back, rear); R is right or rear.
+struct LegLetter {
+  char letter;
+  int side;
+  int place;
+};
+constexpr std::array<LegLetter, 6> kLegLetters{{{'r', static_cast<int>(Side::right), kHind},
+                                                {'l', static_cast<int>(Side::left), kNoPlace},
+                                                {'f', kNoSide, kFront},
+                                                {'m', kNoSide, kMiddle},
+                                                {'h', kNoSide, kHind},
+                                                {'b', kNoSide, kHind}}};
+
+const LegLetter* leg_letter(char c) {
+  const char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const LegLetter& l : kLegLetters) {
+    if (l.letter == lower) return &l;
+  }
+  return nullptr;
+}
+
+// "the right front leg": where `leg` is on the body (paper Fig. 1: R1 is the right front leg).
+std::string leg_place(const Morphology& morph, std::size_t leg) {
+  const Leg& l = morph.legs[leg];
+  const int last = morph.legs_per_side - 1;
+  const std::string side(kSideNames.name(l.side));
+  if (l.position == 0) return "the " + side + " front leg";
+  if (l.position == last) return "the " + side + " hind leg";
+  if (morph.legs_per_side == 3) return "the " + side + " middle leg";
+  return "the " + side + " leg number " + std::to_string(l.position + 1) + " from the front";
+}
+
+// The leg a name in another convention means: a case slip ("r1") or two letters for side and
+// place ("RF", "FR", "LH", "RR" for right rear); none when it names none.
+std::optional<std::size_t> meant_leg(const Morphology& morph, std::string_view name) {
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    const std::string& known = morph.legs[i].name;
+    if (known.size() == name.size() &&
+        std::equal(known.begin(), known.end(), name.begin(), [](char a, char b) {
+          return std::tolower(static_cast<unsigned char>(a)) ==
+                 std::tolower(static_cast<unsigned char>(b));
+        })) {
+      return i;
+    }
+  }
+  if (name.size() != 2) return std::nullopt;
+  // The side is the letter that can only be a side (L), or the first of two that both can (R).
+  const LegLetter* a = leg_letter(name[0]);
+  const LegLetter* b = leg_letter(name[1]);
+  if (a == nullptr || b == nullptr || (a->side == kNoSide && b->side == kNoSide)) {
+    return std::nullopt;
+  }
+  const bool side_first = a->side != kNoSide && (b->side == kNoSide || b->place != kNoPlace);
+  const int side = side_first ? a->side : b->side;
+  const int place = side_first ? b->place : a->place;
+  int position = kNoPlace;
+  if (place == kFront) position = 0;
+  if (place == kHind) position = morph.legs_per_side - 1;
+  if (place == kMiddle && morph.legs_per_side == 3) position = 1;
+  if (position == kNoPlace) return std::nullopt;
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    const Leg& l = morph.legs[i];
+    if (static_cast<int>(l.side) == side && l.position == position) return i;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string gait_periods_text() {
@@ -55,12 +132,26 @@ void require_gait_period(int period, std::string_view leg) {
   if (!is_gait_period(period)) throw BadInput(no_gait_message(period, leg));
 }
 
+std::size_t parse_leg(const Morphology& morph, std::string_view name) {
+  for (std::size_t i = 0; i < morph.size(); ++i) {
+    if (morph.legs[i].name == name) return i;
+  }
+  std::string names;
+  for (const Leg& leg : morph.legs) names += (names.empty() ? "" : " ") + leg.name;
+  const std::optional<std::size_t> meant = meant_leg(morph, name);
+  throw BadInput(
+      "the " + morph.name + " has no leg '" + std::string(name) + "'" +
+      (meant ? " (did you mean " + morph.legs[*meant].name + ", " + leg_place(morph, *meant) + "?)"
+             : "") +
+      "; legs: " + names + " (R right, L left, numbered from the front)");
+}
+
 LegSet parse_leg_set(const Morphology& morph, std::string_view text) {
   LegSet out;
   if (text.empty()) return out;
   for (std::string_view item : split(text, ",+")) {
     if (item.empty()) throw BadInput("empty leg name in '" + std::string(text) + "'");
-    const std::size_t leg = leg_index(morph, item);
+    const std::size_t leg = parse_leg(morph, item);
     if (std::find(out.begin(), out.end(), leg) != out.end()) {
       throw BadInput("leg " + std::string(item) + " is named twice in '" + std::string(text) + "'");
     }
@@ -88,7 +179,7 @@ std::vector<int> parse_period_map(const Morphology& morph, std::string_view text
       throw BadInput("'" + std::string(item) + "' in '" + std::string(text) +
                      "' is not LEG=PERIOD");
     }
-    const std::size_t leg = leg_index(morph, item.substr(0, eq));
+    const std::size_t leg = parse_leg(morph, item.substr(0, eq));
     if (named[leg]) {
       throw BadInput("leg " + morph.legs[leg].name + " is named twice in '" + std::string(text) +
                      "'");

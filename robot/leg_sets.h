@@ -25,6 +25,12 @@ void require_gait_period(int period, std::string_view leg = {});
 inline constexpr int kDefaultPeriod = 4;
 std::string gait_periods_text();  // "1, 4, 5, 6, 8, 9"
 
+// The index of the leg `name` ("R1"). Throws BadInput naming the legs otherwise, with the leg
+// meant when the name is a case slip or another convention's: "the hexapod has no leg 'RF' (did
+// you mean R1, the right front leg?); legs: R1 R2 R3 L1 L2 L3 (R right, L left, numbered from
+// the front)".
+std::size_t parse_leg(const Morphology& morph, std::string_view name);
+
 // Legs as sorted indices into morphology(kind).legs.
 using LegSet = std::vector<std::size_t>;
 

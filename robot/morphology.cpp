@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/errors.h"
+#include "common/user_text.h"
 
 namespace multicpg::robot {
 namespace {
@@ -50,13 +51,12 @@ std::string_view to_string(Side side) {
 
 Joint parse_joint(std::string_view name) {
   if (const std::optional<Joint> joint = kJointNames.find(name)) return *joint;
-  throw BadInput("unknown joint '" + std::string(name) + "' (" + kJointNames.list(" or ") + ")");
+  throw BadInput(unknown_name("joint", name, kJointNames.names()));
 }
 
 RobotKind parse_robot(std::string_view name) {
   if (const std::optional<RobotKind> kind = kRobotKindNames.find(name)) return *kind;
-  throw BadInput("unknown robot '" + std::string(name) + "' (expected " +
-                 kRobotKindNames.list(" or ") + ")");
+  throw BadInput(unknown_name("robot", name, kRobotKindNames.names()));
 }
 
 std::size_t leg_index(const Morphology& morph, std::string_view name) {

@@ -227,5 +227,46 @@ TEST(CliBadInput, EveryCaseIsOneLineAndExitTwo) {
   for (const BadInput& c : cases) expect_bad_input(c.args, c.must_mention);
 }
 
+// A name in another convention or with a slip of case gets the one meant, and every message
+// names the flag it came from (docs/cli.md "Exit codes and signals").
+TEST(CliBadInput, NamesGetTheOneMeantAndTheFlag) {
+  const std::vector<BadInput> cases{
+      {"learn --disable RF",
+       "--disable: the hexapod has no leg 'RF' (did you mean R1, the right "
+       "front leg?)"},
+      {"walk --disable LH", "(did you mean L3, the left hind leg?)"},
+      {"walk --disable FR", "(did you mean R1, the right front leg?)"},
+      {"walk --robot quadruped --disable RR", "(did you mean R2, the right hind leg?)"},
+      {"walk --disable lm", "(did you mean L2, the left middle leg?)"},
+      {"walk --disable r2", "(did you mean R2, the right middle leg?)"},
+      {"walk --periods RF=5", "(did you mean R1, the right front leg?)"},
+      {"learn --disable R1 --learner Prior",
+       "--learner: unknown learner 'Prior' (did you mean "
+       "prior?)"},
+      {"learn --disable R1 --mode Paper", "--mode: unknown mode 'Paper' (did you mean paper?)"},
+      {"learn --disable R1 --mode foo", "--mode: unknown mode 'foo' (robust or paper)"},
+      {"learn --disable R1 --steering Reflex",
+       "--steering: unknown steering 'Reflex' (did you "
+       "mean reflex?)"},
+      {"learner-benchmark --window-order Walked",
+       "--window-order: unknown window order 'Walked' "
+       "(did you mean walked?)"},
+      {"learner-benchmark --mode Robust", "--mode: unknown mode 'Robust' (did you mean robust?)"},
+      {"learner-benchmark --learners annealing,Bayes",
+       "--learners: unknown learner 'Bayes' (did "
+       "you mean bayes?)"},
+      {"emulate --hardware examples/hardware/amosii.toml --protocol Dynamixel",
+       "--protocol: unknown protocol 'Dynamixel' (did you mean dynamixel?)"},
+      {"emulate --hardware examples/hardware/amosii.toml --protocol can",
+       "--protocol: unknown protocol 'can' (amosii or dynamixel)"},
+      {"walk --robot Hexapod", "--robot: unknown robot 'Hexapod' (did you mean hexapod?)"},
+      {"gait --robot Quadruped", "--robot: unknown robot 'Quadruped' (did you mean quadruped?)"},
+      {"walk --model Real", "--model: unknown body model 'Real' (did you mean real?)"},
+      {"landscape --disable R1 --out /tmp/multicpg-bad-land --steering Off",
+       "--steering: unknown steering 'Off' (did you mean off?)"},
+  };
+  for (const BadInput& c : cases) expect_bad_input(c.args, c.must_mention);
+}
+
 }  // namespace
 }  // namespace multicpg::testing

@@ -365,4 +365,49 @@ TEST_F(FiguresTest, RaggedDataIsBadInput) {
   EXPECT_TRUE(fs::is_empty(dir_));
 }
 
+// A run picture's data: the marks where they happened, the body's reach around the path, and a
+// learning panel with no trial says so instead of holding one lone point.
+TEST_F(FiguresTest, RunPictureMarksEventsBandAndNoTrial) {
+  RunPicture picture;
+  picture.title = "walk";
+  picture.path = {{0.0, 0.0}, {0.5, -0.1}, {1.0, -0.3}};
+  picture.span = {{-0.2, 0.2}, {-0.3, 0.1}, {-0.6, -0.1}};
+  picture.marks = {{RunMarkKind::fault, 0, "R1 fails"},
+                   {RunMarkKind::detection, 1, "detected 38.8°"},
+                   {RunMarkKind::learned, 2, "learned gait"}};
+  picture.walls = {{{0.0, 0.6}, {3.0, 0.6}}, {{0.0, -0.6}, {3.0, -0.6}}};
+  picture.legs = {"R1", "L1"};
+  picture.contact = {{true, false}, {false, true}};
+  picture.threshold_deg = 8.0;
+  picture.trials = {{0, 3.0, true, {4, 4}}};
+  picture.subtitle = "the run ends with its last trial";
+  const RunPictureData data = run_picture_data(picture);
+  EXPECT_NE(data.path.find("series,x_m,y_m,y_low_m,y_high_m\npath,0,0,-0.2,0.2\n"),
+            std::string::npos)
+      << data.path;
+  EXPECT_NE(data.path.find("path,1,-0.3,-0.6,-0.1\n"), std::string::npos) << data.path;
+  EXPECT_NE(data.path.find("wall,0,0.6,NaN,NaN\n"), std::string::npos) << data.path;
+  EXPECT_EQ(data.marks,
+            "kind,label,x_m,y_m,step\nfault,R1 fails,0,0,0\ndetection,detected 38.8°,0.5,-0.1,1\n"
+            "learned,learned gait,1,-0.3,2\n");
+  EXPECT_EQ(data.trace_note, "No trial: nothing was learned");
+  EXPECT_EQ(data.subtitle, picture.subtitle);
+  // Drawn: gnuplot takes the marks, the band and the note.
+  plot_run_picture(picture, dir_ / "run.png");
+  EXPECT_TRUE(fs::exists(dir_ / "run.png"));
+
+  // With a trial there is a trace, and no note.
+  picture.trials.push_back({1, 2.0, true, {4, 5}});
+  EXPECT_EQ(run_picture_data(picture).trace_note, "");
+  // Without walls or a run walked, no band: NaN in its columns.
+  picture.span.clear();
+  EXPECT_NE(run_picture_data(picture).path.find("path,0,0,NaN,NaN\n"), std::string::npos);
+  // A mark past the path's end, or a band of another length, is refused.
+  picture.marks.push_back({RunMarkKind::learned, 3, "x"});
+  EXPECT_THROW(run_picture_data(picture), multicpg::BadInput);
+  picture.marks.pop_back();
+  picture.span = {{-0.2, 0.2}};
+  EXPECT_THROW(run_picture_data(picture), multicpg::BadInput);
+}
+
 }  // namespace

@@ -274,7 +274,7 @@ std::string script_safe(const std::string& text) {
 
 void check_replay_path(const std::filesystem::path& out) {
   const std::string ext = out.extension().string();
-  if (ext != ".html" && ext != ".htm") {
+  if (ext != ".html") {  // docs/replay.md: one spelling, the one the browser and the docs use
     throw BadInput("cannot write a replay to '" + out.string() +
                    "': the file type must be .html (one self-contained page)");
   }

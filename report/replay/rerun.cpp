@@ -57,6 +57,17 @@ json read_json(const fs::path& path) {
   }
 }
 
+// What `read` reads from the field `key` of the record `name`; a bad value (BadInput, e.g. an
+// unknown robot or leg) names the record and the field.
+template <class Read>
+auto field(const std::string& name, std::string_view key, Read&& read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const BadInput& e) {
+    throw BadInput(name + ": " + std::string(key) + ": " + e.what());
+  }
+}
+
 // The run's robot: the built-in layout it names, or its robot file, which must still hold the
 // robot the run walked.
 void set_robot(experiments::RunSpec& spec, const json& result, const std::string& name) {
@@ -70,7 +81,8 @@ void set_robot(experiments::RunSpec& spec, const json& result, const std::string
     spec.robot.kind = spec.robot.file->file.layout;
     return;
   }
-  spec.robot.kind = robot::parse_robot(result.at("robot").get<std::string>());
+  spec.robot.kind = field(
+      name, "robot", [&] { return robot::parse_robot(result.at("robot").get<std::string>()); });
 }
 
 // Checks the run as validate does, its errors naming the file.
@@ -135,19 +147,22 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   spec.robot.sim.control_dt = saved.at("control_dt_s").get<double>();
   spec.robot.sim.physics_dt = saved.at("physics_dt_s").get<double>();
   const robot::Morphology& morph = experiments::morphology(spec.robot);
-  spec.start.periods = robot::period_map_from_json(morph, saved.at("periods"));
+  spec.start.periods = field(
+      name, "periods", [&] { return robot::period_map_from_json(morph, saved.at("periods")); });
   spec.start.warmup = saved.at("warmup").get<long>();
   for (const json& f : saved.at("faults")) {
-    if (f.contains("fault")) {
-      // Walk records before the fault's one shape gave any other kind as its text.
-      spec.faults.push_back(body::parse_fault(
-          morph, f.at("fault").get<std::string>() + '@' + std::to_string(f.at("step").get<long>()),
-          f.at("recover").get<bool>()));
-      continue;
-    }
-    json indexed = f;  // sim/course_json.h, its legs named as walk --json names them
-    indexed["legs"] = robot::parse_leg_set(morph, f.at("legs").get<std::string>());
-    spec.faults.push_back(indexed.get<body::Fault>());
+    spec.faults.push_back(field(name, "faults", [&] {
+      if (f.contains("fault")) {
+        // Walk records before the fault's one shape gave any other kind as its text.
+        return body::parse_fault(
+            morph,
+            f.at("fault").get<std::string>() + '@' + std::to_string(f.at("step").get<long>()),
+            f.at("recover").get<bool>());
+      }
+      json indexed = f;  // sim/course_json.h, its legs named as walk --json names them
+      indexed["legs"] = robot::parse_leg_set(morph, f.at("legs").get<std::string>());
+      return indexed.get<body::Fault>();
+    }));
   }
   body::sort_timeline(spec.faults);
   check(spec, name);
@@ -204,13 +219,13 @@ RerunReplay rerun_learning(const json& saved, const std::string& name, const sim
     spec.robot.sim = sim;
     const json& recorded = saved.at("options");
     const learning::CompensationOptions& options =
-        spec.learning.emplace(learning_options(recorded));
-    if (!recorded.at("faults").empty()) {
-      spec.faults = recorded.at("faults").get<body::FaultTimeline>();
-    } else {
-      spec.faults = body::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
-                                  recorded.at("fail_step").get<long>());
-    }
+        spec.learning.emplace(field(name, "options", [&] { return learning_options(recorded); }));
+    spec.faults = field(name, "options.faults", [&] {
+      return !recorded.at("faults").empty()
+                 ? recorded.at("faults").get<body::FaultTimeline>()
+                 : body::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
+                                 recorded.at("fail_step").get<long>());
+    });
     spec.start = experiments::learning_start(options.mode);
     check(spec, name);
     const sim::SimModel model = experiments::make_model(spec.robot);

@@ -2,6 +2,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/user_text.h"
 
 namespace multicpg::report {
 
@@ -27,12 +28,12 @@ const std::vector<Stage>& reproduce_stages() {
 }
 
 const Stage& stage_by_id(std::string_view id) {
-  std::string known;
+  std::vector<std::string> known;
   for (const Stage& s : reproduce_stages()) {
     if (s.id == id) return s;
-    known += (known.empty() ? "" : ", ") + std::string(s.id);
+    known.emplace_back(s.id);
   }
-  throw BadInput("unknown reproduce stage '" + std::string(id) + "' (known: " + known + ")");
+  throw BadInput(unknown_name("reproduce stage", id, known));
 }
 
 std::filesystem::path StageContext::dir(const std::string& name) const {

@@ -81,6 +81,17 @@ Section learning_r1_stage(const StageContext& ctx);
 Section hexapod_table_stage(const StageContext& ctx);
 Section quadruped_table_stage(const StageContext& ctx);
 Section beta_stage(const StageContext& ctx);
+
+// Fig. 14's claim, "β = 0 needs the most trials", judged on the median trials of each β, runs
+// that ended without converging counted as cut at the trial cap (censored: they needed more).
+// A median that falls on a cut run is only a lower bound; two such medians cannot be ordered,
+// which makes the verdict `partly`. `text` says each β's median and how many runs were cut.
+struct BetaMostTrials {
+  Reproduced reproduced = Reproduced::no;
+  std::string text;
+};
+BetaMostTrials beta_zero_most_trials(const std::vector<experiments::GroupSummary>& rows,
+                                     int max_trials);
 Section tunnel_stage(const StageContext& ctx);
 Section landscape_stage(const StageContext& ctx);
 Section calibration_stage(const StageContext& ctx);
