@@ -6,12 +6,15 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <regex>
 #include <string>
 #include <thread>
 
+#include "learning/landscapes.h"
+#include "robot/morphology.h"
 #include "tests/cli_process.h"
 #include "tests/cli_runner.h"
 #include "tests/hw_rehearsal.h"
@@ -130,6 +133,36 @@ TEST(HardwarePorts, TheEmulatorServesRunAfterRunAndAGoneOneIsNamed) {
   EXPECT_NE(gone.err.find("the emulator that served it has ended; start it again"),
             std::string::npos)
       << gone.err;
+}
+
+TEST(HardwarePorts, APriorOfAnotherPeriodSetIsRefusedBeforeTheRobotWalks) {
+  // The repository's hexapod dataset cut to the periods 4, 5, 6, 8: a prior of another period
+  // set than the run's (4, 5, 6, 8, 9).
+  learning::LandscapeDataset d = learning::read_landscape_dataset(
+      learning::repository_dataset(robot::RobotKind::hexapod, false));
+  d.period_set = {4, 5, 6, 8};
+  for (learning::ScenarioLandscape& s : d.scenarios) {
+    std::erase_if(s.points, [](const learning::LandscapePoint& p) {
+      return std::find(p.periods.begin(), p.periods.end(), 9) != p.periods.end();
+    });
+  }
+  const std::string dir = make_temp_dir("multicpg-prior-");
+  learning::write_landscape_dataset(d, dir + "/cut");
+  Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs);
+  const CliResult refused =
+      run_cli("learn --mode paper --disable R1 --learner prior --learner-option dataset=" + dir +
+              "/cut.json --hardware " + r.file() + " --lock-step");
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_EQ(count_lines(refused.err), 1) << refused.err;
+  EXPECT_NE(refused.err.find("has the period set 4,5,6,8, this run 4,5,6,8,9"), std::string::npos)
+      << refused.err;
+  // The refused run never spoke to the robot: the emulator's one run is the next command's
+  // (its 5 steps and the stop).
+  const CliResult walk = run_cli("walk --steps 5 --hardware " + r.file() + " --lock-step");
+  EXPECT_EQ(walk.exit_code, 0) << walk.err;
+  ASSERT_TRUE(r.finish());
+  EXPECT_NE(r.out().find("run 1: served 6 control steps"), std::string::npos) << r.out();
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
