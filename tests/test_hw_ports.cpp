@@ -81,6 +81,24 @@ TEST(HardwarePorts, AnEmulatorHangingUpAtAnyStepEndsTheWalkWithTheStopLine) {
   }
 }
 
+TEST(HardwarePorts, AnEmulatorHangingUpAtTheLastStepLeavesNoStopUntold) {
+  // The port closes as the last step's answers go out: the end's stop was written before it
+  // closed (exit 0, no line), or could not be and is told as every stop is (exit 1).
+  for (const std::string example : {"amosii.toml", "dynamixel-hexapod.toml"}) {
+    for (int run = 0; run < 3; ++run) {
+      Rehearsal r(example, kTimeoutMs, {"--inject", "hangup@199"});
+      const CliResult host = run_cli("walk --steps 200 --hardware " + r.file() + " --lock-step");
+      ASSERT_TRUE(r.finish()) << example << ": the emulator hangs";
+      if (host.exit_code == 0) {
+        EXPECT_EQ(host.err, "") << example;
+      } else {
+        EXPECT_EQ(host.exit_code, 1) << example << ": " << host.err;
+        EXPECT_TRUE(std::regex_match(host.err, kStopLine)) << example << ": " << host.err;
+      }
+    }
+  }
+}
+
 TEST(HardwarePorts, AKilledEmulatorEndsTheWalkWithTheStopLine) {
   // Killed at several moments: while the walk loads, opens its ports, or walks.
   for (const int wait_ms : {0, 300, 1000, 2500, 5000}) {
