@@ -24,6 +24,7 @@ struct EmulateOptions {
   bool wire_time = false;
   std::string log;
   std::string rehearsal;
+  long runs = 0;  // 0: until interrupted
 };
 
 void run_emulate(const EmulateOptions& o) {
@@ -55,12 +56,23 @@ void run_emulate(const EmulateOptions& o) {
             << experiments::morphology(spec.robot).name << "\nbus " << emu.bus_path() << "\n";
   if (!emu.yaw_path().empty()) std::cout << "yaw " << emu.yaw_path() << "\n";
   if (!o.rehearsal.empty()) std::cout << "rehearsal file " << o.rehearsal << "\n";
-  std::cout << std::flush;
-  const emulator::EmulatorSummary s = emu.run();
-  std::cout << "served " << s.steps << " control steps and " << s.answers << " answers; refused "
-            << s.malformed << " malformed frames"
-            << (s.posture ? "; the safe posture was commanded" : "")
-            << (s.torque_off ? "; the torque was turned off" : "") << "\n";
+  std::cout << (o.runs == 1   ? "serving one run\n"
+                : o.runs == 0 ? "serving runs until interrupted (Ctrl-C)\n"
+                              : "serving " + std::to_string(o.runs) + " runs\n")
+            << std::flush;
+  // One run after another on the same ports, each from the robot's start pose
+  // (docs/hardware.md "Rehearse on the emulator").
+  for (long run = 1; o.runs == 0 || run <= o.runs; ++run) {
+    if (run > 1 && !emu.next_run()) break;
+    const emulator::EmulatorSummary s = emu.run();
+    std::cout << "run " << run << ": served " << s.steps << " control steps and " << s.answers
+              << " answers; refused " << s.malformed << " malformed frames"
+              << (s.posture ? "; the safe posture was commanded" : "")
+              << (s.torque_off ? "; the torque was turned off" : "")
+              << (s.hung_up ? "; the injected hang-up closed the ports" : "") << "\n"
+              << std::flush;
+    if (s.hung_up) break;
+  }
 }
 
 }  // namespace
@@ -82,10 +94,15 @@ void register_emulate(CLI::App& app) {
                   "a fault from command frame STEP on, repeatable: drop=P@STEP, corrupt=P@STEP "
                   "(answer bytes lost or changed with probability P), latency=MS@STEP, "
                   "silent=ID@STEP (a servo; the board: any ID), drift=DEG_PER_S@STEP, "
-                  "silent-yaw@STEP");
+                  "silent-yaw@STEP, hangup@STEP (the emulator ends as if killed), "
+                  "hangup-yaw@STEP (the yaw line's port closes)");
   cmd->add_option("--seed", o->seed, "the draws of drop and corrupt")
       ->check(seed_value())
       ->capture_default_str();
+  cmd->add_option("--runs", o->runs,
+                  "serve this many runs, one after another, then end (default: until "
+                  "interrupted)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--wire-time", o->wire_time,
                 "each frame and answer also takes its bytes' time on the wire at the file's baud");
   cmd->add_option("--log", o->log, "write what happened as JSON lines with monotonic times");

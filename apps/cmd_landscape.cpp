@@ -2,6 +2,7 @@
 // walked and measured, saved as it finishes (resumable), with its map. The ground
 // truth the learners are scored against.
 #include <algorithm>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -114,11 +115,41 @@ void report_landscape(const experiments::Landscape& landscape,
             << "\n";
 }
 
+// A landscape of one scenario keeps OUT/runs and OUT/landscape.csv, a set (--every-loss)
+// OUT/<scenario>/runs and OUT/landscapes.{csv.gz,json}: one resumed into the other's directory
+// would mix them, so it is refused before anything walks.
+void require_landscape_dir(const std::filesystem::path& out, bool set) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (set) {
+    for (const char* plain : {"runs", "landscape.csv"}) {
+      if (fs::exists(out / plain, ec)) {
+        throw BadInput("--out: '" + out.string() + "' holds a landscape of one scenario ('" +
+                       (out / plain).string() +
+                       "'); a set of every loss (--every-loss) needs a directory of its own");
+      }
+    }
+    return;
+  }
+  fs::path found;
+  if (fs::exists(out / "landscapes.json", ec)) found = out / "landscapes.json";
+  for (const fs::directory_entry& e : fs::directory_iterator(out, ec)) {
+    if (found.empty() && e.path().filename() != "runs" && fs::is_directory(e.path() / "runs", ec)) {
+      found = e.path() / "runs";
+    }
+  }
+  if (!found.empty()) {
+    throw BadInput("--out: '" + out.string() + "' holds a set of every loss (--every-loss: '" +
+                   found.string() + "'); a landscape of one scenario needs a directory of its own");
+  }
+}
+
 }  // namespace
 
 void run_landscapes_and_report(const std::vector<experiments::LandscapeSpec>& specs,
                                const std::string& out, int jobs,
                                const std::vector<learning::Periods>& learned) {
+  require_landscape_dir(out, specs.size() > 1);
   if (specs.size() == 1) {
     const experiments::Landscape landscape =
         experiments::run_landscape(specs.front(), out, jobs, /*progress=*/true, learned);

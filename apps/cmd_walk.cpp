@@ -183,9 +183,10 @@ void run_walk(const WalkOptions& o) {
   const std::unique_ptr<experiments::RunBody> body =
       experiments::open_body(spec, model, setup ? &*setup : nullptr, watchers);
   const experiments::BodyWalk walked = experiments::guarded(*body, spec, watchers.stopped, [&] {
-    return experiments::walk_body(body->body(), o.settle, o.steps, o.window);
+    experiments::BodyWalk w = experiments::walk_body(body->body(), o.settle, o.steps, o.window);
+    body->finish("the walk ended");
+    return w;
   });
-  body->finish("the walk ended");
   if (csv) csv->commit();
   replay.write();
   plot.write();

@@ -1,10 +1,13 @@
 // The emulator (emulator.h): a fake robot serving the hardware file's protocol on pseudo-terminals.
 #include "emulator/emulator.h"
 
+#include <fcntl.h>
 #include <poll.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -62,7 +65,8 @@ struct Servo {
 
 class Emulator::Impl {
  public:
-  Impl(const sim::SimModel& model, const HardwareFile& file, EmulatorSpec spec, Pty& bus, Pty& yaw)
+  Impl(const sim::SimModel& model, const HardwareFile& file, EmulatorSpec spec, Pty& bus, Pty& yaw,
+       bool append_log)
       : model_(model),
         file_(file),
         spec_(std::move(spec)),
@@ -86,7 +90,7 @@ class Emulator::Impl {
     board_.fill(amosii::kIdlePosition);
     posture_ = safe_posture_counts(file);
     if (!spec_.log.empty()) {
-      log_.open(spec_.log, std::ios::trunc);
+      log_.open(spec_.log, append_log ? std::ios::app : std::ios::trunc);
       if (!log_) {
         throw BadInput("cannot write the log '" + spec_.log.string() +
                        "': " + std::strerror(errno));
@@ -118,6 +122,19 @@ class Emulator::Impl {
         yaw_open = take(yaw_, yaw_in_, [this] { serve_yaw(); });
       }
       send_due();
+      if (hangup_yaw_ && yaw_open) {
+        log({{"event", "hangup"}, {"port", yaw_.path}, {"step", summary_.steps}});
+        close_pty(yaw_);
+        yaw_open = false;
+        summary_.hung_up = true;
+      }
+      if (hangup_) {
+        log({{"event", "hangup"}, {"port", bus_.path}, {"step", summary_.steps}});
+        close_pty(bus_);
+        close_pty(yaw_);
+        summary_.hung_up = true;
+        bus_open = false;
+      }
     }
     log({{"event", "end"},
          {"steps", summary_.steps},
@@ -236,6 +253,8 @@ class Emulator::Impl {
       if (!active_[i] && spec_.injections[i].step < summary_.steps) {
         active_[i] = true;
         if (spec_.injections[i].kind == Injection::Kind::drift) drift_from_ = state_.data->time;
+        hangup_ = hangup_ || spec_.injections[i].kind == Injection::Kind::hangup;
+        hangup_yaw_ = hangup_yaw_ || spec_.injections[i].kind == Injection::Kind::hangup_yaw;
         log({{"event", "inject"},
              {"injection", to_string(spec_.injections[i])},
              {"step", summary_.steps}});
@@ -508,6 +527,8 @@ class Emulator::Impl {
   std::mt19937_64 random_;
   std::vector<bool> active_;
   double drift_from_ = 0.0;
+  bool hangup_ = false;  // injected hang-ups, due now
+  bool hangup_yaw_ = false;
   std::map<int, Servo> servos_;
   amosii::Ports board_{};
   JointCounts posture_;
@@ -526,8 +547,43 @@ class Emulator::Impl {
 };
 
 Emulator::Emulator(const sim::SimModel& model, const HardwareFile& file, EmulatorSpec spec)
-    : bus_(open_pty()), yaw_(file.yaw.source == YawSource::line ? open_pty() : Pty{}) {
-  impl_ = std::make_unique<Impl>(model, file, std::move(spec), bus_, yaw_);
+    : model_(model),
+      file_(file),
+      spec_(std::move(spec)),
+      bus_(open_pty()),
+      yaw_(file.yaw.source == YawSource::line ? open_pty() : Pty{}) {
+  impl_ = std::make_unique<Impl>(model_, file_, spec_, bus_, yaw_, false);
+}
+
+namespace {
+
+// Holds the port open again (as open_pty did) so that the next host's bytes wait for it and its
+// hang-up ends its run, and drops what the last host left unread.
+void reopen(Pty& pty) {
+  if (pty.slave < 0) {
+    pty.slave = ::open(pty.path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (pty.slave < 0) throw RuntimeFailure("emulator: cannot open " + pty.path + " again");
+    ::ioctl(pty.slave, TIOCNXCL);  // a host killed while it held the port exclusively
+  }
+  std::array<std::uint8_t, 512> buffer{};
+  pollfd p{pty.master, POLLIN, 0};
+  while (::poll(&p, 1, 0) > 0 && (p.revents & POLLIN) != 0 &&
+         ::read(pty.master, buffer.data(), buffer.size()) > 0) {
+  }
+}
+
+}  // namespace
+
+bool Emulator::next_run() {
+  if (bus_.master < 0) return false;
+  impl_.reset();
+  reopen(bus_);
+  if (!yaw_.path.empty()) {
+    if (yaw_.master < 0) return false;
+    reopen(yaw_);
+  }
+  impl_ = std::make_unique<Impl>(model_, file_, spec_, bus_, yaw_, true);
+  return true;
 }
 
 Emulator::~Emulator() {

@@ -28,6 +28,8 @@ struct Injection {
     silent,      // servo ID `value` stops answering (Dynamixel); the board (AMOSII)
     drift,       // the yaw reads `value` deg/s more as time goes on
     silent_yaw,  // the yaw sensor stops answering (a line), or reads 0 (a board input)
+    hangup,      // the emulator closes its ports (the bus's first) and ends, as if killed
+    hangup_yaw,  // the yaw line's port closes; the bus's stays until the host hangs up
   };
   Kind kind = Kind::drop;
   double value = 0.0;
@@ -55,6 +57,7 @@ struct EmulatorSummary {
   long malformed = 0;       // host bytes or packets refused
   bool posture = false;     // the safe posture was commanded
   bool torque_off = false;  // every servo's torque was turned off
+  bool hung_up = false;     // an injected hang-up closed a port: no run can follow
 };
 
 class Emulator {
@@ -68,12 +71,19 @@ class Emulator {
 
   const std::string& bus_path() const { return bus_.path; }
   const std::string& yaw_path() const { return yaw_.path; }  // empty without a yaw line
-  // Serves until the host has opened and closed the bus port. Throws Interrupted on SIGINT or
-  // SIGTERM, RuntimeFailure if the simulated robot becomes unstable.
+  // Serves one run: until the host has opened and closed the bus port. Throws Interrupted on
+  // SIGINT or SIGTERM, RuntimeFailure if the simulated robot becomes unstable.
   EmulatorSummary run();
+  // Makes ready for the next run on the same ports: the robot back in its start pose, the
+  // servos' RAM and the injections as at the start, the log appended to. False when a hang-up
+  // closed the ports.
+  bool next_run();
 
  private:
   class Impl;
+  const sim::SimModel& model_;
+  const hw::HardwareFile& file_;
+  EmulatorSpec spec_;
   hw::Pty bus_;
   hw::Pty yaw_;
   std::unique_ptr<Impl> impl_;

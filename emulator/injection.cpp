@@ -27,6 +27,8 @@ constexpr KindName kKinds[] = {
     {Injection::Kind::silent, "silent", true, {0.0, 252.0}},
     {Injection::Kind::drift, "drift", true, {-100.0, 100.0}},
     {Injection::Kind::silent_yaw, "silent-yaw", false, {0.0, 0.0}},
+    {Injection::Kind::hangup, "hangup", false, {0.0, 0.0}},
+    {Injection::Kind::hangup_yaw, "hangup-yaw", false, {0.0, 0.0}},
 };
 
 const KindName& kind_name(Injection::Kind kind) {
@@ -41,7 +43,7 @@ const KindName& kind_name(Injection::Kind kind) {
 Injection parse_injection(std::string_view text, const HardwareFile& file) {
   const std::string usage = fmt::format(
       "'{}': an injection is KIND[=VALUE]@STEP, KIND one of drop, corrupt, latency, silent, "
-      "drift, silent-yaw",
+      "drift, silent-yaw, hangup, hangup-yaw",
       text);
   const std::size_t at = text.rfind('@');
   if (at == std::string_view::npos) throw BadInput(usage);
@@ -82,6 +84,9 @@ Injection parse_injection(std::string_view text, const HardwareFile& file) {
     if (!known) {
       throw BadInput(fmt::format("'{}': no servo of the hardware file has ID {}", text, in.value));
     }
+  }
+  if (in.kind == Injection::Kind::hangup_yaw && file.yaw.source != YawSource::line) {
+    throw BadInput("'" + std::string(text) + "': the hardware file has no yaw line");
   }
   return in;
 }

@@ -114,7 +114,14 @@ class RealBody final : public RunBody {
   nlohmann::json hardware() const override {
     return hw::hardware_json(setup_.file, setup_.pacing, body_);
   }
-  void finish(const std::string& why) override { body_.stop(why); }
+  void finish(const std::string& why) override {
+    body_.stop(why);
+    // The end's stop that could not go out (the port failed after the last step) is told as
+    // every stop is (docs/hardware.md "Safety").
+    if (body_.stopped() && !body_.stopped()->command_error.empty()) {
+      throw hw::HardwareStop(*body_.stopped());
+    }
+  }
   void stopped(const std::exception& cause) override { body_.stop(cause.what(), true); }
   bool is_hardware() const override { return true; }
   nlohmann::json stopped_record(const RunSpec& spec) const override {

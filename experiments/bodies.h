@@ -71,7 +71,8 @@ class RunBody {
   virtual std::optional<double> corridor_heading_deg() const { return std::nullopt; }
   // The hardware record (hw::hardware_json) of a real robot; null for the simulation.
   virtual nlohmann::json hardware() const { return nullptr; }
-  // A run that ended well: a real robot stops in its safe posture, naming why.
+  // A run that ended well: a real robot stops in its safe posture, naming why; throws
+  // hw::HardwareStop when that stop could not be sent (its port failed after the last step).
   virtual void finish(const std::string& /*why*/) {}
   // A run a fault or a signal ended: a real robot is stopped (if it was not yet); the record of
   // the run so far keeps what the body saw.

@@ -265,11 +265,10 @@ std::optional<std::size_t> best_combination(const Landscape& landscape) {
   return std::nullopt;
 }
 
-Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
-                        bool progress, const std::vector<learning::Periods>& learned,
-                        const std::string& progress_label) {
-  validate(spec);
-  const robot::Morphology& morph = morphology(spec.robot);
+namespace {
+
+RunnerOptions landscape_runner(const LandscapeSpec& spec, const std::filesystem::path& out,
+                               int jobs, bool progress, const std::string& progress_label) {
   RunnerOptions runner;
   runner.out_dir = out;
   runner.jobs = jobs;
@@ -277,7 +276,11 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
   runner.progress = progress;
   runner.progress_label = progress_label;
   validate(runner);
+  return runner;
+}
 
+std::vector<Task> landscape_tasks(const LandscapeSpec& spec) {
+  const robot::Morphology& morph = morphology(spec.robot);
   const std::vector<learning::Periods> combinations = landscape_combinations(spec);
   std::vector<Task> tasks;
   for (std::size_t i = 0; i < combinations.size(); ++i) {
@@ -288,6 +291,18 @@ Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& 
     task.params = {{"periods", combinations[i]}};
     tasks.push_back(std::move(task));
   }
+  return tasks;
+}
+
+}  // namespace
+
+Landscape run_landscape(const LandscapeSpec& spec, const std::filesystem::path& out, int jobs,
+                        bool progress, const std::vector<learning::Periods>& learned,
+                        const std::string& progress_label) {
+  validate(spec);
+  const robot::Morphology& morph = morphology(spec.robot);
+  const RunnerOptions runner = landscape_runner(spec, out, jobs, progress, progress_label);
+  const std::vector<Task> tasks = landscape_tasks(spec);
   const sim::SimModel model = make_model(spec.robot);  // shared, read-only
   // A reflex landscape's one start, walked by every process (it is the same for all).
   std::optional<LandscapeStart> start;
@@ -327,6 +342,12 @@ std::filesystem::path landscape_set_dataset(const std::filesystem::path& out) {
 std::vector<Landscape> run_landscape_set(const std::vector<LandscapeSpec>& specs,
                                          const std::filesystem::path& out, int jobs,
                                          bool progress) {
+  // Every scenario's saved runs checked before any resumes: a damaged one is refused first.
+  for (const LandscapeSpec& spec : specs) {
+    validate(spec);
+    check_out_dir(landscape_tasks(spec),
+                  landscape_runner(spec, landscape_set_dir(out, spec), jobs, progress, ""));
+  }
   std::vector<Landscape> landscapes;
   for (const LandscapeSpec& spec : specs) {
     landscapes.push_back(run_landscape(spec, landscape_set_dir(out, spec), jobs, progress));

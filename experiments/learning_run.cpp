@@ -51,9 +51,10 @@ LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec,
   own.record_joints = true;
   const std::unique_ptr<RunBody> body = open_body(started, model, setup, own);
   BodyLearning learned = guarded(*body, spec, watchers.stopped, [&] {
-    return learn_body(body->body(), *spec.learning, after_steps);
+    BodyLearning l = learn_body(body->body(), *spec.learning, after_steps);
+    body->finish("the learning run ended");
+    return l;
   });
-  body->finish("the learning run ended");
   run.result = std::move(learned.result);
   run.learning_end_step = learned.learning_end_step;
   run.after_windows = std::move(learned.after_windows);

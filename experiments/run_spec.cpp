@@ -41,8 +41,10 @@ void validate(const RunSpec& spec) {
     learning::validate(*spec.learning);
     learning::validate_faults(*spec.learning, spec.faults);
     within("learner", [&] {
+      // Before any walk, the detection's too (a real robot walks it).
       learning::check_learner(spec.learning->learner, spec.robot.kind,
-                              body::failing_legs(spec.faults), learning::criterion(*spec.learning));
+                              body::failing_legs(spec.faults), learning::criterion(*spec.learning),
+                              spec.learning->annealing.period_set);
     });
   });
   if (spec.faults.empty()) {

@@ -586,6 +586,22 @@ RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
   return session.end();
 }
 
+void check_out_dir(const std::vector<Task>& tasks, const RunnerOptions& options) {
+  validate(options);
+  check_keys(tasks);
+  const fs::path& out = options.out_dir;
+  if (std::optional<nlohmann::json> stored = read_sealed(out / "experiment.json")) {
+    const nlohmann::json record = experiment_record(tasks, options.arguments);
+    if (*stored != record) {
+      throw BadInput("'" + out.string() + "' holds an experiment made with other " +
+                     what_differs(*stored, record) + "; use another output directory");
+    }
+  }
+  std::error_code ec;
+  if (!fs::is_directory(out / "runs", ec)) return;
+  for (const Task& task : tasks) load_run(out, task);
+}
+
 std::optional<nlohmann::json> read_sealed(const std::filesystem::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return std::nullopt;

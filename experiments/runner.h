@@ -88,6 +88,12 @@ struct RunnerOutcome {
 RunnerOutcome run_tasks(const std::vector<Task>& tasks, const TaskFunction& fn,
                         const RunnerOptions& options);
 
+// What run_tasks would refuse of OUT, checked without writing or running anything: an
+// experiment.json of other arguments or tasks, a damaged or foreign run file (BadInput naming
+// it). For experiments run one after another (a landscape set), so that a damaged later one is
+// refused before an earlier one resumes.
+void check_out_dir(const std::vector<Task>& tasks, const RunnerOptions& options);
+
 // OUT/experiment.json and each run file carry "checksum": checksum_text (common/checksum.h) of
 // the canonical dump of the rest of the object. parse_sealed returns the object without it;
 // throws BadInput naming `path` when `text` is not a JSON object, has no checksum or the checksum

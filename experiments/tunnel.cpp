@@ -79,9 +79,9 @@ TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, lon
       }
       measure(walk_tunnel(*robot, spec.robot.sim.scene.tunnel_length, max_steps, steering),
               out.run);
+      robot->finish("the tunnel walk ended");
       return 0;
     });
-    robot->finish("the tunnel walk ended");
     out.run.hardware = robot->hardware();
     return out;
   }

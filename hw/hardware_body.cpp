@@ -56,7 +56,14 @@ HardwareBody::HardwareBody(const HardwareFile& file, BodyMap body, const body::S
   pose_.x = pose_.y = std::numeric_limits<double>::quiet_NaN();
   bus_ = open_bus(file_);
   if (file_.yaw.source == YawSource::line) yaw_ = std::make_unique<YawLine>(file_);
-  start_check();
+  try {
+    start_check();
+  } catch (const RuntimeFailure& e) {
+    // A port that fails during the check (an emulator that ended) is a failed check as well.
+    const std::string what = e.what();
+    throw RuntimeFailure((what.starts_with("start-up check: ") ? what : "start-up check: " + what) +
+                         "; nothing has moved");
+  }
   // The controller starts as every body's does (body/start.h), the faults due at step 0 before
   // its warm-up.
   controller_ = body::start_controller(body_.controller, start.periods);
@@ -163,7 +170,14 @@ void HardwareBody::step() {
     ++walked_;
     fail(e.what());
   }
-  const bool yaw = read_yaw(yaw_errors, row.feedback);
+  bool yaw = false;
+  try {
+    yaw = read_yaw(yaw_errors, row.feedback);
+  } catch (const RuntimeFailure& e) {
+    // The yaw line's port failed (it may close before the bus's): a stop like the bus's.
+    ++walked_;
+    fail(e.what());
+  }
   clock_.exchanged();
   ++walked_;
   row.pose = pose_;

@@ -11,6 +11,7 @@
 
 #include "common/checksum.h"
 #include "common/errors.h"
+#include "common/input_file.h"
 #include "common/user_text.h"
 #include "hw/amosii.h"
 #include "hw/dynamixel.h"
@@ -39,7 +40,15 @@ class Reader {
             std::initializer_list<std::string_view> known) const {
     for (const auto& [key, value] : table) {
       if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
-        fail(prefix + std::string(key.str()), "unknown key");
+        // As a mistyped flag is told: where it is and what was meant.
+        const std::optional<std::string> meant =
+            closest_name(key.str(), std::vector<std::string>(known.begin(), known.end()));
+        const toml::source_region& where = key.source();
+        fail(prefix + printable(key.str()),
+             "unknown key" +
+                 (where.begin.line > 0 ? " on line " + std::to_string(where.begin.line)
+                                       : std::string()) +
+                 (meant ? " (did you mean " + *meant + "?)" : std::string()));
       }
     }
   }
@@ -120,19 +129,10 @@ class Reader {
   std::filesystem::path path_;
 };
 
-std::string read_text(const std::filesystem::path& path, const Reader& r) {
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) r.fail("file", "cannot read: " + ec.message());
-  if (size > kMaxHardwareFileBytes) {
-    r.fail("file",
-           std::to_string(size) + " bytes, at most " + std::to_string(kMaxHardwareFileBytes));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) r.fail("file", "cannot read");
-  return bytes.str();
+// As every input file is read (common/input_file.h): "FILE: cannot read (No such file or
+// directory)", a FIFO refused without waiting.
+std::string read_text(const std::filesystem::path& path) {
+  return read_input_file(path, kMaxHardwareFileBytes, "1 MiB", "hardware file");
 }
 
 toml::table parse(const std::string& source, const std::filesystem::path& path, const Reader& r) {
@@ -407,7 +407,7 @@ std::string HardwareFile::servo_name(int id) const {
 
 HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::Morphology& morph) {
   const Reader r(path);
-  const std::string source = read_text(path, r);
+  const std::string source = read_text(path);
   const toml::table doc = parse(source, path, r);
   r.only(doc, "",
          {"name", "protocol", "port", "baud", "timeout_ms", "max_errors", "deg_per_count", "yaw",
@@ -427,7 +427,7 @@ HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::
 std::string with_ports(const std::filesystem::path& path, const std::string& port,
                        const std::string& yaw_port) {
   const Reader r(path);
-  toml::table doc = parse(read_text(path, r), path, r);
+  toml::table doc = parse(read_text(path), path, r);
   doc.insert_or_assign("port", port);
   if (toml::table* yaw = doc["yaw"].as_table(); yaw != nullptr && !yaw_port.empty()) {
     yaw->insert_or_assign("port", yaw_port);

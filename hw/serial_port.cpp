@@ -3,12 +3,19 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
+#include <sys/file.h>
+#include <sys/ioctl.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <termios.h>
 #include <unistd.h>
 
 #include <array>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 #include <utility>
 
 #include "common/errors.h"
@@ -42,6 +49,35 @@ std::string system_error(const std::string& what) {
   return what + ": " + std::strerror(errno);
 }
 
+// The program holding a flock on `path`, from /proc/locks ("1: FLOCK ADVISORY WRITE PID
+// MAJ:MIN:INODE 0 EOF"): "pid N (NAME)", or "another program" when no lock names one.
+std::string lock_holder(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return "another program";
+  std::ifstream locks("/proc/locks");
+  for (std::string line; std::getline(locks, line);) {
+    std::istringstream fields(line);
+    std::string number, type, advisory, mode, pid, where;
+    if (!(fields >> number >> type)) continue;
+    if (type == "->") fields >> type;  // a waiter's line
+    if (!(fields >> advisory >> mode >> pid >> where) || type != "FLOCK") continue;
+    unsigned major = 0, minor = 0;
+    unsigned long inode = 0;
+    if (std::sscanf(where.c_str(), "%x:%x:%lu", &major, &minor, &inode) != 3) continue;
+    if (major != ::major(st.st_dev) || minor != ::minor(st.st_dev) || inode != st.st_ino) continue;
+    if (pid == std::to_string(::getpid())) continue;
+    std::string name;
+    std::getline(std::ifstream("/proc/" + pid + "/comm"), name);
+    return "pid " + pid + (name.empty() ? "" : " (" + name + ")");
+  }
+  return "another program";
+}
+
+std::string in_use(const std::string& path) {
+  return "port " + path + " is in use by " + lock_holder(path) +
+         ": one program drives a robot at a time (docs/hardware.md \"Safety\")";
+}
+
 }  // namespace
 
 double monotonic_s(Clock::time_point t) {
@@ -65,13 +101,30 @@ void require_baud(int baud) {
 SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
   const speed_t speed = baud_constant(baud);
   fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (fd_ < 0 && errno == EBUSY) throw RuntimeFailure(in_use(path));  // another's TIOCEXCL
+  if (fd_ < 0 && errno == ENOENT && path.starts_with("/dev/pts/")) {
+    // A rehearsal file's port: its emulator has ended (it serves until interrupted).
+    throw RuntimeFailure("cannot open port " + path +
+                         ": no such pseudo-terminal: the emulator that served it has ended; "
+                         "start it again (multicpg emulate --hardware FILE --rehearsal OUT.toml) "
+                         "and use the rehearsal file it writes");
+  }
   if (fd_ < 0) throw RuntimeFailure(system_error("cannot open port " + path));
+  // Exclusive before a byte is written or a setting changed: a lock every multicpg takes, and
+  // TIOCEXCL against other programs (a terminal program opening the port is refused, EBUSY).
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const std::string message =
+        errno == EWOULDBLOCK ? in_use(path) : system_error("cannot lock port " + path);
+    ::close(fd_);
+    throw RuntimeFailure(message);
+  }
   termios t{};
   if (::tcgetattr(fd_, &t) != 0) {
     const std::string message = system_error("port " + path + " is not a serial line");
     ::close(fd_);
     throw RuntimeFailure(message);
   }
+  ::ioctl(fd_, TIOCEXCL);
   ::cfmakeraw(&t);  // 8 data bits, no parity, no echo, no translation
   t.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | CRTSCTS);  // one stop bit, no flow control
   t.c_cflag |= CLOCAL | CREAD;
@@ -87,7 +140,9 @@ SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
 }
 
 SerialPort::~SerialPort() {
-  if (fd_ >= 0) ::close(fd_);
+  if (fd_ < 0) return;
+  ::ioctl(fd_, TIOCNXCL);  // a pty's flag outlives our descriptor while its master is open
+  ::close(fd_);
 }
 
 void SerialPort::write(std::span<const std::uint8_t> bytes) {

@@ -25,8 +25,10 @@ std::string baud_rates_text();
 class SerialPort {
  public:
   // Opens `path` raw 8N1 at `baud`, without becoming its controlling terminal, and drops what was
-  // waiting in it. Throws RuntimeFailure naming the path when it cannot (no such port, no
-  // permission, not a serial line).
+  // waiting in it. The port is ours alone (flock and TIOCEXCL, before anything is written or
+  // set): another program holding it is refused with RuntimeFailure naming its pid where
+  // /proc/locks tells it. Throws RuntimeFailure naming the path when it cannot (no such port, no
+  // permission, not a serial line, in use).
   SerialPort(const std::string& path, int baud);
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;

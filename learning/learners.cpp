@@ -20,7 +20,8 @@ std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::j
 nlohmann::json prior_options(const nlohmann::json& asked);
 std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options);
 void check_prior(const nlohmann::json& options, robot::RobotKind robot,
-                 const std::vector<std::size_t>& failed, const Criterion& criterion);
+                 const std::vector<std::size_t>& failed, const Criterion& criterion,
+                 const std::vector<int>& period_set);
 
 namespace {
 
@@ -30,7 +31,8 @@ struct Entry {
   std::unique_ptr<Learner> (*make)(const LearnerSetup& setup, const nlohmann::json& options);
   // What can be checked of a run before it starts (null: nothing beyond the options).
   void (*check)(const nlohmann::json& options, robot::RobotKind robot,
-                const std::vector<std::size_t>& failed, const Criterion& criterion) = nullptr;
+                const std::vector<std::size_t>& failed, const Criterion& criterion,
+                const std::vector<int>& period_set) = nullptr;
 };
 
 // The one list of learners.
@@ -120,10 +122,11 @@ LearnerChoice resolve_learner(const LearnerChoice& asked) {
 }
 
 void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
-                   const std::vector<std::size_t>& failed, const Criterion& criterion) {
+                   const std::vector<std::size_t>& failed, const Criterion& criterion,
+                   const std::vector<int>& period_set) {
   const Entry& e = entry(choice.name);
   if (e.check != nullptr) {
-    within("options", [&] { e.check(choice.options, robot, failed, criterion); });
+    within("options", [&] { e.check(choice.options, robot, failed, criterion, period_set); });
   }
 }
 

@@ -56,10 +56,12 @@ LearnerChoice resolve_learner(const LearnerChoice& asked);
 
 // Checks what a learner needs of a run before it starts, for a run of `robot` whose legs
 // `failed` fail and whose trials `criterion` judges (its data, walked the way the run judges,
-// and that a prior never sees the scenario under test). Throws OptionError ("options.<key>") or
-// BadInput naming the file.
+// and that a prior never sees the scenario under test) and, when `period_set` is not empty, that
+// its data have the run's period set: all before the robot walks. Throws OptionError
+// ("options.<key>") or BadInput naming the file.
 void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
-                   const std::vector<std::size_t>& failed, const Criterion& criterion);
+                   const std::vector<std::size_t>& failed, const Criterion& criterion,
+                   const std::vector<int>& period_set = {});
 
 // A resolved choice's learner for one episode. Throws BadInput for a setup the learner cannot
 // search (as start_annealing: every leg fixed, a start outside the period set, ...).

@@ -204,6 +204,20 @@ void check_dataset(const LandscapeDataset& d, const fs::path& path, robot::Robot
   }
 }
 
+// The run's period set must be the dataset's: its cells are combinations of that set.
+void check_period_set(const LandscapeDataset& d, const fs::path& path,
+                      const std::vector<int>& period_set) {
+  if (d.period_set == period_set) return;
+  const auto text = [](const std::vector<int>& set) {
+    std::string t;
+    for (int p : set) t += (t.empty() ? "" : ",") + std::to_string(p);
+    return t;
+  };
+  throw BadInput("the prior's dataset '" + path.string() + "' has the period set " +
+                 text(d.period_set) + ", this run " + text(period_set) +
+                 " (learning.annealing.period_set; or a dataset walked with the run's)");
+}
+
 // Prior means are computed once per dataset, scenario, scenario list and ridge (the benchmark's
 // seeds share them); the key holds the ridge exactly.
 std::vector<std::vector<double>> cached_prior_mean(const fs::path& path, const LearnerSetup& setup,
@@ -211,9 +225,7 @@ std::vector<std::vector<double>> cached_prior_mean(const fs::path& path, const L
                                                    const PriorOptions& o) {
   const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
   check_dataset(*d, path, setup.robot, setup.criterion);
-  if (d->period_set != setup.search.period_set) {
-    throw BadInput("the prior's dataset '" + path.string() + "' has another period set");
-  }
+  check_period_set(*d, path, setup.search.period_set);
   static std::mutex mutex;
   static std::map<std::string, std::vector<std::vector<double>>> cache;
   std::vector<std::size_t> lost = setup.fixed;
@@ -240,11 +252,13 @@ nlohmann::json prior_options(const nlohmann::json& asked) {
 }
 
 void check_prior(const nlohmann::json& options, robot::RobotKind robot,
-                 const std::vector<std::size_t>& failed, const Criterion& criterion) {
+                 const std::vector<std::size_t>& failed, const Criterion& criterion,
+                 const std::vector<int>& period_set) {
   const PriorOptions o = options.get<PriorOptions>();
   const fs::path path = prior_dataset_path(o, robot, criterion);
   const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
   check_dataset(*d, path, robot, criterion);
+  if (!period_set.empty()) check_period_set(*d, path, period_set);
   prior_scenarios(*d, o, failed);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "python/args.h"
+#include "python/typed.h"
 #include "python/values.h"
 
 namespace multicpg::python {
@@ -53,8 +54,8 @@ void register_faults(py::module_& m) {
       "or 'FTi' for one joint of each leg (locked and passive need one). Legs are checked\n"
       "against the robot when a run uses the fault. A Fault is immutable, comparable, hashable\n"
       "and picklable; str() gives the CLI's text, e.g. 'R2.CTr:locked@600'.")
-      .def(py::init([](py::object legs, py::object step, py::object kind, py::object joint,
-                       py::object value) {
+      .def(py::init([](mp::LegsArg legs, mp::IntArg step, mp::StrArg kind, mp::OptionalStrArg joint,
+                       mp::OptionalFloatArg value) {
              return mp::make_fault(legs, step, kind, joint, value, false);
            }),
            arg("legs") = py::none(), arg("step") = 0, py::kw_only(), arg("kind") = mp::kLegFault,
@@ -100,8 +101,8 @@ void register_faults(py::module_& m) {
       m, "Recovery",
       "What broke works again before controller step `step` (paper §2.3: when every leg works\n"
       "again the clients resynchronise). Arguments as for Fault; a value may be left out.")
-      .def(py::init([](py::object legs, py::object step, py::object kind, py::object joint,
-                       py::object value) {
+      .def(py::init([](mp::LegsArg legs, mp::IntArg step, mp::StrArg kind, mp::OptionalStrArg joint,
+                       mp::OptionalFloatArg value) {
              mp::RecoveryArg r;
              static_cast<mp::FaultArg&>(r) = mp::make_fault(legs, step, kind, joint, value, true);
              return r;

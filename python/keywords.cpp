@@ -1,9 +1,11 @@
 #include "python/keywords.h"
 
+#include <map>
 #include <optional>
 #include <stdexcept>
 
 #include "common/user_text.h"
+#include "python/typed.h"
 
 namespace multicpg::python {
 namespace {
@@ -87,13 +89,64 @@ Keywords Signature::read(const py::args& args, const py::kwargs& kwargs) const {
   return k;
 }
 
+namespace {
+
+// Each keyword's type as help() shows it (multicpg/_multicpg.pyi): one name means one thing in
+// every call that takes it.
+std::string param_type(std::string_view name) {
+  static const std::map<std::string_view, std::string_view> types{
+      {"robot", "Robot | str"},
+      {"name", "str"},
+      {"terrain", "Terrain | str | None"},
+      {"periods", kPeriodsType},
+      {"disable", kLegsType},
+      {"disable_at", "int"},
+      {"faults", kFaultsType},
+      {"recoveries", kFaultsType},
+      {"warmup", "int"},
+      {"record", "bool"},
+      {"seed", "int"},
+      {"tunnel", "bool"},
+      {"control_dt", "float"},
+      {"physics_dt", "float | None"},
+      {"servo_gain", "float | None"},
+      {"model", "str"},
+      {"body", "dict[str, Any] | None"},
+      {"mode", "str"},
+      {"learner", "str"},
+      {"learner_options", "dict[str, Any] | None"},
+      {"steering", "str"},
+      {"hold_windows", "int"},
+      {"monitor_windows", "int"},
+      {"period_learning", "bool"},
+      {"beta", "float"},
+      {"threshold", "float"},
+      {"window", "int"},
+      {"settle", "int | None"},
+      {"max_trials", "int"},
+      {"observer", "Callable[[dict], Any] | None"},
+      {"progress", kProgressType},
+      {"hardware", "str | os.PathLike[str] | None"},
+      {"lock_step", "bool"},
+      {"learn", "bool"},
+      {"max_steps", "int"},
+      {"video", "str | os.PathLike[str] | None"},
+      {"scale_tunnel", "bool"},
+  };
+  const auto it = types.find(name);
+  return std::string(it == types.end() ? "Any" : it->second);
+}
+
+}  // namespace
+
 std::string Signature::text(std::string_view name, std::string_view returns) const {
   const bool method = name == "__init__";
   std::string out = std::string(name) + (method ? "(self" : "(");
   for (std::size_t i = 0; i < params_.size(); ++i) {
     if (i > 0 || method) out += ", ";
     if (i == positional_) out += "*, ";
-    out += params_[i].name + ": object = " + py::repr(params_[i].fallback).cast<std::string>();
+    out += params_[i].name + ": " + param_type(params_[i].name) + " = " +
+           py::repr(params_[i].fallback).cast<std::string>();
   }
   out += ")";
   if (!returns.empty()) out += " -> " + std::string(returns);

@@ -46,8 +46,9 @@ class Signature {
   // Reads a call. TypeError for too many positional arguments, a keyword given twice or an
   // unknown keyword (naming it, with the nearest known one when one is near).
   Keywords read(const py::args& args, const py::kwargs& kwargs) const;
-  // "learn(robot: object = 'hexapod', *, disable: object = None, ...) -> dict", as pybind11
-  // writes one; `name` is the function's (__init__ for a class, with self first).
+  // "learn(robot: Robot | str = 'hexapod', *, disable: str | Sequence[str] | None = None, ...)
+  // -> dict", as pybind11 writes one, each keyword typed as the stub types it; `name` is the
+  // function's (__init__ for a class, with self first).
   std::string text(std::string_view name, std::string_view returns) const;
   const std::string& function() const { return function_; }
 

@@ -30,6 +30,7 @@
 #include "learning/learners.h"
 #include "python/args.h"
 #include "python/run_args.h"
+#include "python/typed.h"
 #include "python/values.h"
 #include "python/watch.h"
 #include "report/film.h"
@@ -287,7 +288,7 @@ class Annealer {
     return c->periods;
   }
 
-  py::dict decide(py::handle deviation) {
+  py::dict decide(FloatArg deviation) {
     const double e = real(deviation, "deviation_deg", kDeviationLimits);
     if (!state_.pending) {
       throw py::value_error("decide(): no proposed combination (call propose first)");
@@ -465,9 +466,9 @@ void register_learning(py::module_& m) {
       "`multicpg learn --mode paper`: start from C0 = periods (as for Simulation; each working\n"
       "leg's in PERIOD_SET) measured at e_ref (deg, 0..180) with the `disabled` legs kept, then\n"
       "propose() a combination, walk it, decide(deviation).")
-      .def(py::init([](py::object robot, py::object periods, py::object disabled, py::object e_ref,
-                       py::object seed, py::object beta, py::object threshold,
-                       py::object max_trials) {
+      .def(py::init([](mp::RobotArg robot, mp::PeriodsArg periods, mp::LegsArg disabled,
+                       mp::FloatArg e_ref, mp::IntArg seed, mp::FloatArg beta,
+                       mp::FloatArg threshold, mp::IntArg max_trials) {
              return std::make_unique<mp::Annealer>(robot, periods, disabled, e_ref, seed, beta,
                                                    threshold, max_trials);
            }),

@@ -10,6 +10,7 @@
 #include "experiments/run_spec.h"
 #include "learning/steering.h"
 #include "python/args.h"
+#include "python/watch.h"
 #include "report/replay/page.h"
 #include "report/replay/recording.h"
 #include "report/replay/rerun.h"
@@ -92,7 +93,7 @@ void write_page(const std::string& html, py::handle out) {
 // with the Simulation's after it walked the same steps.
 py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::handle out,
                             py::handle title_arg) {
-  const long steps = whole(steps_arg, "steps", body::kRunStepsLimits);
+  const long steps = whole(steps_arg, "steps", report::kReplayStepLimits);
   const std::string title = text(title_arg, "title");
   const std::string bytes = state_bytes.cast<py::bytes>();
   const json document = named("sim", [&] { return unseal_cbor(bytes); });
@@ -103,6 +104,8 @@ py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::ha
   const experiments::RobotSpec walked = robot_spec(document.at("robot"), "sim");
   std::string html;
   body::Pose2 end;
+  // Ctrl-C stops the walk between two steps (KeyboardInterrupt); nothing is written then.
+  Watch watch(py::bool_(false), "replay", steps);
   {
     const py::gil_scoped_release release;
     const sim::SimModel model = experiments::make_model(walked);
@@ -110,7 +113,8 @@ py::tuple replay_simulation(py::handle state_bytes, py::handle steps_arg, py::ha
         sim::checkpoint_from_json(model, document.at("checkpoint"));
     report::ReplayRecorder recorder(checkpoint.walked);
     Gate gate(recorder);
-    sim::Stepper stepper(model, body::StartSpec{{}, 0}, body::FaultTimeline{}, &gate);
+    sim::Observers watched({&gate, &watch});
+    sim::Stepper stepper(model, body::StartSpec{{}, 0}, body::FaultTimeline{}, &watched);
     stepper.restore(checkpoint);
     std::optional<learning::SteeringState> steering;
     if (!document.at("steering").is_null()) {
@@ -142,11 +146,12 @@ py::str replay_result(py::handle result, py::handle robot_key, py::handle out,
     options = robot_spec(json::parse(text(robot_key, "robot")), "robot").sim;
   }
   std::string html;
+  Watch watch(py::bool_(false), "replay", 0);  // Ctrl-C stops the run; no page is written then
   {
     const py::gil_scoped_release release;
     const json saved = json::parse(result_text);
-    const report::RerunReplay replay =
-        named("result", [&] { return report::rerun_learning(saved, "the result", options); });
+    const report::RerunReplay replay = named(
+        "result", [&] { return report::rerun_learning(saved, "the result", options, &watch); });
     html = report::replay_html(replay.recording, title.value_or(replay.title));
   }
   write_page(html, out);

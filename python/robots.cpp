@@ -7,6 +7,7 @@
 #include "common/errors.h"
 #include "experiments/run_spec.h"
 #include "python/args.h"
+#include "python/typed.h"
 #include "robot/body_json.h"
 #include "robot/body_models.h"
 #include "robot/terrain.h"
@@ -234,13 +235,13 @@ void register_robots(py::module_& m) {
       "Terrain.flat(), .slope(deg, heading_deg=0), .rough(height_m, seed=1) and\n"
       ".steps(height_m, depth_m) make one. Immutable, comparable, hashable and picklable;\n"
       "str() gives its text. Robot(terrain=...) takes one or its text.")
-      .def(py::init([](py::object text) { return mp::terrain_arg(text, "text"); }),
+      .def(py::init([](mp::StrArg text) { return mp::terrain_arg(text, "text"); }),
            arg("text") = "flat")
       .def_static(
           "flat", [] { return multicpg::robot::Terrain{}; }, "level ground")
       .def_static(
           "slope",
-          [](py::object deg, py::object heading) {
+          [](mp::FloatArg deg, mp::FloatArg heading) {
             multicpg::robot::Slope t;
             t.slope_deg = mp::real(deg, "deg", multicpg::robot::kSlopeLimits);
             t.heading_deg = mp::real(heading, "heading_deg", multicpg::robot::kHeadingLimits);
@@ -250,7 +251,7 @@ void register_robots(py::module_& m) {
           "a plane rising `deg` (0..30) towards `heading_deg` (+ = left of the start heading)")
       .def_static(
           "rough",
-          [](py::object height, py::object seed) {
+          [](mp::FloatArg height, mp::IntArg seed) {
             multicpg::robot::Rough t;
             t.height_m = mp::real(height, "height_m", multicpg::robot::kBumpLimits);
             t.seed = mp::seed(seed, "seed");
@@ -260,7 +261,7 @@ void register_robots(py::module_& m) {
           "random bumps up to `height_m` (0.001..0.05 m), the same for the same seed")
       .def_static(
           "steps",
-          [](py::object height, py::object depth) {
+          [](mp::FloatArg height, mp::FloatArg depth) {
             multicpg::robot::Steps t;
             t.height_m = mp::real(height, "height_m", multicpg::robot::kBumpLimits);
             t.depth_m = mp::real(depth, "depth_m", multicpg::robot::kStepDepthLimits);
@@ -395,7 +396,7 @@ void register_robots(py::module_& m) {
           "unmeasured steps after a period change in paper mode (337 for the hexapod)")
       .def(
           "settle_steps",
-          [](const mp::Robot& r, py::object periods) {
+          [](const mp::Robot& r, mp::PeriodsArg periods) {
             return multicpg::learning::locked_settle_steps(
                 r.model->controller, mp::periods(r.morph(), periods, "periods"));
           },
@@ -423,7 +424,7 @@ void register_robots(py::module_& m) {
            })
       .def("__repr__", [](const mp::Robot& r) { return mp::robot_repr(r); })
       .def("__copy__", [](py::object self) { return self; })
-      .def("__deepcopy__", [](py::object self, py::object) { return self; })
+      .def("__deepcopy__", [](py::object self, mp::AnyArg) { return self; })
       .def(py::pickle(
           [](const mp::Robot& r) -> py::object { return py::str(mp::robot_key(r.spec).dump()); },
           [](const py::object& key) {

@@ -17,6 +17,7 @@
 #include "python/args.h"
 #include "python/run_args.h"
 #include "python/state.h"
+#include "python/typed.h"
 #include "python/values.h"
 #include "python/watch.h"
 #include "report/film.h"
@@ -85,7 +86,7 @@ class Simulation {
     return out;
   }
 
-  void step(py::handle n_arg, py::handle progress) {
+  void step(IntArg n_arg, ProgressArg progress) {
     const long n = whole(n_arg, "n", body::kStepLimits);
     Watch watch(progress, "step", n);
     {
@@ -97,7 +98,7 @@ class Simulation {
     watch.finish();
   }
 
-  void set_periods(py::handle value) {
+  void set_periods(PeriodsArg value) {
     const auto lock = lock_with_gil();
     const std::vector<int> p = periods_keeping(current_periods(), value);
     neural::set_periods(robot_->model->controller, stepper_->state().controller, p);
@@ -113,7 +114,7 @@ class Simulation {
     });
   }
 
-  void synchronise(py::handle on) {
+  void synchronise(BoolArg on) {
     const bool synchronised = flag(on, "on");
     const auto lock = lock_with_gil();
     neural::set_synchronised(stepper_->state().controller, synchronised);
@@ -121,7 +122,7 @@ class Simulation {
 
   // The orientation reflex of robust mode (learning/steering.h): on holds the course the trunk
   // has now; off stops it and gives both sides their full swing again.
-  void steer(py::handle on) {
+  void steer(BoolArg on) {
     const bool steering = flag(on, "on");
     const auto lock = lock_with_gil();
     if (steering) {
@@ -143,7 +144,7 @@ class Simulation {
   // Walks one window of `steps` and measures it as the learner does (learning/compensation.h):
   // yaw change, path angle (against the reflex's course when it steers) and the reflex's mean
   // swing cut.
-  py::dict walk_window(py::handle steps_arg) {
+  py::dict walk_window(IntArg steps_arg) {
     const long steps = whole(steps_arg, "steps", learning::kWindowStepsLimits);
     body::WindowMeasure m;
     Watch watch(py::bool_(false), "walk_window", steps);
@@ -168,7 +169,7 @@ class Simulation {
     return state_locked();
   }
 
-  void restore(py::handle value) {
+  void restore(StateArg value) {
     if (!py::isinstance<State>(value)) type_error("state", "a multicpg.State", value);
     const State& s = value.cast<const State&>();
     if (s.robot->spec != robot_->spec) {
@@ -203,7 +204,7 @@ class Simulation {
     return out;
   }
 
-  py::dict measure(py::handle settle_arg, py::handle window_arg) {
+  py::dict measure(IntArg settle_arg, IntArg window_arg) {
     const auto lock = lock_with_gil();
     require_record("measure");
     const long walked = static_cast<long>(record_.rows()) - 1;
@@ -257,8 +258,7 @@ class Simulation {
   bool recording() const { return recording_; }
   const std::shared_ptr<Robot>& robot() const { return robot_; }
 
-  py::array_t<std::uint8_t> render(py::handle width_arg, py::handle height_arg,
-                                   py::handle caption_arg) {
+  py::array_t<std::uint8_t> render(IntArg width_arg, IntArg height_arg, StrArg caption_arg) {
     const int width = whole(width_arg, "width", report::kFrameSideLimits);
     const int height = whole(height_arg, "height", report::kFrameSideLimits);
     const std::string caption = text(caption_arg, "caption");
@@ -279,7 +279,7 @@ class Simulation {
     return out;
   }
 
-  int film(py::handle out_arg, py::handle steps_arg, py::handle speed_arg, py::handle width_arg,
+  int film(PathArg out_arg, IntArg steps_arg, IntArg speed_arg, IntArg width_arg,
            py::handle height_arg) {
     report::FilmSpec spec;
     spec.out = path(out_arg, "out");
@@ -497,10 +497,10 @@ void register_simulations(py::module_& m) {
            "Sets CPG periods (an int, {'R1': 5}, one per leg, or 'R1=5,L1=6'; legs a dict or\n"
            "text does not name keep theirs) and resets every CPG.")
       .def(
-          "fail", [](mp::Simulation& s, py::object legs) { s.set_failed(legs, true); }, arg("legs"),
-          "These legs fail from the next step on (a name, a list, or 'R1,R3').")
+          "fail", [](mp::Simulation& s, mp::LegsArg legs) { s.set_failed(legs, true); },
+          arg("legs"), "These legs fail from the next step on (a name, a list, or 'R1,R3').")
       .def(
-          "recover", [](mp::Simulation& s, py::object legs) { s.set_failed(legs, false); },
+          "recover", [](mp::Simulation& s, mp::LegsArg legs) { s.set_failed(legs, false); },
           arg("legs"), "These failed legs work again from the next step on.")
       .def("synchronise", &mp::Simulation::synchronise, arg("on"),
            "True: every client CPG follows the master (R1); False: every CPG runs free.")
@@ -555,7 +555,7 @@ void register_simulations(py::module_& m) {
 
   m.def(
       "render",
-      [](py::object sim, py::object width, py::object height, py::object caption) {
+      [](mp::SimulationArg sim, mp::IntArg width, mp::IntArg height, mp::StrArg caption) {
         if (!py::isinstance<mp::Simulation>(sim))
           mp::type_error("sim", "a multicpg.Simulation", sim);
         return sim.cast<mp::Simulation&>().render(width, height, caption);
@@ -567,8 +567,8 @@ void register_simulations(py::module_& m) {
       "EGL or OSMesa (MUJOCO_GL=egl|osmesa).");
   m.def(
       "film",
-      [](py::object sim, py::object out, py::object steps, py::object speed, py::object width,
-         py::object height) {
+      [](mp::SimulationArg sim, mp::PathArg out, mp::IntArg steps, mp::IntArg speed,
+         mp::IntArg width, mp::IntArg height) {
         if (!py::isinstance<mp::Simulation>(sim))
           mp::type_error("sim", "a multicpg.Simulation", sim);
         return sim.cast<mp::Simulation&>().film(out, steps, speed, width, height);
@@ -580,7 +580,7 @@ void register_simulations(py::module_& m) {
 
   m.def(
       "measure_window",
-      [](py::object start, py::object end) {
+      [](mp::PoseArg start, mp::PoseArg end) {
         const body::WindowMeasure w =
             body::measure_window(mp::pose_arg(start, "start"), mp::pose_arg(end, "end"));
         return py::dict(arg("yaw_deg") = w.yaw_deg, arg("path_deg") = w.path_deg,

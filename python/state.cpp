@@ -6,6 +6,7 @@
 #include "common/sealed_cbor.h"
 #include "learning/json.h"
 #include "python/args.h"
+#include "python/typed.h"
 #include "sim/checkpoint.h"
 
 namespace multicpg::python {
@@ -86,10 +87,10 @@ void register_state(py::module_& m) {
       .def("to_bytes", &mp::state_bytes,
            "The state as bytes (sealed CBOR with a checksum; what pickle stores).")
       .def_static(
-          "from_bytes", [](py::object data) { return mp::state_from_bytes(data, "data"); },
+          "from_bytes", [](mp::BytesArg data) { return mp::state_from_bytes(data, "data"); },
           arg("data"), "The State to_bytes() gave. Raises ValueError for damaged or foreign bytes.")
       .def("__copy__", [](py::object self) { return self; })
-      .def("__deepcopy__", [](py::object self, py::object) { return self; })
+      .def("__deepcopy__", [](py::object self, mp::AnyArg) { return self; })
       .def("__repr__",
            [](const mp::State& s) {
              return "<multicpg.State of " + mp::robot_repr(*s.robot) + " at step " +

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -31,6 +32,9 @@ Rehearsal::Rehearsal(const std::string& example, int timeout_ms,
   log_ = dir_ + "/emulator.jsonl";
   std::vector<std::string> argv{"emulate",  "--hardware", hardware, "--rehearsal",
                                 rehearsal_, "--log",      log_};
+  if (std::find(args.begin(), args.end(), "--runs") == args.end()) {
+    argv.insert(argv.end(), {"--runs", "1"});
+  }
   argv.insert(argv.end(), args.begin(), args.end());
   emulator_ = std::make_unique<CliProcess>(argv);
   const bool ready = wait_until(
@@ -43,6 +47,10 @@ Rehearsal::~Rehearsal() {
   emulator_.reset();
   std::error_code ec;
   std::filesystem::remove_all(dir_, ec);
+}
+
+void Rehearsal::signal(int sig) const {
+  emulator_->signal(sig);
 }
 
 bool Rehearsal::finish() {

@@ -16,13 +16,15 @@ namespace multicpg::testing {
 class Rehearsal {
  public:
   // `example`: a file of examples/hardware; every `timeout_ms = ` in it becomes `timeout_ms`;
-  // `edits` then replace text in it (from, to); `args`: more emulator flags (--inject ...).
+  // `edits` then replace text in it (from, to); `args`: more emulator flags (--inject ...). It
+  // serves one run unless `args` say --runs.
   Rehearsal(const std::string& example, int timeout_ms, const std::vector<std::string>& args = {},
             const std::vector<std::pair<std::string, std::string>>& edits = {});
   ~Rehearsal();
 
   const std::string& file() const { return rehearsal_; }
   const std::string& dir() const { return dir_; }
+  void signal(int sig) const;  // to the emulator
   // Waits for the emulator to end (it does when the host has hung up); false if it hangs.
   bool finish();
   int exit_code() const { return emulator_->exit_code(); }

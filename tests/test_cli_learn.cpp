@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "apps/hardware_output.h"
 #include "apps/learning_output.h"
 #include "learning/compensation.h"
 #include "tests/cli_runner.h"
@@ -414,6 +415,28 @@ TEST(CliExperiment, ResultsPageSetsOursBesideThePaper) {
   EXPECT_NE(page.find("| The paper states | Ours |"), std::string::npos);
   EXPECT_NE(page.find("| R1 | 1 |"), std::string::npos);
   fs::remove_all(dir);
+}
+
+// A run's link errors say whether they are to worry about (docs/hardware.md "Rehearse on the
+// emulator"): late answers are a busy machine's, garbled ones are not.
+TEST(HardwareSummary, LinkErrorsSayWhetherTheyAreNormal) {
+  const auto summary = [](const nlohmann::json& bus) {
+    const nlohmann::json none{{"timeout", 0}, {"bad_checksum", 0}};
+    return multicpg::apps::hardware_summary(
+        {{"pacing", "lock_step"},
+         {"timing", {{"period_mean_s", 0.001}, {"jitter_p99_s", 0.0}, {"overruns", 0}}},
+         {"errors", {{"bus", bus}, {"yaw", none}}},
+         {"clamped_targets", 0}});
+  };
+  const std::string clean = summary({{"timeout", 0}, {"bad_checksum", 0}});
+  EXPECT_NE(clean.find("link errors: none"), std::string::npos) << clean;
+  EXPECT_EQ(clean.find("normal"), std::string::npos) << clean;
+  const std::string late = summary({{"timeout", 2}, {"bad_checksum", 0}});
+  EXPECT_NE(late.find("bus timeout 2 (isolated late answers are normal on a busy machine"),
+            std::string::npos)
+      << late;
+  const std::string garbled = summary({{"timeout", 2}, {"bad_checksum", 1}});
+  EXPECT_NE(garbled.find("not a busy machine's doing"), std::string::npos) << garbled;
 }
 
 }  // namespace

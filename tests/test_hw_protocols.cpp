@@ -291,7 +291,10 @@ TEST(HardwareFile, EveryMistakeIsOneLineNamingFileAndKey) {
       {"TC = 0, CTr = -60", "TC = 80, CTr = -60",
        "stop.posture_deg.TC: 80 deg is outside R1.TC's limits"},
       {"name = \"R2\"", "name = \"L2\"", "legs[1].name: 'L2', expected 'R2'"},
-      {"max_errors = 3", "max_errors = 3\nmax_error = 4", "max_error: unknown key"},
+      {"max_errors = 3", "max_errors = 3\nmax_error = 4", "max_error: unknown key on line"},
+      // As a mistyped flag: the line, and the key meant.
+      {"max_errors = 3", "max_errors = 3\ntimout_ms = 4",
+       "timout_ms: unknown key on line 13 (did you mean timeout_ms?)"},
       {"timeout_ms = 20\nmax", "timeout_ms = 0\nmax", "timeout_ms: must be in 1..10000, got 0"},
   };
   for (const Case& c : cases) {
@@ -324,7 +327,9 @@ TEST(HardwareFile, CommandsRefuseABadFileBeforeAnythingMoves) {
   expect_bad_input("tunnel --learn --mode paper --disable R1 --hardware " + unmapped,
                    "legs[0].FTi: missing");
   expect_bad_input("emulate --hardware " + unmapped, "legs[0].FTi: missing");
-  expect_bad_input("walk --hardware /nonexistent/robot.toml", "/nonexistent/robot.toml: file");
+  // As every missing input file reads (common/input_file.h).
+  expect_bad_input("walk --hardware /nonexistent/robot.toml",
+                   "/nonexistent/robot.toml: cannot read (No such file or directory)");
   expect_bad_input("walk --lock-step", "--lock-step needs --hardware");
   // What the hardware cannot do: a fault of a real robot's physics, robust mode without position.
   expect_bad_input("walk --fault R2.CTr:locked@0 --hardware " + kDynamixel.string(),

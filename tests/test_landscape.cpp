@@ -227,6 +227,23 @@ TEST_F(LandscapeCli, ResumesAndRefusesAnotherLandscape) {
       "period_set");
 }
 
+TEST_F(LandscapeCli, ALandscapeAndASetKeepToTheirOwnDirectoriesAndADamagedSetIsRefusedFirst) {
+  const std::string flags = "landscape --robot quadruped --periods-set 4,5 --windows 1 --jobs 2 ";
+  // R1 of a set, walked as a plain landscape into the set's directory OUT/R1: the set resumes it.
+  const std::string set = dir_ + "/set";
+  ASSERT_EQ(run_cli(flags + "--disable R1 --out " + set + "/R1").exit_code, 0);
+  // A later scenario's record damaged: the set is refused before R1 resumes (no session added).
+  fs::create_directories(set + "/R2");
+  std::ofstream(set + "/R2/experiment.json") << "{\"checksum\": \"fnv1a64:0\"}\n";
+  const std::string sessions = read_file(set + "/R1/provenance.json");
+  expect_bad_input(flags + "--every-loss --out " + set, set + "/R2/experiment.json");
+  EXPECT_EQ(read_file(set + "/R1/provenance.json"), sessions);
+  // One scenario into a set's directory, and a set into one scenario's: refused, exit 2.
+  expect_bad_input(flags + "--disable L1 --out " + set, "holds a set of every loss");
+  expect_bad_input(flags + "--every-loss --out " + set + "/R1",
+                   "holds a landscape of one scenario");
+}
+
 TEST_F(LandscapeCli, ResultsDoNotDependOnJobs) {
   const std::string args =
       "landscape --robot quadruped --disable L2 --periods-set 4,5 --windows 1 --out ";

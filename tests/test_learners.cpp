@@ -295,6 +295,19 @@ TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
   EXPECT_NO_THROW(learning::check_learner(learning::resolve_learner(fine),
                                           robot::RobotKind::quadruped, {kL2},
                                           learning::kPeriodsAloneCriterion));
+  // The run's period set is the dataset's, checked with the rest before anything walks.
+  try {
+    learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped, {kL2},
+                            learning::kPeriodsAloneCriterion, {4, 5, 6, 8});
+    ADD_FAILURE() << "a prior of another period set was accepted";
+  } catch (const BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("has the period set 4,5,6,8,9, this run 4,5,6,8"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(learning::check_learner(learning::resolve_learner(fine),
+                                          robot::RobotKind::quadruped, {kL2},
+                                          learning::kPeriodsAloneCriterion, kPeriodSet));
   LearnerChoice missing = choice("prior");
   missing.options["dataset"] = dir_ + "/nothing-here";
   EXPECT_THROW(

@@ -5,6 +5,7 @@
 // tunnel, a model with a mesh, `multicpg replay` of saved runs and its refusals.
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -471,6 +472,16 @@ TEST(Replay, ExperimentRunFilesReplayAndBadRunFilesAreRefused) {
   expect_bad_input(
       "replay " + (dir / "other.json").string() + " --out " + (dir / "x.html").string(),
       "other.json");
+  // A walk edited to 10^8 steps is refused before a step is walked (docs/replay.md: a replay
+  // holds at most 1000000 steps), and so is a FIFO named as the run (never waited on).
+  json long_walk = json::parse(learned);
+  long_walk["steps"] = 100000000;
+  write_text(dir / "long.json", long_walk.dump());
+  expect_bad_input("replay " + (dir / "long.json").string() + " --out " + (dir / "x.html").string(),
+                   "long.json': steps 100000000 is outside 1..1000000");
+  ASSERT_EQ(::mkfifo((dir / "fifo.json").c_str(), 0600), 0);
+  expect_bad_input("replay " + (dir / "fifo.json").string() + " --out " + (dir / "x.html").string(),
+                   "fifo.json: is a FIFO, not a file");
   std::string damaged = slurp(run);
   damaged.replace(damaged.find("\"trials\""), 8, "\"TRIALS\"");
   write_text(dir / "runs-damaged.json", damaged);

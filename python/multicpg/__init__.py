@@ -31,17 +31,19 @@ order; legs as a list of names. A wrong type raises TypeError and a wrong value 
 naming the parameter (``periods: period 7 gives no gait ...``; a mistyped keyword with the
 nearest known one); a failed run raises RuntimeError.
 
-Long calls (learn, tunnel, Simulation.step, experiment) stop on Ctrl-C or a Jupyter interrupt
+Long calls (learn, tunnel, Simulation.step, replay, experiment) stop on Ctrl-C or a Jupyter interrupt
 within half a second with KeyboardInterrupt, leaving their objects usable; learn, tunnel and
 step show a tqdm bar once they have run half a second (``progress=False``: none; a callable:
 your own, given a dict per report). ``__version__`` is the project's version, ``build_info()`` says what was built.
 """
 
-import csv
-import json
-import os
-import tempfile
-from typing import Any, Dict, List, Optional, Union
+# Underscored: the module's namespace holds its API alone (dir(multicpg), help, completion).
+import csv as _csv
+import json as _json
+import os as _os
+import tempfile as _tempfile
+from typing import Any as _Any, Dict as _Dict, List as _List
+from typing import Optional as _Optional, Union as _Union
 
 from ._multicpg import (
     __version__,
@@ -86,7 +88,7 @@ __all__ = [
 ]
 
 
-def _cell(text: str) -> Union[int, float, str]:
+def _cell(text: str) -> _Union[int, float, str]:
     """A runs.csv cell as the number it holds, or the text."""
     for kind in (int, float):
         try:
@@ -96,9 +98,9 @@ def _cell(text: str) -> Union[int, float, str]:
     return text
 
 
-def experiment(file_or_dict: Union[str, "os.PathLike[str]", Dict[str, Any]],
-               jobs: Optional[int] = None,
-               out: Union[None, str, "os.PathLike[str]"] = None) -> Any:
+def experiment(file_or_dict: _Union[str, _os.PathLike[str], _Dict[str, _Any]],
+               jobs: _Optional[int] = None,
+               out: _Union[None, str, _os.PathLike[str]] = None) -> _Any:
     """Runs an experiment the way ``multicpg run FILE.toml`` does and returns its tidy table.
 
     file_or_dict: the path of an experiment file (README "Experiment files"), or its document as
@@ -117,20 +119,20 @@ def experiment(file_or_dict: Union[str, "os.PathLike[str]", Dict[str, Any]],
     is_document = isinstance(file_or_dict, dict)
     if is_document:
         try:
-            source = json.dumps(file_or_dict, allow_nan=False)
+            source = _json.dumps(file_or_dict, allow_nan=False)
         except (TypeError, ValueError) as e:
             raise TypeError(f"file_or_dict: the document is not plain data: {e}") from None
     else:
         source = file_or_dict
-    with tempfile.TemporaryDirectory(prefix="multicpg-experiment-") as scratch:
-        directory = os.path.join(scratch, "out") if out is None else out
+    with _tempfile.TemporaryDirectory(prefix="multicpg-experiment-") as scratch:
+        directory = _os.path.join(scratch, "out") if out is None else out
         _run_experiment(source, is_document, jobs, directory)
-        table = os.path.join(os.fspath(directory), "runs.csv")
+        table = _os.path.join(_os.fspath(directory), "runs.csv")
         try:
             import pandas
         except ImportError:
             with open(table, newline="") as f:
-                rows: List[Dict[str, Any]] = [{k: _cell(v) for k, v in row.items()}
-                                              for row in csv.DictReader(f)]
+                rows: _List[_Dict[str, _Any]] = [{k: _cell(v) for k, v in row.items()}
+                                              for row in _csv.DictReader(f)]
             return rows
         return pandas.read_csv(table)

@@ -121,6 +121,16 @@ class CompensationEnv(_EnvBase):
                  disable_at: int = 0, *, faults: Any = None, terrain: Any = None,
                  render_mode: Optional[str] = None, render_size: Tuple[int, int] = (320, 240),
                  **learning: Any):
+        """An environment of ``robot`` (a Robot, a robot name or a robot file) whose legs
+        ``disable`` fail from step ``disable_at`` (or the ``faults`` timeline, as Simulation
+        takes it), on ``terrain``.
+
+        learning: the learning keywords of learn() an environment keeps (mode, threshold,
+        window, settle, hold_windows, max_trials); the others are the agent's to decide and are
+        refused. render_mode None or "rgb_array", render_size (width, height) of render()'s
+        frames. Every argument is checked here, before anything walks: TypeError or ValueError
+        naming the parameter, as learn() raises them.
+        """
         # learn()'s description of the learning keywords: unknown ones are named, values checked.
         options = _learning_options(**learning)
         for name in options["given"]:

@@ -36,7 +36,7 @@ def test_simulation_and_env_take_terrain_and_faults():
 def test_one_default_mode_robust_as_the_cli():
     env = CompensationEnv(max_trials=1)
     assert env.mode == "robust"
-    assert "mode: object = 'robust'" in multicpg.learn.__doc__.splitlines()[0]
+    assert "mode: str = 'robust'" in multicpg.learn.__doc__.splitlines()[0]
 
 
 def test_learn_chooses_the_learner_as_the_cli_does():

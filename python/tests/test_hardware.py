@@ -23,7 +23,8 @@ def rehearsal(tmp_path):
     hardware.write_text(re.sub(r"timeout_ms = \d+", f"timeout_ms = {TIMEOUT_MS}", example))
     rehearsal_file = tmp_path / "rehearsal.toml"
     emulator = subprocess.Popen(
-        [str(EXE), "emulate", "--hardware", str(hardware), "--rehearsal", str(rehearsal_file)],
+        [str(EXE), "emulate", "--hardware", str(hardware), "--rehearsal", str(rehearsal_file),
+         "--runs", "1"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + STARTUP_S
     while not rehearsal_file.exists():

@@ -17,7 +17,7 @@ def stub_tree():
 
 
 def runtime_parameters(function):
-    """Parameter names from pybind11's signature line ("name(a: object, *, b: object = 4)")."""
+    """Parameter names from the signature line ("name(a: int, *, b: str | None = None)")."""
     first = function.__doc__.splitlines()[0]
     inside = first[first.index("(") + 1:first.rindex(")")]
     names = []

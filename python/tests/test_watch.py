@@ -115,3 +115,36 @@ def test_a_progress_callable_gets_the_reports():
     multicpg.learn(disable="R1", mode="paper", seed=5, max_trials=3, progress=learned.append)
     assert learned[-1]["finished"] and learned[-1]["stage"] == "learn"
     assert learned[-1]["trials"] == 3 and learned[-1]["total"] is None
+
+
+# A replay far longer than the test waits (docs/replay.md: at most 1000000 steps).
+REPLAY_INTERRUPTED = r"""
+import os, sys
+import multicpg
+sim = multicpg.Simulation(warmup=0, record=False)
+page = os.path.join(sys.argv[1], "x.html")
+print("ready replay", flush=True)
+try:
+    multicpg.replay(sim, page, steps=1_000_000)
+    print("replay finished", flush=True)
+except KeyboardInterrupt:
+    print("interrupted replay", "page written" if os.path.exists(page) else "no page", flush=True)
+"""
+
+
+def test_ctrl_c_stops_a_replay_and_writes_no_page(tmp_path):
+    process = subprocess.Popen([sys.executable, "-c", REPLAY_INTERRUPTED, str(tmp_path)],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                               env=os.environ.copy())
+    try:
+        assert process.stdout.readline().strip() == "ready replay", process.stderr.read()
+        time.sleep(1.0)  # well inside the call
+        process.send_signal(signal.SIGINT)
+        # A hang is caught by ctest's timeout: no time is asserted.
+        assert process.stdout.readline().strip() == "interrupted replay no page", \
+            process.stderr.read()
+        assert process.wait(timeout=60) == 0
+        assert list(tmp_path.iterdir()) == []  # not even a temporary file
+    finally:
+        process.kill()
+        process.wait()

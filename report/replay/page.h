@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/limits.h"
 #include "report/replay/recording.h"
 
 namespace multicpg::report {
@@ -16,6 +17,10 @@ namespace multicpg::report {
 // The recording's format, written into every page and checked by the page's script.
 inline constexpr const char* kReplayFormat = "multicpg replay";
 inline constexpr int kReplayVersion = 1;
+// The most steps a replay holds (docs/replay.md): 10 hours at 27 Hz, some 560 MB of the hexapod's
+// poses in memory; a page any longer would not open in a browser.
+inline constexpr long kMaxReplaySteps = 1'000'000;
+inline constexpr Limits<long> kReplayStepLimits{1, kMaxReplaySteps};
 
 // Throws BadInput naming `out` unless it is an .html file that can be created, so a bad path
 // fails before any run.

@@ -7,6 +7,7 @@
 #include "experiments/run_robot.h"
 #include "experiments/run_spec.h"
 #include "experiments/sweep.h"
+#include "report/replay/page.h"
 // GCC 12 inlines the type macro's default object of CompensationOptions here and warns that its
 // std::optional settle_steps may be uninitialized, which it is not: a known false positive of
 // -Wmaybe-uninitialized with std::optional, silenced for this header's from_json alone (clang
@@ -173,6 +174,12 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   walk.faults = spec.faults;
   walk.settle = saved.at("settle").get<long>();
   walk.steps = saved.at("steps").get<long>();
+  // Checked before a step is walked: a record edited to 10^8 steps is no replay.
+  if (!report::kReplayStepLimits.contains(walk.steps)) {
+    throw BadInput(name + ": steps " + std::to_string(walk.steps) + " is outside " +
+                   report::kReplayStepLimits.text() +
+                   ", the steps a replay holds (docs/replay.md)");
+  }
   walk.window = saved.at("window").get<long>();
   walk.keep_record = false;
   walk.observer = &recorder;
@@ -212,7 +219,8 @@ Saved kind_of(const json& saved) {
 
 }  // namespace
 
-RerunReplay rerun_learning(const json& saved, const std::string& name, const sim::SimOptions& sim) {
+RerunReplay rerun_learning(const json& saved, const std::string& name, const sim::SimOptions& sim,
+                           sim::Observer* watch) {
   try {
     experiments::RunSpec spec;
     set_robot(spec, saved, name);
@@ -230,7 +238,8 @@ RerunReplay rerun_learning(const json& saved, const std::string& name, const sim
     check(spec, name);
     const sim::SimModel model = experiments::make_model(spec.robot);
     ReplayRecorder recorder;
-    const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &recorder);
+    sim::Observers watched({&recorder, watch});  // a null watch is skipped
+    const experiments::LearningRun run = experiments::run_learning(model, spec, 0, &watched);
     if (!reruns_as_saved(saved, experiments::learn_json(spec, run.result))) differs(name);
     const robot::Morphology& morph = experiments::morphology(spec.robot);
     return {recorder.recording(), "learn: " + morph.name + ", " + faults_title(morph, spec.faults) +

@@ -39,8 +39,9 @@ RerunReplay rerun_saved(const std::filesystem::path& path, const sim::SimOptions
 bool is_experiment_run(const std::filesystem::path& path);
 
 // A learning result (the JSON of `learn --json`) made again and recorded; `name` names it in
-// messages ("'learn.json'", "the result"). Throws BadInput as rerun_saved does.
+// messages ("'learn.json'", "the result"). `watch`, if given, sees every step too (Python's
+// Ctrl-C stops the run from it). Throws BadInput as rerun_saved does.
 RerunReplay rerun_learning(const nlohmann::json& result, const std::string& name,
-                           const sim::SimOptions& sim);
+                           const sim::SimOptions& sim, sim::Observer* watch = nullptr);
 
 }  // namespace multicpg::report
