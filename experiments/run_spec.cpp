@@ -44,7 +44,7 @@ void validate(const RunSpec& spec) {
       // Before any walk, the detection's too (a real robot walks it).
       learning::check_learner(spec.learning->learner, spec.robot.kind,
                               body::failing_legs(spec.faults), learning::criterion(*spec.learning),
-                              spec.learning->annealing.period_set);
+                              spec.learning->search.period_set);
     });
   });
   if (spec.faults.empty()) {

@@ -103,13 +103,13 @@ TEST(CliPlot, LearnMarksFaultDetectionAndLearnedGait) {
   mc::learning::CompensationOptions& o = spec.learning.emplace();
   o.mode = mc::learning::Mode::paper;
   o.seed = 1;
-  o.annealing.max_trials = 3;
+  o.search.max_trials = 3;
   spec.start = mc::experiments::learning_start(o.mode);
   spec.faults = mc::body::fail_at({leg("R1")}, 0);
   mc::experiments::validate(spec);
   mc::apps::PlotOutput plot(dir + "/learn.png");
   const auto run = mc::experiments::run_learning(hexapod(), spec, 0, plot.observer());
-  plot.learning(run.result, o.annealing.threshold_deg);
+  plot.learning(run.result, o.search.threshold_deg);
   const mc::report::RunPicture picture = plot.picture();
   using mc::report::RunMarkKind;
   const auto faults = marks_of(picture, RunMarkKind::fault);
@@ -141,7 +141,7 @@ TEST(CliPlot, RobustLearnPathWalksOnAfterLearning) {
   mc::learning::CompensationOptions& o = spec.learning.emplace();  // robust, reflex: the default
   o.learner = mc::learning::resolve_learner({"random", nlohmann::json::object()});
   o.seed = 4;
-  o.annealing.max_trials = 2;
+  o.search.max_trials = 2;
   o.max_episodes = 1;
   o.monitor_windows = 1;
   spec.start = mc::experiments::learning_start(o.mode);
@@ -150,7 +150,7 @@ TEST(CliPlot, RobustLearnPathWalksOnAfterLearning) {
   mc::apps::PlotOutput plot(dir + "/learn.png");
   const auto run = mc::experiments::run_learning(hexapod(), spec, 0, plot.observer());
   ASSERT_EQ(run.result.episodes.size(), 1u) << "R1+R3 deviates with the reflex alone";
-  plot.learning(run.result, o.annealing.threshold_deg);
+  plot.learning(run.result, o.search.threshold_deg);
   const mc::report::RunPicture picture = plot.picture();
   const auto learned = marks_of(picture, mc::report::RunMarkKind::learned);
   ASSERT_EQ(learned.size(), 1u);

@@ -82,7 +82,7 @@ TEST(CliFigure, DrawsNamedFiguresAndRejectsUnknownNames) {
   EXPECT_TRUE(is_png(fs::path(dir) / "figures/fig02-gaits.png"));
   EXPECT_TRUE(fs::exists(fs::path(dir) / "figures/fig06-cpg-sync.svg"));
   EXPECT_TRUE(fs::exists(fs::path(dir) / "figures/fig06-cpg-sync.csv"));
-  expect_bad_input("figure fig99 --out " + dir, "known: gait");
+  expect_bad_input("figure fig99 --out " + dir, "unknown figure 'fig99' (gait, cpg-sync");
   expect_bad_input("figure gait --out /proc/multicpg-out", "/proc/multicpg-out");
   fs::remove_all(dir);
 }

@@ -149,7 +149,7 @@ TEST(Learners, TheTableNamesEveryLearnerAndRefusesUnknownOnes) {
     FAIL() << "an unknown learner was accepted";
   } catch (const OptionError& e) {
     EXPECT_EQ(e.key(), "name");
-    EXPECT_NE(std::string(e.what()).find("annealing, random, greedy, bayes, prior"),
+    EXPECT_NE(std::string(e.what()).find("annealing, random, greedy, bayes or prior"),
               std::string::npos);
   }
   EXPECT_THROW(learning::resolve_learner({"bayes", {{"kappa_typo", 1.0}}}), OptionError);

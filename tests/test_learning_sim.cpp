@@ -62,7 +62,7 @@ TEST(LearningSim, SameSeedGivesAnIdenticalRun) {
   EXPECT_EQ(a.record.yaw_deg, b.record.yaw_deg);
 }
 
-constexpr int kRandomSearchMaxTrials = 60;
+constexpr int kRandomSearchMaxTrials = 30;
 
 TEST(LearningSim, RandomSearchNeedsTheMostTrials) {
   const std::string dir = multicpg::testing::make_temp_dir("beta-");

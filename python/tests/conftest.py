@@ -13,10 +13,16 @@ SOURCE_DIR = pathlib.Path(os.environ.get("MULTICPG_SOURCE_DIR",
 EXE = pathlib.Path(os.environ.get("MULTICPG_EXE", SOURCE_DIR / "build" / "multicpg"))
 
 
+# A run that went to its end but whose learning did not converge exits 3 with every output
+# written (docs/cli.md "Exit codes and signals"): a result these tests compare, not a failure.
+NOT_CONVERGED = 3
+
+
 def run_cli(*args, check=True):
     """Runs the CLI; returns the CompletedProcess (text)."""
     done = subprocess.run([str(EXE), *args], capture_output=True, text=True, check=False)
-    if check and done.returncode != 0:
+    finished = done.returncode == 0 or (done.returncode == NOT_CONVERGED and not done.stderr)
+    if check and not finished:
         raise AssertionError(f"multicpg {' '.join(args)} exited {done.returncode}: {done.stderr}")
     return done
 
