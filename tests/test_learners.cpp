@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -189,6 +190,40 @@ TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
   }
   fs::remove(csv);
   EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
+}
+
+// A manifest whose checksum still matches its table but whose own fields are damaged is refused
+// with one line naming the file and the field, never read as some other dataset.
+TEST_F(Dataset, ADamagedManifestIsRefusedNamingTheFileAndTheField) {
+  const fs::path manifest = stem() + ".json";
+  const std::string good = read_file(manifest.string());
+  const auto refused = [&](const std::string& what, const std::string& field,
+                           const std::function<void(nlohmann::json&)>& damage) {
+    nlohmann::json m = nlohmann::json::parse(good);
+    damage(m);
+    std::ofstream(manifest) << m.dump(2);
+    try {
+      learning::read_landscape_dataset(stem());
+      ADD_FAILURE() << what << " was read";
+    } catch (const BadInput& e) {
+      const std::string line = e.what();
+      EXPECT_NE(line.find("synthetic.json"), std::string::npos) << what << ": " << line;
+      EXPECT_NE(line.find(field), std::string::npos) << what << ": " << line;
+      EXPECT_EQ(line.find('\n'), std::string::npos) << what << ": " << line;
+    }
+  };
+  refused("version 1.5", "version", [](nlohmann::json& m) { m["version"] = 1.5; });
+  refused("threshold -1", "threshold", [](nlohmann::json& m) { m["threshold_deg"] = -1; });
+  refused("threshold 0", "threshold", [](nlohmann::json& m) { m["threshold_deg"] = 0; });
+  refused("threshold 1e308", "threshold", [](nlohmann::json& m) { m["threshold_deg"] = 1e308; });
+  refused("count 125.5", "combinations",
+          [](nlohmann::json& m) { m["scenarios"][0]["combinations"] = 125.5; });
+  refused("no checksum", "checksum", [](nlohmann::json& m) { m.erase("checksum"); });
+  refused("a numeric checksum", "checksum", [](nlohmann::json& m) { m["checksum"] = 7; });
+  std::ofstream(manifest) << "";
+  EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
+  std::ofstream(manifest) << good;
+  EXPECT_NO_THROW(learning::read_landscape_dataset(stem()));
 }
 
 TEST(Learners, TheRepositoryDatasetsReadWhole) {
