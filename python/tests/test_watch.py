@@ -10,9 +10,6 @@ import time
 
 import multicpg
 
-# Generous: the API looks at signals every 0.1 s; a busy machine may still be slow to schedule.
-INTERRUPT_BOUND_S = 30.0
-
 # Prints "ready CALL" before each long call (each far longer than the test waits), then what ended it.
 INTERRUPTED = r"""
 import sys, time
@@ -57,13 +54,11 @@ def test_ctrl_c_stops_learn_and_step_and_the_simulation_steps_on():
         for call in ("learn", "step", "experiment"):
             assert process.stdout.readline().strip() == f"ready {call}"
             time.sleep(1.0)  # well inside the call
-            sent = time.monotonic()
             process.send_signal(signal.SIGINT)
+            # Each call runs far longer than the test (its "finished" line would fail it); a
+            # hang is caught by ctest's timeout: no time is asserted.
             line = process.stdout.readline().strip()
-            waited = time.monotonic() - sent
             assert line == f"interrupted {call}", process.stderr.read()
-            assert waited < INTERRUPT_BOUND_S
-            print(f"{call}: KeyboardInterrupt {waited:.3f} s after SIGINT")
         assert process.stdout.readline().strip() == "stepped on 10"
         # The stop asked of the experiment is forgotten once it has stopped.
         assert process.stdout.readline().strip() == "experiment rows 1"
