@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""The tunnel as the score: the default run's learning, live, on every hexapod leg loss and on
+joint, motor and body faults (docs/learning.md "The default run in the tunnel").
+
+Each (scenario, learner, seed) runs `multicpg tunnel --learn` in the default mode (robust, the
+steering reflex on) with every other option at its default: `multicpg tunnel --disable S --learn
+--learner L --seed K --json` (a fault: `--fault SPEC@0`). The tables give, per scenario and
+learner: runs that passed the tunnel; runs that needed learning (a deviation was detected); the
+median trials of the first episode among them and how many stayed within 10; episodes. Resumable:
+finished runs are kept in OUT/runs.
+
+    /usr/bin/python3 scripts/tunnel_check.py --out tunnel-check --learners annealing,prior
+
+`--scenarios` takes leg sets and faults ("R1+R3", "R1.TC:locked") or the groups `leg-losses`
+(all 41) and `faults` (the 12 below); `--seeds N` runs seeds 1..N (default 10).
+"""
+
+import argparse
+import itertools
+import json
+import pathlib
+import statistics
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+LEGS = ["R1", "R2", "R3", "L1", "L2", "L3"]
+# Every loss of one to three legs (the landscape dataset's 41 scenarios).
+LEG_LOSSES = ["+".join(c) for n in (1, 2, 3) for c in itertools.combinations(LEGS, n)]
+# The two that lose a whole side: no combination of periods walks them straight.
+WHOLE_SIDE = {"R1+R2+R3", "L1+L2+L3"}
+# Joint, motor and body faults (docs/faults.md "Fault kinds"): each kind at least once, front,
+# middle and hind legs on both sides, and the yaw sensor.
+FAULTS = ["R1.TC:locked", "R2.CTr:locked", "L3.TC:locked", "L1.CTr:passive", "R3.FTi:passive",
+          "L2.CTr:weak=0.3", "R3:weak=0.3", "L2:short=0.5", "R1:short=0.5", "L1:slip=0.2",
+          "imu:drift=0.5", "imu:noise=1"]
+GROUPS = {"leg-losses": LEG_LOSSES, "faults": FAULTS}
+KNOWN_LEARNERS = ["annealing", "random", "greedy", "bayes", "prior"]
+SEEDS = 10
+WITHIN = 10  # trials: the issue's bound on a first episode
+
+
+def run(exe, out, scenario, learner, seed):
+    path = out / f"{scenario}_{learner}_{seed}.json"
+    if path.exists():
+        return
+    fault = ["--fault", f"{scenario}@0"] if ":" in scenario else ["--disable", scenario]
+    result = subprocess.run([exe, "tunnel", *fault, "--learn", "--learner", learner, "--seed",
+                             str(seed), "--json"], capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"tunnel_check: {scenario} {learner} {seed}: {result.stderr.strip()}")
+    tmp = path.with_suffix(".tmp")
+    tmp.write_text(result.stdout)
+    tmp.replace(path)
+
+
+def scenarios_of(text):
+    out = []
+    for item in text.split(","):
+        out += GROUPS.get(item, [item])
+    return out
+
+
+def row(runs):
+    """One table row's cells from a pair's finished runs (tunnel --learn --json)."""
+    passed = sum(r["passed"] for r in runs)
+    learned = [r["learning"]["episodes"] for r in runs if r["learning"]["episodes"]]
+    first = sorted(e[0]["trials"] for e in learned)
+    within = sum(t <= WITHIN for t in first)
+    episodes = sorted(len(e) for e in learned)
+    return {"runs": len(runs), "passed": passed, "learned": len(learned),
+            "median_trials": statistics.median(first) if first else None,
+            "within": within, "median_episodes": statistics.median(episodes) if episodes else None}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", required=True, help="folder for the runs and the tables")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--seeds", type=int, default=SEEDS, help="seeds 1..N of each pair")
+    parser.add_argument("--multicpg", default=str(ROOT / "build" / "multicpg"))
+    parser.add_argument("--learners", default="annealing,prior",
+                        help="comma-separated, of " + ", ".join(KNOWN_LEARNERS))
+    parser.add_argument("--scenarios", default="leg-losses,faults",
+                        help="comma-separated leg sets and faults, or the groups "
+                             + " and ".join(GROUPS))
+    args = parser.parse_args()
+    if args.seeds < 1:
+        parser.error(f"--seeds must be at least 1, got {args.seeds}")
+    learners = args.learners.split(",")
+    for name in learners:
+        if name not in KNOWN_LEARNERS:
+            parser.error(f"unknown learner '{name}' (known: {', '.join(KNOWN_LEARNERS)})")
+    scenarios = scenarios_of(args.scenarios)
+    for s in scenarios:
+        if ":" not in s and s not in LEG_LOSSES:
+            parser.error(f"unknown scenario '{s}' (leg sets such as R1+R3, faults such as "
+                         "R1.TC:locked, or the groups " + " and ".join(GROUPS) + ")")
+    out = pathlib.Path(args.out)
+    runs_dir = out / "runs"
+    runs_dir.mkdir(parents=True, exist_ok=True)
+    with ThreadPoolExecutor(args.jobs) as pool:
+        for f in [pool.submit(run, args.multicpg, runs_dir, s, l, k)
+                  for s in scenarios for l in learners for k in range(1, args.seeds + 1)]:
+            f.result()
+
+    lines = [f"| scenario | learner | runs | tunnel passed | learning needed | median trials "
+             f"(first episode) | within {WITHIN} | median episodes |",
+             "|---|---|---|---|---|---|---|---|"]
+    pooled = {}
+    for s in scenarios:
+        for l in learners:
+            runs = [json.loads((runs_dir / f"{s}_{l}_{k}.json").read_text())
+                    for k in range(1, args.seeds + 1)]
+            c = row(runs)
+            lines.append(f"| {s} | {l} | {c['runs']} | {c['passed']}/{c['runs']} | "
+                         f"{c['learned']}/{c['runs']} | "
+                         f"{'–' if c['median_trials'] is None else c['median_trials']} | "
+                         f"{c['within']}/{c['learned']} | "
+                         f"{'–' if c['median_episodes'] is None else c['median_episodes']} |")
+            group = "faults" if ":" in s else ("whole side" if s in WHOLE_SIDE else "leg losses")
+            p = pooled.setdefault((group, l), {"runs": 0, "passed": 0, "trials": [],
+                                               "within": 0, "learned": 0})
+            p["runs"] += c["runs"]
+            p["passed"] += c["passed"]
+            for r in runs:
+                if r["learning"]["episodes"]:
+                    p["trials"].append(r["learning"]["episodes"][0]["trials"])
+            p["within"] += c["within"]
+            p["learned"] += c["learned"]
+    lines += ["", f"| scenarios | learner | runs | tunnel passed | median trials where learning "
+              f"was needed | within {WITHIN} |", "|---|---|---|---|---|---|"]
+    for (group, l), p in sorted(pooled.items()):
+        share = 100 * p["passed"] / p["runs"]
+        median = statistics.median(p["trials"]) if p["trials"] else "–"
+        within = (f"{p['within']}/{p['learned']} ({100 * p['within'] / p['learned']:.0f} %)"
+                  if p["learned"] else "–")
+        lines.append(f"| {group} | {l} | {p['runs']} | {p['passed']}/{p['runs']} ({share:.0f} %) "
+                     f"| {median} | {within} |")
+    (out / "tunnel-check.md").write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
