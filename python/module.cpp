@@ -18,7 +18,9 @@
 #include "common/provenance.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
+#include "learning/landscapes.h"
 #include "learning/steering.h"
+#include "python/args.h"
 #include "python/faults.h"
 #include "python/learning.h"
 #include "python/replay.h"
@@ -77,6 +79,19 @@ PYBIND11_MODULE(_multicpg, m) {
       "What this module is: version (the project's), git_commit it was built from ('+dirty'\n"
       "with uncommitted changes, 'unknown' outside a git checkout), mujoco_version, compiler\n"
       "and pybind11_version.");
+  m.def(
+      "landscape_dataset",
+      [](const std::string& robot, bool reflex) {
+        const multicpg::robot::RobotKind kind =
+            mp::named("robot", [&] { return multicpg::robot::parse_robot(robot); });
+        return learning::repository_dataset(kind, reflex).string();
+      },
+      arg("robot") = "hexapod", py::kw_only(), arg("reflex") = false,
+      "The landscape dataset of `robot` the prior-based learner learns from when its options\n"
+      "name none (reflex: walked with the steering reflex, for robust runs that steer), as the\n"
+      "path of its files without their extension, found on the search path: $MULTICPG_DATA,\n"
+      "the data installed with this package, the source tree's data/ (docs/python.md\n"
+      "\"Datasets\"). ValueError naming every place looked when none has it.");
 
   // The CLI's defaults and limits, for Python code that walks the same runs (multicpg.env).
   m.attr("DEFAULT_THRESHOLD_DEG") = learning::kDefaultThresholdDeg;
