@@ -27,6 +27,7 @@
 #include "python/robots.h"
 #include "python/simulations.h"
 #include "python/state.h"
+#include "python/typed.h"
 #include "report/render.h"
 #include "robot/leg_sets.h"
 #include "sim/mujoco_guard.h"
@@ -81,17 +82,18 @@ PYBIND11_MODULE(_multicpg, m) {
       "and pybind11_version.");
   m.def(
       "landscape_dataset",
-      [](const std::string& robot, bool reflex) {
-        const multicpg::robot::RobotKind kind =
-            mp::named("robot", [&] { return multicpg::robot::parse_robot(robot); });
-        return learning::repository_dataset(kind, reflex).string();
+      [](mp::RobotArg robot, mp::BoolArg reflex) {
+        return learning::repository_dataset(mp::robot_arg(robot)->spec.kind,
+                                            mp::flag(reflex, "reflex"))
+            .string();
       },
       arg("robot") = "hexapod", py::kw_only(), arg("reflex") = false,
-      "The landscape dataset of `robot` the prior-based learner learns from when its options\n"
-      "name none (reflex: walked with the steering reflex, for robust runs that steer), as the\n"
-      "path of its files without their extension, found on the search path: $MULTICPG_DATA,\n"
-      "the data installed with this package, the source tree's data/ (docs/python.md\n"
-      "\"Datasets\"). ValueError naming every place looked when none has it.");
+      "The landscape dataset the prior-based learner learns from when its options name none,\n"
+      "of `robot` (a Robot, a robot name or a robot file: its layout's) walked with the\n"
+      "steering reflex or not (`reflex`: for robust runs that steer), as the path of its files\n"
+      "without their extension, found on the search path: $MULTICPG_DATA, the data installed\n"
+      "with this package, the source tree's data/ (docs/python.md \"Datasets\"). ValueError\n"
+      "naming every place looked when none has it.");
 
   // The CLI's defaults and limits, for Python code that walks the same runs (multicpg.env).
   m.attr("DEFAULT_THRESHOLD_DEG") = learning::kDefaultThresholdDeg;
