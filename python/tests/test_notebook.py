@@ -2,7 +2,7 @@
 cell error, draws its figures, and its kernel imports the multicpg this test imports.
 
 MULTICPG_NOTEBOOK_KERNEL names the kernel to run it with (tests/python_install_test.sh: a venv's
-kernel, docs/python.md "The notebook"); by default Debian's python3."""
+kernel, docs/python.md "The notebook from the venv"); by default Debian's python3."""
 
 import os
 import pathlib
