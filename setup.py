@@ -3,7 +3,10 @@
 setuptools (Debian's) drives the project's own CMake: build_ext configures the repository with
 MULTICPG_PYTHON_ONLY (the libraries and the module, none of the CLI's or tests' packages) for the
 interpreter pip runs, builds the one target _multicpg and puts it beside the package
-python/multicpg. The version is the one project() in CMakeLists.txt sets.
+python/multicpg. build_py copies the landscape datasets (data/landscapes/*) into the package as
+multicpg/data/landscapes, where the installed module finds them (learning/landscapes.h,
+docs/python.md "Datasets"); git holds them once, in data/. The version is the one project() in
+CMakeLists.txt sets.
 
 Environment:
   MULTICPG_BUILD_DIR  an existing CMake build directory of this repository (e.g. build/, made by
@@ -23,11 +26,15 @@ import sys
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+from setuptools.command.build_py import build_py
 
 ROOT = pathlib.Path(__file__).resolve().parent
 # setuptools writes its build and metadata folders here (egg_base must exist beforehand).
 (ROOT / "build" / "pip").mkdir(parents=True, exist_ok=True)
 TARGET = "_multicpg"
+# The datasets, and where the package holds them (learning/landscapes.cpp looks beside the module).
+DATASETS = ROOT / "data" / "landscapes"
+PACKAGE_DATASETS = pathlib.Path("multicpg") / "data" / "landscapes"
 
 
 def project_version():
@@ -61,13 +68,26 @@ class CMakeBuild(build_ext):
         shutil.copyfile(built[-1], destination)
 
 
+class BuildPy(build_py):
+    """Builds the package and copies the landscape datasets into it."""
+
+    def run(self):
+        super().run()
+        destination = pathlib.Path(self.build_lib) / PACKAGE_DATASETS
+        shutil.rmtree(destination, ignore_errors=True)  # build_lib is kept: no stale datasets
+        destination.mkdir(parents=True)
+        for dataset in sorted(DATASETS.iterdir()):
+            if dataset.is_file():
+                shutil.copyfile(dataset, destination / dataset.name)
+
+
 setup(
     version=project_version(),
     packages=["multicpg"],
     package_dir={"": "python"},
     package_data={"multicpg": ["py.typed", "*.pyi"]},
     ext_modules=[Extension(f"multicpg.{TARGET}", sources=[])],
-    cmdclass={"build_ext": CMakeBuild},
+    cmdclass={"build_ext": CMakeBuild, "build_py": BuildPy},
     zip_safe=False,
     options={"build": {"build_base": "build/pip"}, "egg_info": {"egg_base": "build/pip"}},
 )

@@ -1,10 +1,13 @@
 #include "learning/landscapes.h"
 
+#include <dlfcn.h>
+#include <sys/auxv.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <set>
@@ -54,6 +57,40 @@ fs::path csv_path(const fs::path& stem) {
 }
 fs::path manifest_path(const fs::path& stem) {
   return fs::path(stem.string() + ".json");
+}
+
+// The datasets' folder in each directory of the search path (data/landscapes in the source tree).
+constexpr const char* kLandscapesDir = "landscapes";
+// Installed beside the running code: the Python package multicpg/ holds the module's shared
+// library and data/ (setup.py); an installed program is <prefix>/bin/multicpg with its data in
+// <prefix>/share/multicpg (apps/CMakeLists.txt), as its gnuplot scripts are.
+constexpr const char* kPackageData = "data";
+constexpr const char* kInstalledData = "../share/multicpg";
+
+// $MULTICPG_DATA, unless unset or empty.
+std::optional<fs::path> data_env() {
+  const char* given = std::getenv(kDataEnv);
+  if (given == nullptr || *given == '\0') return std::nullopt;
+  return fs::path(given);
+}
+
+// The data directory installed beside the code running this, or nothing when it cannot tell.
+// dladdr names the object holding `anchor`: the Python module's shared library, or the program
+// itself when that object also holds the program's headers (AT_PHDR); a program's name as dladdr
+// gives it is argv[0], so its path is read from /proc/self/exe instead.
+fs::path installed_data_dir() {
+  static const int anchor = 0;
+  Dl_info code{};
+  if (dladdr(&anchor, &code) == 0 || code.dli_fname == nullptr) return {};
+  Dl_info program{};
+  const void* headers = reinterpret_cast<const void*>(getauxval(AT_PHDR));
+  if (dladdr(headers, &program) == 0 || program.dli_fbase != code.dli_fbase) {
+    return fs::path(code.dli_fname).parent_path() / kPackageData;
+  }
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return (exe.parent_path() / kInstalledData).lexically_normal();
 }
 
 std::string rounded(double v, double resolution, int decimals) {
@@ -200,9 +237,27 @@ nlohmann::json window_json(const body::WindowMeasure& w, bool reflex) {
 
 }  // namespace
 
+std::vector<fs::path> dataset_search_path() {
+  std::vector<fs::path> dirs;
+  if (const std::optional<fs::path> given = data_env()) dirs.push_back(*given);
+  if (fs::path installed = installed_data_dir(); !installed.empty()) {
+    dirs.push_back(std::move(installed));
+  }
+  dirs.emplace_back(MULTICPG_DATA_DIR);
+  return dirs;
+}
+
 std::filesystem::path repository_dataset(robot::RobotKind robot, bool reflex) {
-  return fs::path(MULTICPG_DATA_DIR) / "landscapes" /
-         (std::string(robot::to_string(robot)) + (reflex ? "-reflex" : ""));
+  const std::string name = std::string(robot::to_string(robot)) + (reflex ? "-reflex" : "");
+  std::string looked = data_env() ? std::string() : std::string("$") + kDataEnv + " unset";
+  for (const fs::path& dir : dataset_search_path()) {
+    const fs::path path = dir / kLandscapesDir / name;
+    std::error_code ec;
+    if (fs::exists(manifest_path(path), ec)) return path;
+    looked += (looked.empty() ? "" : ", ") + path.parent_path().string();
+  }
+  throw BadInput("no landscape dataset " + name + " (.json, .csv.gz) in " + looked +
+                 " (docs/python.md \"Datasets\")");
 }
 
 std::optional<std::size_t> ScenarioLandscape::find(const Periods& periods) const {

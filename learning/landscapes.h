@@ -87,8 +87,17 @@ struct LandscapeDataset {
 inline constexpr double kLandscapeAngleResolutionDeg = 1e-3;
 inline constexpr double kLandscapeEffortResolution = 1e-4;
 
-// The repository's dataset of `robot` walked that way (data/landscapes/<robot> for periods
-// alone, <robot>-reflex with the reflex; built by examples/landscape-every-<robot>*.toml).
+// Where the repository's datasets are looked for, in this order (docs/python.md "Datasets"),
+// each a directory holding landscapes/: $MULTICPG_DATA when set; the data installed beside the
+// running code (the Python package's data/, which setup.py ships, or <prefix>/share/multicpg of
+// an installed program); the source tree's data/, for the program built in place.
+inline constexpr const char* kDataEnv = "MULTICPG_DATA";
+std::vector<std::filesystem::path> dataset_search_path();
+
+// The repository's dataset of `robot` walked that way (landscapes/<robot> for periods alone,
+// <robot>-reflex with the reflex; built by examples/landscape-every-<robot>*.toml): the first one
+// on dataset_search_path() with its manifest. Throws BadInput naming every place it looked when
+// none has it.
 std::filesystem::path repository_dataset(robot::RobotKind robot, bool reflex);
 
 // Writes PATH.csv.gz and PATH.json (PATH without extension) atomically. Points of a scenario in

@@ -18,13 +18,16 @@
 #include "common/provenance.h"
 #include "learning/annealing.h"
 #include "learning/compensation.h"
+#include "learning/landscapes.h"
 #include "learning/steering.h"
+#include "python/args.h"
 #include "python/faults.h"
 #include "python/learning.h"
 #include "python/replay.h"
 #include "python/robots.h"
 #include "python/simulations.h"
 #include "python/state.h"
+#include "python/typed.h"
 #include "report/render.h"
 #include "robot/leg_sets.h"
 #include "sim/mujoco_guard.h"
@@ -77,6 +80,20 @@ PYBIND11_MODULE(_multicpg, m) {
       "What this module is: version (the project's), git_commit it was built from ('+dirty'\n"
       "with uncommitted changes, 'unknown' outside a git checkout), mujoco_version, compiler\n"
       "and pybind11_version.");
+  m.def(
+      "landscape_dataset",
+      [](mp::RobotArg robot, mp::BoolArg reflex) {
+        return learning::repository_dataset(mp::robot_arg(robot)->spec.kind,
+                                            mp::flag(reflex, "reflex"))
+            .string();
+      },
+      arg("robot") = "hexapod", py::kw_only(), arg("reflex") = false,
+      "The landscape dataset the prior-based learner learns from when its options name none,\n"
+      "of `robot` (a Robot, a robot name or a robot file: its layout's) walked with the\n"
+      "steering reflex or not (`reflex`: for robust runs that steer), as the path of its files\n"
+      "without their extension, found on the search path: $MULTICPG_DATA, the data installed\n"
+      "with this package, the source tree's data/ (docs/python.md \"Datasets\"). ValueError\n"
+      "naming every place looked when none has it.");
 
   // The CLI's defaults and limits, for Python code that walks the same runs (multicpg.env).
   m.attr("DEFAULT_THRESHOLD_DEG") = learning::kDefaultThresholdDeg;

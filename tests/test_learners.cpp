@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -242,6 +243,44 @@ TEST(Learners, TheRepositoryDatasetsReadWhole) {
     for (std::size_t i = 0; i < working; ++i) expected *= kPeriodSet.size();
     EXPECT_EQ(s.points.size(), expected);
   }
+}
+
+// The search path (learning/landscapes.h): $MULTICPG_DATA before the source tree (nothing is
+// installed beside this test program), a dataset it lacks found further on, and one that no
+// place holds refused on one line naming every place looked, by the CLI too (exit 2).
+TEST_F(Dataset, MulticpgDataComesFirstAndAMissingDatasetNamesEveryPlaceLooked) {
+  const fs::path source = learning::repository_dataset(robot::RobotKind::quadruped, false);
+  const fs::path given = fs::path(dir_) / "landscapes";
+  fs::create_directories(given);
+  learning::write_landscape_dataset(data_, given / "quadruped");
+  const auto missing = [] {
+    try {
+      learning::repository_dataset(robot::RobotKind::octopod, false);
+    } catch (const BadInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("found");
+  };
+  struct DataEnv {
+    explicit DataEnv(const std::string& dir) { setenv(learning::kDataEnv, dir.c_str(), 1); }
+    ~DataEnv() { unsetenv(learning::kDataEnv); }
+  };
+  {
+    const DataEnv env(dir_);
+    EXPECT_EQ(learning::repository_dataset(robot::RobotKind::quadruped, false),
+              given / "quadruped");
+    EXPECT_EQ(learning::repository_dataset(robot::RobotKind::quadruped, true),
+              source.parent_path() / "quadruped-reflex");
+    const std::string named = missing();
+    EXPECT_NE(named.find("no landscape dataset octopod"), std::string::npos) << named;
+    EXPECT_NE(named.find(given.string() + ", "), std::string::npos) << named;
+    EXPECT_NE(named.find(source.parent_path().string()), std::string::npos) << named;
+    EXPECT_EQ(named.find('\n'), std::string::npos) << named;
+  }
+  EXPECT_EQ(learning::repository_dataset(robot::RobotKind::quadruped, false), source);
+  EXPECT_NE(missing().find("$MULTICPG_DATA unset"), std::string::npos) << missing();
+  expect_bad_input("learn --robot octopod --disable R1 --learner prior --steering off",
+                   "no landscape dataset octopod");
 }
 
 TEST_F(Dataset, EveryLearnerKeepsTheFailedLegsAndTheSetAndRepeatsItself) {

@@ -23,6 +23,8 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 - ``replay(sim, "run.html", steps=400)`` or ``replay(learn(...), "learn.html")``: a 3D replay,
   one HTML page that opens offline in any browser and shows itself inline in Jupyter.
 - ``experiment(file_or_dict, jobs=...)``: a sweep as ``multicpg run`` runs it; its tidy table.
+- ``landscape_dataset("hexapod")``: the landscape dataset the prior learns from by default, found
+  in $MULTICPG_DATA, else in the data installed with this package, else in the source tree.
 - ``Annealer``: the annealing search one step at a time; ``env.CompensationEnv``: the learning
   task as a Gymnasium environment (one step = one trial) with its action and observation spaces.
 
@@ -57,6 +59,7 @@ from ._multicpg import (
     Terrain,
     build_info,
     film,
+    landscape_dataset,
     learn,
     measure_window,
     render,
@@ -79,6 +82,7 @@ __all__ = [
     "env",
     "experiment",
     "film",
+    "landscape_dataset",
     "learn",
     "measure_window",
     "render",

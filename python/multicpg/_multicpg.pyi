@@ -39,6 +39,9 @@ Progress = Union[bool, Callable[[Dict[str, Any]], Any]]
 def build_info() -> Dict[str, str]:
     """What this module is: version, git_commit, mujoco_version, compiler, pybind11_version."""
 
+def landscape_dataset(robot: Union[Robot, str] = "hexapod", *, reflex: bool = False) -> str:
+    """The prior's default landscape dataset of `robot`, found on the search path."""
+
 class Fault:
     """What breaks before controller step `step` of a run (paper §4; docs/faults.md)."""
 

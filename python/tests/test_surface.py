@@ -1,7 +1,11 @@
 """The module's surface: its namespace is its API, the environment documents its constructor,
-and the files its calls read must be regular files (a FIFO is refused, never waited on)."""
+the files its calls read must be regular files (a FIFO is refused, never waited on), and the
+prior's dataset is found on the documented search path."""
 
 import os
+import pathlib
+import re
+import shutil
 
 import pytest
 
@@ -64,3 +68,22 @@ def test_help_types_every_parameter():
     assert untyped == {}
     assert "disable: str | Sequence[str] | None = None" in lines["learn"]
     assert "n: int = 1" in lines["Simulation.step"]
+
+
+def test_the_priors_dataset_is_looked_for_in_multicpg_data_first(tmp_path, monkeypatch):
+    # docs/python.md "Datasets": a copy in $MULTICPG_DATA is the one the prior reads (damaged,
+    # the run is refused naming it); a dataset no place holds names every place looked.
+    source = pathlib.Path(multicpg.landscape_dataset("quadruped"))
+    copy = tmp_path / "landscapes"
+    copy.mkdir()
+    for suffix in (".json", ".csv.gz"):
+        shutil.copyfile(f"{source}{suffix}", copy / f"quadruped{suffix}")
+    monkeypatch.setenv("MULTICPG_DATA", str(tmp_path))
+    assert multicpg.landscape_dataset(multicpg.Robot("quadruped")) == str(copy / "quadruped")
+    assert multicpg.landscape_dataset("quadruped", reflex=True) == f"{source}-reflex"
+    (copy / "quadruped.json").write_text("{}")
+    with pytest.raises(ValueError, match=re.escape(str(copy / "quadruped.json"))):
+        multicpg.learn("quadruped", disable="L2", steering="off", learner="prior", progress=False)
+    with pytest.raises(ValueError, match="no landscape dataset octopod .* in " +
+                       re.escape(str(copy)) + ", .*" + re.escape(str(source.parent))):
+        multicpg.landscape_dataset("octopod")
