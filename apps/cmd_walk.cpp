@@ -16,7 +16,6 @@
 #include "apps/replay_output.h"
 #include "apps/run_flags.h"
 #include "apps/sim_flags.h"
-#include "body/course_json.h"
 #include "body/fault_spec.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
@@ -25,7 +24,6 @@
 #include "experiments/run_spec.h"
 #include "hw/hardware_record.h"
 #include "learning/compensation.h"
-#include "robot/leg_sets.h"
 #include "sim/record_csv.h"
 #include "sim/walk.h"
 
@@ -46,71 +44,17 @@ struct WalkOptions {
   bool json = false;
 };
 
-// What a walk measured, on the simulation or a real robot (body::measure_walk of what it sensed).
-struct Walked {
-  const experiments::RunSpec* spec;
-  const WalkOptions* options;
-  std::vector<int> periods;  // every leg's, as the walk started
-  double control_dt = 0.0;
-  std::optional<double> physics_dt;  // the simulation's
-  bool senses_position = true;
-  body::WalkMeasure measure;
-  double duration_s = 0.0;
-  nlohmann::json hardware;  // a real robot's record
-};
-
-nlohmann::json to_json(const Walked& w) {
-  const robot::Morphology& morph = experiments::morphology(w.spec->robot);
-  nlohmann::json faults = nlohmann::json::array();
-  for (const body::Fault& f : w.spec->faults) {
-    // A fault's one shape (body/course_json.h), its legs named as --disable names them.
-    nlohmann::json fault = f;
-    fault["legs"] = robot::leg_set_name(morph, f.legs);
-    faults.push_back(fault);
-  }
-  // Without a sensed position there is no path angle nor distance: null, never a made-up one.
-  const auto sensed = [&](double v) {
-    return w.senses_position ? nlohmann::json(v) : nlohmann::json(nullptr);
-  };
-  nlohmann::json windows = nlohmann::json::array();
-  for (const body::WindowMeasure& m : w.measure.windows) {
-    windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", sensed(m.path_deg)}});
-  }
-  const double speed = w.measure.distance_m / w.duration_s;
-  nlohmann::json j{{"robot", morph.name},
-                   {"periods", robot::period_map_json(morph, w.periods)},
-                   {"faults", faults},
-                   {"warmup", w.spec->start.warmup},
-                   {"settle", w.options->settle},
-                   {"steps", w.options->steps},
-                   {"window", w.options->window},
-                   {"control_dt_s", w.control_dt}};
-  if (w.physics_dt) j["physics_dt_s"] = *w.physics_dt;
-  j["duration_s"] = w.duration_s;
-  j["distance_m"] = sensed(w.measure.distance_m);
-  j["forward_m"] = sensed(w.measure.forward_m);
-  j["lateral_m"] = sensed(w.measure.lateral_m);
-  j["speed_m_s"] = sensed(speed);
-  j["window_deviations_deg"] = w.measure.window_deviations_deg;
-  j["windows"] = windows;
-  j["final_yaw_deg"] = w.measure.final_yaw_deg;
-  if (!w.hardware.is_null()) j["hardware"] = w.hardware;
-  experiments::record_robot_file(j, w.spec->robot);
-  return j;
-}
-
-void print_summary(std::ostream& out, const Walked& w,
+void print_summary(std::ostream& out, const experiments::WalkRecord& w,
                    const std::optional<experiments::HardwareSetup>& setup) {
   const robot::Morphology& morph = experiments::morphology(w.spec->robot);
-  const WalkOptions& o = *w.options;
   out << std::fixed << std::setprecision(3) << morph.name;
   if (setup) {
     out << " on " << setup->file.name << " (" << hw::to_string(setup->file.protocol)
-        << "): " << o.steps << " steps measured (" << w.duration_s << " s)";
+        << "): " << w.steps << " steps measured (" << w.duration_s << " s)";
   } else {
-    out << ": " << o.steps << " steps measured (" << w.duration_s << " s simulated)";
+    out << ": " << w.steps << " steps measured (" << w.duration_s << " s simulated)";
   }
-  if (o.settle > 0) out << " after " << o.settle << " settling steps";
+  if (w.settle > 0) out << " after " << w.settle << " settling steps";
   out << "; control step " << w.control_dt << " s";
   if (w.physics_dt) out << ", physics step " << std::setprecision(6) << *w.physics_dt << " s";
   out << "\nperiods: ";
@@ -130,14 +74,14 @@ void print_summary(std::ostream& out, const Walked& w,
         << w.measure.forward_m << " m, lateral " << w.measure.lateral_m << " m), speed "
         << std::setprecision(2) << 100.0 * w.measure.distance_m / w.duration_s << " cm/s\n";
   }
-  out << std::setprecision(2) << "per " << o.window << "-step window: yaw change"
+  out << std::setprecision(2) << "per " << w.window << "-step window: yaw change"
       << (w.senses_position ? " and path angle" : " (no position sensed: no path angle)")
       << " (deg, + = left):\n";
   if (w.measure.windows.empty()) out << "  (no complete window)\n";
   for (std::size_t k = 0; k < w.measure.windows.size(); ++k) {
-    const long first = o.settle + static_cast<long>(k) * o.window;
+    const long first = w.settle + static_cast<long>(k) * w.window;
     out << "  steps " << std::setw(6) << first << "-" << std::left << std::setw(6)
-        << first + o.window << std::right << std::setw(9) << w.measure.windows[k].yaw_deg;
+        << first + w.window << std::right << std::setw(9) << w.measure.windows[k].yaw_deg;
     if (w.senses_position) out << std::setw(9) << w.measure.windows[k].path_deg;
     out << "\n";
   }
@@ -190,7 +134,8 @@ void run_walk(const WalkOptions& o) {
   if (csv) csv->commit();
   replay.write();
   plot.write();
-  Walked w{&spec, &o, {}, model.control_dt, {}, true, {}, 0.0, body->hardware()};
+  experiments::WalkRecord w{&spec, o.settle, o.steps, o.window,        {}, model.control_dt, {},
+                            true,  {},       0.0,     body->hardware()};
   w.periods = spec.start.periods.empty() ? std::vector<int>(morph.size(), learning::kStartPeriod)
                                          : spec.start.periods;
   if (!setup) w.physics_dt = model.physics_dt;
@@ -198,7 +143,7 @@ void run_walk(const WalkOptions& o) {
   w.measure = body::measure_walk(walked.boundaries, walked.last);
   w.duration_s = static_cast<double>(o.steps) * model.control_dt;
   if (o.json) {
-    std::cout << to_json(w).dump(2) << "\n";
+    std::cout << experiments::walk_json(w).dump(2) << "\n";
     return;
   }
   print_summary(std::cout, w, setup);

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "common/atomic_file.h"
+#include "hw/hardware_body.h"
 
 namespace multicpg::apps {
 
@@ -19,7 +20,7 @@ std::string hardware_summary(const nlohmann::json& h) {
   const nlohmann::json& t = h.at("timing");
   std::string text;
   const double period = t.at("period_mean_s").get<double>();
-  if (h.at("pacing") == "lock_step") {
+  if (h.at("pacing") == hw::kPacingNames.name(hw::Pacing::lock_step)) {
     text = fmt::format("loop: lock-step, {:.0f} steps/s", period > 0.0 ? 1.0 / period : 0.0);
   } else {
     text = fmt::format("loop: {:.1f} Hz (period {:.2f} ms, p99 jitter {:.2f} ms, {} overruns)",
@@ -33,7 +34,8 @@ std::string hardware_summary(const nlohmann::json& h) {
       if (count.get<long>() > 0) {
         errors +=
             fmt::format("{}{} {} {}", errors.empty() ? "" : ", ", line, kind, count.get<long>());
-        late_only = late_only && (kind == "timeout" || kind == "short_answer");
+        late_only = late_only && (kind == hw::to_string(hw::LinkError::timeout) ||
+                                  kind == hw::to_string(hw::LinkError::short_answer));
       }
     }
   }

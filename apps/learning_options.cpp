@@ -2,11 +2,15 @@
 
 #include <fmt/format.h>
 
+#include <optional>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "apps/flag_checks.h"
 #include "common/errors.h"
 #include "learning/learners.h"
+#include "learning/number_options.h"
 
 namespace multicpg::apps {
 
@@ -26,10 +30,48 @@ std::vector<std::string> learner_name_list() {
   return names;
 }
 
+namespace {
+
+// One numeric learning option's flag, as learning/number_options.h declares it.
+void add_number_flag(CLI::App& cmd, LearningFlags& f, const learning::LearningNumber& option) {
+  std::visit(
+      [&](const auto& n) {
+        using T = typename std::decay_t<decltype(n)>::Value;
+        auto& value = n.field(f.options);
+        CLI::Option* flag = cmd.add_option("--" + std::string(n.flag), value, std::string(n.help))
+                                ->check(in(n.limits));
+        // A default worked out by the run (settle's) has none to show.
+        if constexpr (!std::is_same_v<std::decay_t<decltype(value)>, std::optional<T>>) {
+          flag->capture_default_str();
+        }
+        if (n.robust_only) flag->each([&f](const std::string&) { f.robust_only = true; });
+      },
+      option);
+}
+
+// "--steering, --hold-windows, ... and --no-period-learning": the flags of robust mode alone.
+std::string robust_flags() {
+  std::vector<std::string> flags{"--steering"};
+  for (const learning::LearningNumber& option : learning::kLearningNumbers) {
+    std::visit(
+        [&](const auto& n) {
+          if (n.robust_only) flags.push_back("--" + std::string(n.flag));
+        },
+        option);
+  }
+  flags.emplace_back("--no-period-learning");
+  std::string out;
+  for (std::size_t i = 0; i < flags.size(); ++i) {
+    out += (i == 0 ? "" : i + 1 == flags.size() ? " and " : ", ") + flags[i];
+  }
+  return out;
+}
+
+}  // namespace
+
 void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
   learning::CompensationOptions& o = f.options;
   o.seed = 1;
-  const auto robust_only = [&f](const std::string&) { f.robust_only = true; };
   cmd.add_option_function<std::string>(
          "--mode", [&o](const std::string& text) { o.mode = learning::parse_mode(text); },
          "robust (yaw and path angle, several windows to accept, monitoring, steering) "
@@ -53,16 +95,6 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
          "robust mode: reflex (orientation reflex on the VRN steering inputs) or off")
       ->check(one_of(steering_names(), "steering"))
       ->default_str(std::string(learning::to_string(o.steering)));
-  cmd.add_option("--hold-windows", o.hold_windows,
-                 "robust mode: consecutive windows a combination must hold")
-      ->check(in(learning::kHoldWindowsLimits))
-      ->capture_default_str()
-      ->each(robust_only);
-  cmd.add_option("--monitor-windows", o.monitor_windows,
-                 "robust mode: clean windows after the last fault or episode before the run ends")
-      ->check(in(learning::kMonitorWindowsLimits))
-      ->capture_default_str()
-      ->each(robust_only);
   cmd.add_flag_callback(
       "--no-period-learning",
       [&f] {
@@ -76,32 +108,9 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
         ->check(in(learning::kBetaLimits))
         ->default_str(fmt::format("{}", learning::kDefaultBeta));
   }
-  cmd.add_option("--threshold", o.search.threshold_deg,
-                 "deviation (deg) below which learning stops")
-      ->check(in(learning::kThresholdLimits))
-      ->capture_default_str();
-  cmd.add_option("--window", o.window_steps, "steps per measured window")
-      ->check(in(learning::kWindowStepsLimits))
-      ->capture_default_str();
-  cmd.add_option("--settle", o.settle_steps,
-                 "unmeasured steps after each period change (default: slowest CPG lock + "
-                 "longest delay, 337 for the hexapod; robust mode: 863)")
-      ->check(in(learning::kSettleStepsLimits));
-  cmd.add_option("--max-trials", o.search.max_trials,
-                 "trials an episode may take before it ends 'not converged'")
-      ->check(in(learning::kMaxTrialsLimits))
-      ->capture_default_str();
-  cmd.add_option("--max-episodes", o.max_episodes,
-                 "robust mode: episodes (detection, then learning) before the run ends 'episode "
-                 "cap reached'")
-      ->check(in(learning::kMaxEpisodesLimits))
-      ->capture_default_str()
-      ->each(robust_only);
-  cmd.add_option("--step-budget", o.step_budget,
-                 "controller steps the run may spend in trials, over all its episodes, before it "
-                 "ends 'budget reached' (docs/learning.md \"Step budget\")")
-      ->check(in(learning::kStepBudgetLimits))
-      ->capture_default_str();
+  for (const learning::LearningNumber& option : learning::kLearningNumbers) {
+    add_number_flag(cmd, f, option);
+  }
   cmd.add_option("--seed", o.seed, "seed of the run's random generator")
       ->check(seed_value())
       ->capture_default_str();
@@ -139,10 +148,7 @@ learning::CompensationOptions learning_options(const LearningFlags& f) {
   }
   if (o.mode == learning::Mode::paper) {
     if (f.robust_only) {
-      throw BadInput(
-          "--steering, --hold-windows, --monitor-windows, --max-episodes and --no-period-learning "
-          "are "
-          "robust-mode options");
+      throw BadInput(robust_flags() + " are robust-mode options");
     }
     o.steering = learning::Steering::off;  // recorded as it runs: paper mode never steers
   }

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "common/atomic_file.h"
+#include "common/enum_names.h"
 #include "common/errors.h"
 #include "common/table.h"
 #include "experiments/calibration_detail.h"
@@ -34,6 +35,9 @@ namespace fs = std::filesystem;
 
 constexpr int kJsonIndent = 2;
 constexpr double kCmPerM = 100.0;
+
+constexpr auto kCalibrationTargetNames =
+    enum_names<CalibrationTarget>({{CalibrationTarget::table1, "table1"}});
 
 // --- numbers -----------------------------------------------------------------------------------
 
@@ -179,17 +183,15 @@ std::size_t best_of(const std::vector<Candidate>& c) {
 // --- public ------------------------------------------------------------------------------------
 
 std::string_view to_string(CalibrationTarget target) {
-  switch (target) {
-    case CalibrationTarget::table1:
-      return "table1";
-  }
-  return "table1";
+  return kCalibrationTargetNames.name(target);
 }
 
 CalibrationTarget parse_calibration_target(std::string_view text) {
-  if (text == "table1") return CalibrationTarget::table1;
-  throw BadInput("no calibration target '" + std::string(text) +
-                 "' (known: table1, paper §5 Table 1 before learning)");
+  if (const std::optional<CalibrationTarget> target = kCalibrationTargetNames.find(text)) {
+    return *target;
+  }
+  throw BadInput("no calibration target '" + std::string(text) + "' (known: " +
+                 kCalibrationTargetNames.list() + ", paper §5 Table 1 before learning)");
 }
 
 std::vector<SearchedParam> default_searched_params() {

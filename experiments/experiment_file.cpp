@@ -1,12 +1,12 @@
 #include "experiments/experiment_file.h"
 
-#include <toml++/toml.h>
-
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include "common/errors.h"
 #include "common/input_file.h"
+#include "common/toml_file.h"
 #include "experiments/experiment_limits.h"
 #include "sim/robot_file.h"
 
@@ -294,13 +294,7 @@ Sweep parse_experiment_text(std::string_view text, const std::string& name, std:
                    std::to_string(kMaxExperimentDepth) +
                    " levels deep (each table, dotted-key part, list and inline table is a level)");
   }
-  toml::table table;
-  try {
-    table = toml::parse(text, name);
-  } catch (const toml::parse_error& e) {
-    throw BadInput(name + ":" + std::to_string(e.source().begin.line) + ": " +
-                   std::string(e.description()));
-  }
+  const toml::table table = parse_toml(text, name);
   Lines lines;
   json document = to_json(table, "", 0, lines, name);
   if (runs) document["runs"] = *runs;

@@ -42,7 +42,7 @@ nlohmann::json scenario_table_document(const ExperimentSpec& spec) {
   nlohmann::json doc = preset_document(spec, spec.robot.kind);
   doc["scenarios"] = "paper";
   if (spec.robot.file) {
-    doc["robot_file"] = spec.robot.file->record;
+    record_robot_file(doc, spec.robot);
     doc["scenarios"] = nlohmann::json::array();
     for (const Scenario& s : leg_loss_scenarios(morphology(spec.robot), kRobotFileScenarioLegs)) {
       doc["scenarios"].push_back(s.name);

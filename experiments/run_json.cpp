@@ -1,12 +1,30 @@
 #include "experiments/run_json.h"
 
 #include "body/course_json.h"
+#include "body/events.h"
 #include "body/fault_spec.h"
+#include "common/errors.h"
 #include "common/json_optional.h"
 #include "learning/json.h"
 #include "robot/leg_sets.h"
 
 namespace multicpg::experiments {
+namespace {
+
+// What `read` reads from the field `key` of the record `name`; a bad value (BadInput, e.g. an
+// unknown leg) names the record and the field.
+template <class Read>
+auto field(const std::string& name, std::string_view key, Read&& read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const OptionError& e) {
+    throw BadInput(name + ": " + e.key() + ": " + e.what());
+  } catch (const BadInput& e) {
+    throw BadInput(name + ": " + std::string(key) + ": " + e.what());
+  }
+}
+
+}  // namespace
 
 nlohmann::json learning_record(const learning::CompensationOptions& options,
                                const body::FaultTimeline& faults) {
@@ -23,6 +41,75 @@ nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& r
   json["options"] = learning_record(*spec.learning, spec.faults);
   record_robot_file(json, spec.robot);
   return json;
+}
+
+nlohmann::json walk_json(const WalkRecord& w) {
+  const robot::Morphology& morph = morphology(w.spec->robot);
+  nlohmann::json faults = nlohmann::json::array();
+  for (const body::Fault& f : w.spec->faults) {
+    // A fault's one shape (body/course_json.h), its legs named as --disable names them.
+    nlohmann::json fault = f;
+    fault["legs"] = robot::leg_set_name(morph, f.legs);
+    faults.push_back(fault);
+  }
+  // Without a sensed position there is no path angle nor distance: null, never a made-up one.
+  const auto sensed = [&](double v) {
+    return w.senses_position ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
+  nlohmann::json windows = nlohmann::json::array();
+  for (const body::WindowMeasure& m : w.measure.windows) {
+    windows.push_back({{"yaw_deg", m.yaw_deg}, {"path_deg", sensed(m.path_deg)}});
+  }
+  const double speed = w.measure.distance_m / w.duration_s;
+  nlohmann::json j{{"robot", morph.name}, {"periods", robot::period_map_json(morph, w.periods)},
+                   {"faults", faults},    {"warmup", w.spec->start.warmup},
+                   {"settle", w.settle},  {"steps", w.steps},
+                   {"window", w.window},  {"control_dt_s", w.control_dt}};
+  if (w.physics_dt) j["physics_dt_s"] = *w.physics_dt;
+  j["duration_s"] = w.duration_s;
+  j["distance_m"] = sensed(w.measure.distance_m);
+  j["forward_m"] = sensed(w.measure.forward_m);
+  j["lateral_m"] = sensed(w.measure.lateral_m);
+  j["speed_m_s"] = sensed(speed);
+  j["window_deviations_deg"] = w.measure.window_deviations_deg;
+  j["windows"] = windows;
+  j["final_yaw_deg"] = w.measure.final_yaw_deg;
+  if (!w.hardware.is_null()) j["hardware"] = w.hardware;
+  record_robot_file(j, w.spec->robot);
+  return j;
+}
+
+RecordedWalk read_walk_json(const nlohmann::json& saved, const std::string& name,
+                            const sim::SimOptions& sim) {
+  RecordedWalk walk;
+  RunSpec& spec = walk.spec;
+  spec.robot = field(name, "robot", [&] { return recorded_robot(saved); });
+  spec.robot.sim = sim;
+  spec.robot.sim.control_dt = saved.at("control_dt_s").get<double>();
+  spec.robot.sim.physics_dt = saved.at("physics_dt_s").get<double>();
+  const robot::Morphology& morph = morphology(spec.robot);
+  spec.start.periods = field(
+      name, "periods", [&] { return robot::period_map_from_json(morph, saved.at("periods")); });
+  spec.start.warmup = saved.at("warmup").get<long>();
+  for (const nlohmann::json& f : saved.at("faults")) {
+    spec.faults.push_back(field(name, "faults", [&] {
+      if (f.contains("fault")) {
+        // Walk records before the fault's one shape gave any other kind as its text.
+        return body::parse_fault(
+            morph,
+            f.at("fault").get<std::string>() + '@' + std::to_string(f.at("step").get<long>()),
+            f.at("recover").get<bool>());
+      }
+      nlohmann::json indexed = f;  // body/course_json.h, its legs named as walk_json names them
+      indexed["legs"] = robot::parse_leg_set(morph, f.at("legs").get<std::string>());
+      return indexed.get<body::Fault>();
+    }));
+  }
+  body::sort_timeline(spec.faults);
+  walk.settle = saved.at("settle").get<long>();
+  walk.steps = saved.at("steps").get<long>();
+  walk.window = saved.at("window").get<long>();
+  return walk;
 }
 
 std::string other_faults_text(const RunSpec& spec) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 
 #include "common/checksum.h"
 #include "common/errors.h"
@@ -11,11 +12,6 @@
 #include "sim/robot_file.h"
 
 namespace multicpg::experiments {
-namespace {
-
-constexpr std::string_view kMaxRobotFileText = "1 MiB";  // sim::kMaxRobotFileBytes
-
-}  // namespace
 
 std::shared_ptr<const RunRobotFile> load_run_robot_file(const std::filesystem::path& path) {
   auto loaded = std::make_shared<RunRobotFile>();
@@ -24,7 +20,7 @@ std::shared_ptr<const RunRobotFile> load_run_robot_file(const std::filesystem::p
   // between is refused, not waited on).
   std::string toml;
   try {
-    toml = read_input_file(path, sim::kMaxRobotFileBytes, kMaxRobotFileText, "a robot file");
+    toml = read_input_file(path, sim::kMaxRobotFileBytes, sim::kMaxRobotFileText, "a robot file");
   } catch (const BadInput&) {
     throw BadInput(path.string() + ": file: changed while it was read");
   }
@@ -44,8 +40,58 @@ RobotSpec named_robot(const std::string& name) {
   return robot;
 }
 
+void record_robot_file(nlohmann::json& json, const std::shared_ptr<const RunRobotFile>& file) {
+  if (file) json["robot_file"] = file->record;
+}
+
 void record_robot_file(nlohmann::json& json, const RobotSpec& robot) {
-  if (robot.file) json["robot_file"] = robot.file->record;
+  record_robot_file(json, robot.file);
+}
+
+std::shared_ptr<const RunRobotFile> recorded_robot_file(const nlohmann::json& record) {
+  const auto field = record.find("robot_file");
+  if (field == record.end()) return nullptr;
+  RobotFileRecord recorded;
+  try {
+    recorded = field->get<RobotFileRecord>();
+  } catch (const nlohmann::json::exception&) {
+    throw OptionError("robot_file",
+                      "must be a table of path, name, checksum_toml and checksum_model");
+  }
+  std::shared_ptr<const RunRobotFile> file;
+  try {
+    file = load_run_robot_file(recorded.path);
+  } catch (const BadInput& e) {
+    throw OptionError("robot_file.path", e.what());
+  }
+  const RobotFileRecord& now = file->record;
+  for (const auto& [key, was, is] :
+       {std::tuple{"name", recorded.name, now.name},
+        {"checksum_toml", recorded.checksum_toml, now.checksum_toml},
+        {"checksum_model", recorded.checksum_model, now.checksum_model}}) {
+    if (was != is) {
+      throw OptionError(
+          "robot_file." + std::string(key),
+          "'" + now.path + "' has changed since it was recorded (" + was + ", now " + is + ")");
+    }
+  }
+  return file;
+}
+
+RobotSpec recorded_robot(const nlohmann::json& record) {
+  RobotSpec robot;
+  robot.file = recorded_robot_file(record);
+  if (robot.file) {
+    robot.kind = robot.file->file.layout;
+    return robot;
+  }
+  const std::string name = record.at("robot").get<std::string>();
+  try {
+    robot.kind = robot::parse_robot(name);
+  } catch (const BadInput& e) {
+    throw OptionError("robot", e.what());
+  }
+  return robot;
 }
 
 bool operator==(const RobotSpec& a, const RobotSpec& b) {

@@ -51,9 +51,23 @@ struct RobotSpec {
 // load_run_robot_file do.
 RobotSpec named_robot(const std::string& name);
 
-// Adds "robot_file" (RobotFileRecord) to `json` when the robot is a robot file's; a built-in
-// robot's records stay as they were.
+// Adds "robot_file" (RobotFileRecord) to `json` when the robot is a robot file's (`file` not
+// null); a built-in robot's records stay as they were.
+void record_robot_file(nlohmann::json& json, const std::shared_ptr<const RunRobotFile>& file);
 void record_robot_file(nlohmann::json& json, const RobotSpec& robot);
+
+// The robot file of a record record_robot_file wrote, read again from its recorded path; null
+// for a record without one (a built-in robot's). The file must still hold the robot recorded.
+// Throws OptionError keyed "robot_file" for a value that is no RobotFileRecord, "robot_file.path"
+// for a file that cannot be read (as load_run_robot_file), and "robot_file.name",
+// "robot_file.checksum_toml" or "robot_file.checksum_model": "'PATH' has changed since it was
+// recorded (WAS, now IS)".
+std::shared_ptr<const RunRobotFile> recorded_robot_file(const nlohmann::json& record);
+
+// The robot of a record: its robot file (recorded_robot_file), else the built-in robot its
+// "robot" names; default simulation options. Throws OptionError as recorded_robot_file does, or
+// keyed "robot" for an unknown robot (nlohmann's exception for a record without "robot").
+RobotSpec recorded_robot(const nlohmann::json& record);
 
 // Equal robots make equal models: the same kind, robot file (by its record) and options.
 bool operator==(const RobotSpec& a, const RobotSpec& b);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <set>
-#include <tuple>
 
 #include "common/errors.h"
 #include "common/interrupt.h"
@@ -182,25 +181,7 @@ DocumentRobot resolve_robot(const json& doc) {
   const std::string text = name.get<std::string>();
   DocumentRobot robot;
   if (doc.contains("robot_file")) {
-    RobotFileRecord recorded;
-    try {
-      recorded = doc.at("robot_file").get<RobotFileRecord>();
-    } catch (const json::exception&) {
-      throw OptionError("robot_file",
-                        "must be a table of path, name, checksum_toml and checksum_model");
-    }
-    robot.file = load_document_robot("robot_file.path", recorded.path);
-    const RobotFileRecord& now = robot.file->record;
-    for (const auto& [key, was, is] :
-         {std::tuple{"name", recorded.name, now.name},
-          {"checksum_toml", recorded.checksum_toml, now.checksum_toml},
-          {"checksum_model", recorded.checksum_model, now.checksum_model}}) {
-      if (was != is) {
-        throw OptionError(
-            child("robot_file", key),
-            "'" + now.path + "' has changed since it was recorded (" + was + ", now " + is + ")");
-      }
-    }
+    robot.file = recorded_robot_file(doc);
     if (text != robot::to_string(robot.file->file.layout)) {
       throw OptionError("robot", "must be the robot file's layout, " +
                                      std::string(robot::to_string(robot.file->file.layout)) +
@@ -220,7 +201,7 @@ DocumentRobot resolve_robot(const json& doc) {
 // The resolved document's robot: its layout's name, and the robot file's record.
 void add_robot(json& resolved, const DocumentRobot& robot) {
   resolved["robot"] = robot::to_string(robot.kind);
-  if (robot.file) resolved["robot_file"] = robot.file->record;
+  record_robot_file(resolved, robot.file);
 }
 
 json landscape_json(const LandscapeSpec& spec) {

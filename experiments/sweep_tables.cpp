@@ -67,7 +67,7 @@ ExperimentTable write_results(const Sweep& sweep, const fs::path& out,
                {"robot", table.robot},
                {"arguments", sweep.resolved},
                {"rows", rows}};
-  if (sweep.robot_file) summary["robot_file"] = sweep.robot_file->record;
+  record_robot_file(summary, sweep.robot_file);
   write_file_atomic(out / "summary.json", summary.dump(kJsonIndent) + "\n");
   return table;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/enum_names.h"
 #include "common/errors.h"
 #include "experiments/paper.h"
 #include "experiments/scenarios.h"
@@ -12,6 +13,10 @@
 
 namespace multicpg::experiments {
 namespace {
+
+constexpr auto kExperimentKindNames = enum_names<ExperimentKind>({{ExperimentKind::table, "table"},
+                                                                  {ExperimentKind::beta, "beta"},
+                                                                  {ExperimentKind::grid, "grid"}});
 
 // Fixed decimals: degrees to 0.01, trials to 0.1, shares to 0.01.
 constexpr int kDegreeDecimals = 2;
@@ -213,22 +218,13 @@ Table beta_table(const std::vector<GroupSummary>& rows) {
 }
 
 std::string_view to_string(ExperimentKind kind) {
-  switch (kind) {
-    case ExperimentKind::table:
-      return "table";
-    case ExperimentKind::beta:
-      return "beta";
-    case ExperimentKind::grid:
-      return "grid";
-  }
-  return "table";
+  return kExperimentKindNames.name(kind);
 }
 
 ExperimentKind parse_experiment_kind(std::string_view text) {
-  for (ExperimentKind kind : {ExperimentKind::table, ExperimentKind::beta, ExperimentKind::grid}) {
-    if (text == to_string(kind)) return kind;
-  }
-  throw BadInput("unknown experiment '" + std::string(text) + "' (table, beta or grid)");
+  if (const std::optional<ExperimentKind> kind = kExperimentKindNames.find(text)) return *kind;
+  throw BadInput("unknown experiment '" + std::string(text) + "' (" +
+                 kExperimentKindNames.list(" or ") + ")");
 }
 
 }  // namespace multicpg::experiments

@@ -323,9 +323,7 @@ JointCounts safe_posture_counts(const HardwareFile& file) {
 }
 
 std::string_view to_string(LinkError error) {
-  static constexpr std::string_view kNames[] = {
-      "timeout", "missing", "short_answer", "bad_checksum", "wrong_id", "servo_error", "malformed"};
-  return kNames[static_cast<std::size_t>(error)];
+  return kLinkErrorNames.name(error);
 }
 
 long LinkErrors::total() const {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/enum_names.h"
 #include "hw/hardware_file.h"
 #include "hw/serial_port.h"
 #include "hw/yaw_line.h"
@@ -35,7 +36,15 @@ enum class LinkError {
   servo_error,   // a servo's status packet reports an error
   malformed,     // bytes that are no packet of the protocol (noise, a bad length, an unknown line)
 };
-inline constexpr std::size_t kLinkErrorKinds = 7;
+inline constexpr auto kLinkErrorNames =
+    enum_names<LinkError>({{LinkError::timeout, "timeout"},
+                           {LinkError::missing, "missing"},
+                           {LinkError::short_answer, "short_answer"},
+                           {LinkError::bad_checksum, "bad_checksum"},
+                           {LinkError::wrong_id, "wrong_id"},
+                           {LinkError::servo_error, "servo_error"},
+                           {LinkError::malformed, "malformed"}});
+inline constexpr std::size_t kLinkErrorKinds = kLinkErrorNames.values().size();
 std::string_view to_string(LinkError error);
 
 struct LinkErrors {

@@ -17,6 +17,7 @@
 #include "body/body.h"
 #include "body/events.h"
 #include "body/start.h"
+#include "common/enum_names.h"
 #include "hw/bus.h"
 #include "hw/hardware_file.h"
 #include "hw/loop_timing.h"
@@ -36,6 +37,9 @@ enum class Pacing {
   real_time,  // one step per control period on the monotonic clock
   lock_step,  // each step as soon as the last one's answers came (rehearsal with the emulator)
 };
+// Each pacing's name in a run's record ("pacing").
+inline constexpr auto kPacingNames =
+    enum_names<Pacing>({{Pacing::real_time, "real_time"}, {Pacing::lock_step, "lock_step"}});
 
 // One control step as it happened (the per-step record, docs/hardware.md "Outputs").
 struct StepRow {

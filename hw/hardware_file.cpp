@@ -1,17 +1,14 @@
 #include "hw/hardware_file.h"
 
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 
 #include "common/checksum.h"
 #include "common/errors.h"
-#include "common/input_file.h"
+#include "common/toml_file.h"
 #include "common/user_text.h"
 #include "hw/amosii.h"
 #include "hw/dynamixel.h"
@@ -24,132 +21,26 @@ constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 // Dynamixel X: one turn in 4096 counts (hw/dynamixel.h).
 constexpr double kDynamixelDegPerCount = 360.0 / dxl::kCountsPerTurn;
 
-// Reads one hardware file; every error names the file and the key.
-class Reader {
- public:
-  explicit Reader(std::filesystem::path path) : path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    std::string line = path_.string() + ": " + key + ": " + what;
-    std::replace(line.begin(), line.end(), '\n', ' ');
-    throw BadInput(line);
-  }
-
-  // Only the keys `known` may appear in `table` (a misspelt key is not silently ignored).
-  void only(const toml::table& table, const std::string& prefix,
-            std::initializer_list<std::string_view> known) const {
-    for (const auto& [key, value] : table) {
-      if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
-        // As a mistyped flag is told: where it is and what was meant.
-        const std::optional<std::string> meant =
-            closest_name(key.str(), std::vector<std::string>(known.begin(), known.end()));
-        const toml::source_region& where = key.source();
-        fail(prefix + printable(key.str()),
-             "unknown key" +
-                 (where.begin.line > 0 ? " on line " + std::to_string(where.begin.line)
-                                       : std::string()) +
-                 (meant ? " (did you mean " + *meant + "?)" : std::string()));
-      }
-    }
-  }
-
-  const toml::node& node(const toml::table& t, const std::string& prefix,
-                         std::string_view key) const {
-    const toml::node* n = t.get(key);
-    if (n == nullptr) fail(prefix + std::string(key), "missing");
-    return *n;
-  }
-
-  const toml::table& table(const toml::table& t, const std::string& prefix,
-                           std::string_view key) const {
-    const toml::table* sub = node(t, prefix, key).as_table();
-    if (sub == nullptr) fail(prefix + std::string(key), "must be a table");
-    return *sub;
-  }
-
-  std::string text(const toml::table& t, const std::string& prefix, std::string_view key) const {
-    const std::optional<std::string> v = node(t, prefix, key).value_exact<std::string>();
-    if (!v || v->empty()) fail(prefix + std::string(key), "must be a non-empty string");
-    return *v;
-  }
-
-  long integer(const toml::table& t, const std::string& prefix, std::string_view key, long lo,
-               long hi) const {
-    const std::optional<std::int64_t> v = node(t, prefix, key).value_exact<std::int64_t>();
-    if (!v) fail(prefix + std::string(key), "must be an integer");
-    if (*v < lo || *v > hi) {
-      fail(prefix + std::string(key), "must be in " + std::to_string(lo) + ".." +
-                                          std::to_string(hi) + ", got " + std::to_string(*v));
-    }
-    return static_cast<long>(*v);
-  }
-
-  long integer_or(const toml::table& t, const std::string& prefix, std::string_view key, long lo,
-                  long hi, long fallback) const {
-    return t.contains(key) ? integer(t, prefix, key, lo, hi) : fallback;
-  }
-
-  double number(const toml::node& n, const std::string& key) const {
-    if (!n.is_number()) fail(key, "must be a number");
-    const double v = *n.value<double>();
-    if (!std::isfinite(v)) fail(key, "must be finite");
-    return v;
-  }
-
-  double number(const toml::table& t, const std::string& prefix, std::string_view key) const {
-    return number(node(t, prefix, key), prefix + std::string(key));
-  }
-
-  double positive(const toml::table& t, const std::string& prefix, std::string_view key) const {
-    const double v = number(t, prefix, key);
-    if (!(v > 0.0)) fail(prefix + std::string(key), "must be above 0");
-    return v;
-  }
-
-  bool boolean(const toml::table& t, const std::string& prefix, std::string_view key,
-               bool fallback) const {
-    if (!t.contains(key)) return fallback;
-    const std::optional<bool> v = node(t, prefix, key).value_exact<bool>();
-    if (!v) fail(prefix + std::string(key), "must be true or false");
-    return *v;
-  }
-
-  std::string choice(const toml::table& t, const std::string& prefix, std::string_view key,
-                     std::initializer_list<std::string_view> choices) const {
-    const std::string v = text(t, prefix, key);
-    if (std::find(choices.begin(), choices.end(), v) == choices.end()) {
-      std::string names;
-      for (std::string_view c : choices) names += (names.empty() ? "" : " or ") + std::string(c);
-      fail(prefix + std::string(key), "'" + v + "' (" + names + ")");
-    }
-    return v;
-  }
-
- private:
-  std::filesystem::path path_;
-};
+constexpr auto kProtocolNames =
+    enum_names<Protocol>({{Protocol::amosii, "amosii"}, {Protocol::dynamixel, "dynamixel"}});
+constexpr auto kStopActionNames = enum_names<StopAction>(
+    {{StopAction::posture, "posture"}, {StopAction::torque_off, "torque_off"}});
+constexpr auto kYawSourceNames =
+    enum_names<YawSource>({{YawSource::board, "board"}, {YawSource::line, "line"}});
 
 // As every input file is read (common/input_file.h): "FILE: cannot read (No such file or
 // directory)", a FIFO refused without waiting.
-std::string read_text(const std::filesystem::path& path) {
-  return read_input_file(path, kMaxHardwareFileBytes, "1 MiB", "hardware file");
-}
-
-toml::table parse(const std::string& source, const std::filesystem::path& path, const Reader& r) {
-  try {
-    return toml::parse(source, path.string());
-  } catch (const toml::parse_error& e) {
-    r.fail("line " + std::to_string(e.source().begin.line), std::string(e.description()));
-  }
+std::string read_text(const TomlReader& r) {
+  return r.read(kMaxHardwareFileBytes, "1 MiB", "hardware file");
 }
 
 class FileReader {
  public:
-  FileReader(const Reader& r, HardwareFile& file) : r_(r), f_(file) {}
+  FileReader(const TomlReader& r, HardwareFile& file) : r_(r), f_(file) {}
 
   void bus(const toml::table& doc) {
     f_.name = r_.text(doc, "", "name");
-    f_.protocol = parse_protocol(r_.choice(doc, "", "protocol", {"amosii", "dynamixel"}));
+    f_.protocol = r_.choice(doc, "", "protocol", kProtocolNames);
     f_.port = r_.text(doc, "", "port");
     f_.baud = static_cast<int>(
         r_.integer_or(doc, "", "baud", 1, 4'000'000,
@@ -262,8 +153,7 @@ class FileReader {
   void yaw(const toml::table& doc) {
     const toml::table& t = r_.table(doc, "", "yaw");
     YawSpec& y = f_.yaw;
-    const std::string source = r_.choice(t, "yaw.", "source", {"board", "line"});
-    if (source == "board") {
+    if (r_.choice(t, "yaw.", "source", kYawSourceNames) == YawSource::board) {
       if (f_.protocol != Protocol::amosii) {
         r_.fail("yaw.source", "'board': only an AMOSII board has inputs; use \"line\"");
       }
@@ -293,8 +183,7 @@ class FileReader {
   void stop(const toml::table& doc) {
     const toml::table& t = r_.table(doc, "", "stop");
     r_.only(t, "stop.", {"action", "posture_deg"});
-    const std::string action = r_.choice(t, "stop.", "action", {"posture", "torque_off"});
-    f_.stop = action == "posture" ? StopAction::posture : StopAction::torque_off;
+    f_.stop = r_.choice(t, "stop.", "action", kStopActionNames);
     if (f_.stop == StopAction::torque_off && f_.protocol == Protocol::amosii) {
       r_.fail("stop.action",
               "'torque_off': the AMOSII board's protocol has no torque-off command; use "
@@ -346,7 +235,7 @@ class FileReader {
     }
   }
 
-  const Reader& r_;
+  const TomlReader& r_;
   HardwareFile& f_;
   std::optional<double> deg_per_count_;
   std::map<int, std::string> ids_;     // servo ID -> the key that claimed it
@@ -356,17 +245,16 @@ class FileReader {
 }  // namespace
 
 std::string_view to_string(Protocol protocol) {
-  return protocol == Protocol::amosii ? "amosii" : "dynamixel";
+  return kProtocolNames.name(protocol);
 }
 
 Protocol parse_protocol(std::string_view text) {
-  if (text == "amosii") return Protocol::amosii;
-  if (text == "dynamixel") return Protocol::dynamixel;
-  throw BadInput(unknown_name("protocol", text, {"amosii", "dynamixel"}));
+  if (const std::optional<Protocol> protocol = kProtocolNames.find(text)) return *protocol;
+  throw BadInput(unknown_name("protocol", text, kProtocolNames.names()));
 }
 
 std::string_view to_string(StopAction action) {
-  return action == StopAction::posture ? "posture" : "torque_off";
+  return kStopActionNames.name(action);
 }
 
 CountRange servo_range(Protocol protocol) {
@@ -406,9 +294,9 @@ std::string HardwareFile::servo_name(int id) const {
 }
 
 HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::Morphology& morph) {
-  const Reader r(path);
-  const std::string source = read_text(path);
-  const toml::table doc = parse(source, path, r);
+  const TomlReader r(path);
+  const std::string source = read_text(r);
+  const toml::table doc = r.parse(source);
   r.only(doc, "",
          {"name", "protocol", "port", "baud", "timeout_ms", "max_errors", "deg_per_count", "yaw",
           "stop", "legs", "backbone"});
@@ -426,8 +314,8 @@ HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::
 
 std::string with_ports(const std::filesystem::path& path, const std::string& port,
                        const std::string& yaw_port) {
-  const Reader r(path);
-  toml::table doc = parse(read_text(path), path, r);
+  const TomlReader r(path);
+  toml::table doc = r.parse(read_text(r));
   doc.insert_or_assign("port", port);
   if (toml::table* yaw = doc["yaw"].as_table(); yaw != nullptr && !yaw_port.empty()) {
     yaw->insert_or_assign("port", yaw_port);

@@ -44,7 +44,7 @@ nlohmann::json hardware_json(const HardwareFile& f, Pacing pacing, const Hardwar
       {"name", f.name},
       {"checksum", f.checksum},
       {"protocol", to_string(f.protocol)},
-      {"pacing", pacing == Pacing::lock_step ? "lock_step" : "real_time"},
+      {"pacing", kPacingNames.name(pacing)},
       {"senses_position", f.senses_position()},
       {"timing", body.timing()},
       {"errors",

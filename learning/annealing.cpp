@@ -74,19 +74,7 @@ void validate(const AnnealingParams& params) {
 }
 
 std::string_view to_string(StopReason reason) {
-  switch (reason) {
-    case StopReason::running:
-      return "running";
-    case StopReason::below_threshold:
-      return "below threshold";
-    case StopReason::trial_cap:
-      return "trial cap";
-    case StopReason::space_exhausted:
-      return "search space exhausted";
-    case StopReason::episode_cap:
-      return "episode cap";
-  }
-  return "?";
+  return kStopReasonNames.name(reason);
 }
 
 AnnealingState start_annealing(const AnnealingParams& params, const Periods& initial,

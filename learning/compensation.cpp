@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "common/angles.h"
+#include "common/enum_names.h"
 #include "common/errors.h"
 #include "common/limits.h"
 #include "common/user_text.h"
@@ -16,6 +17,14 @@
 
 namespace multicpg::learning {
 namespace {
+
+constexpr auto kModeNames = enum_names<Mode>({{Mode::paper, "paper"}, {Mode::robust, "robust"}});
+constexpr auto kSteeringNames =
+    enum_names<Steering>({{Steering::off, "off"}, {Steering::reflex, "reflex"}});
+constexpr auto kOutcomeNames = enum_names<Outcome>({{Outcome::converged, "converged"},
+                                                    {Outcome::not_converged, "not converged"},
+                                                    {Outcome::no_deviation, "no deviation"},
+                                                    {Outcome::budget_reached, "budget reached"}});
 
 Periods current_periods(body::Body& body) {
   Periods periods;
@@ -65,54 +74,36 @@ long start_settle_steps(const CompensationOptions& options, const neural::Contro
 }
 
 std::string_view to_string(Mode mode) {
-  return mode == Mode::paper ? "paper" : "robust";
+  return kModeNames.name(mode);
 }
 
 std::string_view to_string(Outcome outcome) {
-  switch (outcome) {
-    case Outcome::converged:
-      return "converged";
-    case Outcome::not_converged:
-      return "not converged";
-    case Outcome::no_deviation:
-      return "no deviation";
-    case Outcome::budget_reached:
-      return "budget reached";
-  }
-  return "?";
+  return kOutcomeNames.name(outcome);
 }
 
 Outcome parse_outcome(std::string_view text) {
-  for (Outcome o : {Outcome::converged, Outcome::not_converged, Outcome::no_deviation,
-                    Outcome::budget_reached}) {
-    if (text == to_string(o)) return o;
-  }
-  throw BadInput("unknown outcome '" + std::string(text) +
-                 "' (converged, not converged, no deviation or budget reached)");
+  if (const std::optional<Outcome> outcome = kOutcomeNames.find(text)) return *outcome;
+  throw BadInput("unknown outcome '" + std::string(text) + "' (" + kOutcomeNames.list(" or ") +
+                 ")");
 }
 
 StopReason parse_stop_reason(std::string_view text) {
-  for (StopReason r : {StopReason::running, StopReason::below_threshold, StopReason::trial_cap,
-                       StopReason::space_exhausted, StopReason::episode_cap}) {
-    if (text == to_string(r)) return r;
-  }
+  if (const std::optional<StopReason> reason = kStopReasonNames.find(text)) return *reason;
   throw BadInput("unknown stop reason '" + std::string(text) + "'");
 }
 
 std::string_view to_string(Steering steering) {
-  return steering == Steering::reflex ? "reflex" : "off";
+  return kSteeringNames.name(steering);
 }
 
 Mode parse_mode(std::string_view text) {
-  if (text == "paper") return Mode::paper;
-  if (text == "robust") return Mode::robust;
-  throw BadInput(unknown_name("mode", text, {"paper", "robust"}));
+  if (const std::optional<Mode> mode = kModeNames.find(text)) return *mode;
+  throw BadInput(unknown_name("mode", text, kModeNames.names()));
 }
 
 Steering parse_steering(std::string_view text) {
-  if (text == "off") return Steering::off;
-  if (text == "reflex") return Steering::reflex;
-  throw BadInput(unknown_name("steering", text, {"off", "reflex"}));
+  if (const std::optional<Steering> steering = kSteeringNames.find(text)) return *steering;
+  throw BadInput(unknown_name("steering", text, kSteeringNames.names()));
 }
 
 void validate(const CompensationOptions& options) {

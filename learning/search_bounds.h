@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/enum_names.h"
 #include "common/limits.h"
 
 namespace multicpg::learning {
@@ -37,6 +38,13 @@ void validate(const SearchBounds& bounds);
 // Why a search stopped; episode_cap is a robust run's: every episode it may start
 // (CompensationOptions::max_episodes) was used and its last windows still did not hold.
 enum class StopReason { running, below_threshold, trial_cap, space_exhausted, episode_cap };
+// Each reason's name in a learning record (learning/json.h).
+inline constexpr auto kStopReasonNames =
+    enum_names<StopReason>({{StopReason::running, "running"},
+                            {StopReason::below_threshold, "below threshold"},
+                            {StopReason::trial_cap, "trial cap"},
+                            {StopReason::space_exhausted, "search space exhausted"},
+                            {StopReason::episode_cap, "episode cap"}});
 std::string_view to_string(StopReason reason);
 
 }  // namespace multicpg::learning

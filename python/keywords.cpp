@@ -124,6 +124,8 @@ std::string param_type(std::string_view name) {
       {"window", "int"},
       {"settle", "int | None"},
       {"max_trials", "int"},
+      {"max_episodes", "int"},
+      {"step_budget", "int"},
       {"observer", "Callable[[dict], Any] | None"},
       {"progress", kProgressType},
       {"hardware", "str | os.PathLike[str] | None"},

@@ -148,15 +148,10 @@ py::dict checked_learning_options(const Keywords& k) {
   out["learner"] = o.learner.name;
   out["learner_options"] = to_python(o.learner.options);
   out["steering"] = std::string(learning::to_string(o.steering));
-  out["hold_windows"] = o.hold_windows;
-  out["monitor_windows"] = o.monitor_windows;
+  add_number_options(out, o);
   out["period_learning"] = o.learn_periods;
   const std::optional<double> beta = learning::annealing_beta(o.learner);
   out["beta"] = beta ? py::object(py::float_(*beta)) : py::none();
-  out["threshold"] = o.search.threshold_deg;
-  out["window"] = o.window_steps;
-  out["settle"] = o.settle_steps ? py::object(py::int_(*o.settle_steps)) : py::none();
-  out["max_trials"] = o.search.max_trials;
   out["seed"] = o.seed;
   out["given"] = k.given_of(learning_params());
   return out;

@@ -10,6 +10,7 @@
 #include "experiments/run_spec.h"
 #include "learning/steering.h"
 #include "python/args.h"
+#include "python/robots.h"
 #include "python/watch.h"
 #include "report/replay/page.h"
 #include "report/replay/recording.h"
@@ -42,18 +43,8 @@ constexpr int kStateVersion = 1;
 
 // The simulation a robot key describes ({"robot", "robot_file", "sim"}: a Robot's pickled form).
 experiments::RobotSpec robot_spec(const json& key, std::string_view name) {
-  experiments::RobotSpec spec;
+  experiments::RobotSpec spec = recorded_robot(key, name);
   spec.sim = key.at("sim").get<sim::SimOptions>();
-  if (key.contains("robot_file")) {
-    const auto recorded = key.at("robot_file").get<experiments::RobotFileRecord>();
-    spec.file = named(name, [&] { return experiments::load_run_robot_file(recorded.path); });
-    if (spec.file->record != recorded) {
-      value_error(name, "'" + recorded.path + "' has changed since the simulation started");
-    }
-    spec.kind = spec.file->file.layout;
-  } else {
-    spec.kind = named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
-  }
   return spec;
 }
 

@@ -163,22 +163,21 @@ std::shared_ptr<Robot> with_terrain(const std::shared_ptr<Robot>& robot, py::han
   return robot_of(std::move(spec));
 }
 
+experiments::RobotSpec recorded_robot(const Json& key, std::string_view name) {
+  try {
+    return experiments::recorded_robot(key);
+  } catch (const OptionError& e) {
+    value_error(name, e.key() + ": " + e.what());
+  }
+}
+
 // A robot read back from its key (a pickled Robot or State).
 std::shared_ptr<Robot> robot_from_key(const Json& key, std::string_view name) {
   try {
     const sim::SimOptions options = key.at("sim").get<sim::SimOptions>();
-    if (key.contains("robot_file")) {
-      // The file must still hold the robot that was pickled.
-      const auto recorded = key.at("robot_file").get<experiments::RobotFileRecord>();
-      auto file = load_robot_file(recorded.path);
-      if (file->record != recorded) {
-        value_error(name, "'" + recorded.path + "' has changed since the robot was pickled");
-      }
-      return robot_of({file->file.layout, file, options});
-    }
-    const robot::RobotKind kind =
-        named(name, [&] { return robot::parse_robot(key.at("robot").get<std::string>()); });
-    return robot_of({kind, nullptr, options});
+    experiments::RobotSpec spec = recorded_robot(key, name);
+    spec.sim = options;
+    return robot_of(std::move(spec));
   } catch (const Json::exception& e) {
     value_error(name, std::string("not a multicpg robot: ") + e.what());
   }

@@ -44,6 +44,9 @@ std::shared_ptr<const experiments::RunRobotFile> load_robot_file(const std::stri
 // A robot's key, its pickled form (and a State's "robot"): {"robot": its layout's name,
 // "robot_file": the file's record (with a robot file), "sim": its options}.
 nlohmann::json robot_key(const experiments::RobotSpec& spec);
+// The robot a key records (experiments::recorded_robot), default options: a robot file that
+// cannot be read or changed since, or an unknown robot, is a ValueError naming `name`.
+experiments::RobotSpec recorded_robot(const nlohmann::json& key, std::string_view name);
 // A robot read back from its key (a pickled Robot or State).
 std::shared_ptr<Robot> robot_from_key(const nlohmann::json& key, std::string_view name);
 // A robot argument: a Robot, a robot name or a robot file, the latter two with default options.

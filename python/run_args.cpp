@@ -2,11 +2,15 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "common/errors.h"
 #include "learning/annealing.h"
 #include "learning/learners.h"
+#include "learning/number_options.h"
 #include "learning/steering.h"
 #include "python/args.h"
 #include "python/values.h"
@@ -29,6 +33,29 @@ std::string argument_of(const std::string& key) {
   if (key.rfind(options, 0) == 0) return "learner_options['" + key.substr(options.size()) + "']";
   if (key.rfind("learning.learner", 0) == 0) return "learner";
   return key.substr(key.rfind('.') + 1);
+}
+
+// The keywords of the numeric learning options (learning/number_options.h) that are robust mode's
+// alone (`robust`) or not, with their defaults.
+Params number_params(bool robust) {
+  learning::CompensationOptions defaults;
+  Params out;
+  for (const learning::LearningNumber& option : learning::kLearningNumbers) {
+    std::visit(
+        [&](const auto& n) {
+          if (n.robust_only != robust) return;
+          const auto& value = n.field(defaults);
+          py::object fallback = py::none();
+          if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::optional<long>>) {
+            if (value) fallback = py::int_(*value);
+          } else {
+            fallback = py::cast(value);
+          }
+          out.push_back({learning::keyword(n.flag), fallback});
+        },
+        option);
+  }
+  return out;
 }
 
 // What resolve_learner's keys are in Python.
@@ -61,10 +88,10 @@ body::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keyword
 }
 
 Params robust_params() {
-  return {{"steering", py::str(std::string(learning::to_string(learning::Steering::reflex)))},
-          {"hold_windows", py::int_(learning::kDefaultHoldWindows)},
-          {"monitor_windows", py::int_(learning::kDefaultMonitorWindows)},
-          {"period_learning", py::bool_(true)}};
+  return join(
+      {{{"steering", py::str(std::string(learning::to_string(learning::Steering::reflex)))}},
+       number_params(true),
+       {{"period_learning", py::bool_(true)}}});
 }
 
 Params learning_params() {
@@ -72,12 +99,9 @@ Params learning_params() {
                 {"learner", py::str(std::string(learning::kDefaultLearner))},
                 {"learner_options", py::none()}},
                robust_params(),
-               {{"beta", py::float_(learning::kDefaultBeta)},
-                {"threshold", py::float_(learning::kDefaultThresholdDeg)},
-                {"window", py::int_(learning::kDefaultWindowSteps)},
-                {"settle", py::none()},
-                {"max_trials", py::int_(learning::kDefaultMaxTrials)},
-                {"seed", py::int_(1)}}});
+               {{"beta", py::float_(learning::kDefaultBeta)}},
+               number_params(false),
+               {{"seed", py::int_(1)}}});
 }
 
 learning::CompensationOptions learning_options(const Keywords& k) {
@@ -91,19 +115,34 @@ learning::CompensationOptions learning_options(const Keywords& k) {
       given += (given.empty() ? "" : ", ") + name;
     }
     if (!given.empty()) {
-      value_error("mode",
-                  "'paper' takes none of the robust-mode arguments steering, "
-                  "hold_windows, monitor_windows, period_learning (given: " +
-                      given + ")");
+      std::string robust;
+      for (const Param& p : robust_params()) robust += (robust.empty() ? "" : ", ") + p.name;
+      value_error("mode", "'paper' takes none of the robust-mode arguments " + robust +
+                              " (given: " + given + ")");
     }
   }
   const std::string steering = text(k["steering"], "steering");
   const learning::Steering steer =
       named("steering", [&] { return learning::parse_steering(steering); });
   o.steering = o.mode == learning::Mode::paper ? learning::Steering::off : steer;
-  o.hold_windows = whole(k["hold_windows"], "hold_windows", learning::kHoldWindowsLimits);
-  o.monitor_windows =
-      whole(k["monitor_windows"], "monitor_windows", learning::kMonitorWindowsLimits);
+  for (const learning::LearningNumber& option : learning::kLearningNumbers) {
+    std::visit(
+        [&](const auto& n) {
+          using T = typename std::decay_t<decltype(n)>::Value;
+          using Stored = std::decay_t<decltype(n.field(o))>;
+          const std::string name = learning::keyword(n.flag);
+          // None: the default the run works out (settle's); other options take no None.
+          if constexpr (std::is_same_v<Stored, std::optional<T>>) {
+            if (k[name].is_none()) return;
+          }
+          if constexpr (std::is_floating_point_v<T>) {
+            n.field(o) = real(k[name], name, n.limits);
+          } else {
+            n.field(o) = whole(k[name], name, n.limits);
+          }
+        },
+        option);
+  }
   o.learn_periods = flag(k["period_learning"], "period_learning");
   o.learner.name = text(k["learner"], "learner");
   const py::object options = k["learner_options"];
@@ -130,14 +169,25 @@ learning::CompensationOptions learning_options(const Keywords& k) {
   } catch (const OptionError& e) {
     value_error(learner_argument(e.key()), e.what());
   }
-  o.search.threshold_deg = real(k["threshold"], "threshold", learning::kThresholdLimits);
-  o.window_steps = whole(k["window"], "window", learning::kWindowStepsLimits);
-  if (!k["settle"].is_none()) {
-    o.settle_steps = whole(k["settle"], "settle", learning::kSettleStepsLimits);
-  }
-  o.search.max_trials = whole(k["max_trials"], "max_trials", learning::kMaxTrialsLimits);
   o.seed = seed(k["seed"], "seed");
   return o;
+}
+
+void add_number_options(py::dict& out, const learning::CompensationOptions& o) {
+  learning::CompensationOptions options = o;
+  for (const learning::LearningNumber& option : learning::kLearningNumbers) {
+    std::visit(
+        [&](const auto& n) {
+          const auto& value = n.field(options);
+          const std::string name = learning::keyword(n.flag);
+          if constexpr (std::is_same_v<std::decay_t<decltype(value)>, std::optional<long>>) {
+            out[name.c_str()] = value ? py::object(py::int_(*value)) : py::none();
+          } else {
+            out[name.c_str()] = value;
+          }
+        },
+        option);
+  }
 }
 
 Params progress_params() {

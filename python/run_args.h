@@ -24,12 +24,16 @@ namespace py = pybind11;
 Params fault_params();
 body::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keywords& k);
 
-// mode, learner, learner_options, steering, hold_windows, monitor_windows, period_learning,
-// beta, threshold, window, settle, max_trials, seed: the options of `multicpg learn`.
+// mode, learner, learner_options, steering, hold_windows, monitor_windows, max_episodes,
+// period_learning, beta, threshold, window, settle, max_trials, step_budget, seed: the options
+// of `multicpg learn` (the numeric ones from learning/number_options.h).
 Params learning_params();
 // The robust-mode ones among them: given with mode='paper', they are refused.
 Params robust_params();
 learning::CompensationOptions learning_options(const Keywords& k);
+// Adds the numeric learning options of `o` (learning/number_options.h) to `out` under their
+// keywords; settle is None when the run works it out.
+void add_number_options(py::dict& out, const learning::CompensationOptions& o);
 
 // progress (True, False or a callable, python/watch.h).
 Params progress_params();

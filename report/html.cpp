@@ -4,8 +4,13 @@
 #include <filesystem>
 #include <sstream>
 
+#include "common/enum_names.h"
+
 namespace multicpg::report {
 namespace {
+
+constexpr auto kReproducedNames = enum_names<Reproduced>(
+    {{Reproduced::yes, "yes"}, {Reproduced::partly, "partly"}, {Reproduced::no, "no"}});
 
 // Checks every <img> and <video> after load and marks the ones that failed (every
 // image and video must load).
@@ -78,15 +83,7 @@ std::string verdict_table(const std::vector<Section>& sections) {
 }  // namespace
 
 std::string_view to_string(Reproduced r) {
-  switch (r) {
-    case Reproduced::yes:
-      return "yes";
-    case Reproduced::partly:
-      return "partly";
-    case Reproduced::no:
-      return "no";
-  }
-  return "";
+  return kReproducedNames.name(r);
 }
 
 std::string verdict_line(const std::vector<Section>& sections) {
@@ -149,9 +146,7 @@ Section section_from_json(const nlohmann::json& j) {
   s.replays = j.value("replays", std::vector<std::string>{});
   for (const nlohmann::json& v : j.value("verdicts", nlohmann::json::array())) {
     const std::string word = v.at("reproduced").get<std::string>();
-    const Reproduced r = word == "yes"      ? Reproduced::yes
-                         : word == "partly" ? Reproduced::partly
-                                            : Reproduced::no;
+    const Reproduced r = kReproducedNames.find(word).value_or(Reproduced::no);
     s.verdicts.push_back({v.at("claim").get<std::string>(), v.at("paper").get<std::string>(),
                           v.at("ours").get<std::string>(), r});
   }

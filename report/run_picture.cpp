@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "common/atomic_file.h"
+#include "common/enum_names.h"
 #include "common/errors.h"
 #include "common/table.h"
 #include "report/figure_drawing.h"
@@ -16,6 +17,11 @@ namespace fs = std::filesystem;
 using namespace drawing;
 
 namespace {
+
+// Each mark's kind in marks.csv, as report/gnuplot/run_picture.gp reads it.
+constexpr auto kRunMarkKindNames = enum_names<RunMarkKind>({{RunMarkKind::fault, "fault"},
+                                                            {RunMarkKind::detection, "detection"},
+                                                            {RunMarkKind::learned, "learned"}});
 
 // The run picture's size: wide enough for the tunnel's 3 m beside its key; one panel taller
 // with the learning trace.
@@ -92,11 +98,8 @@ RunPictureData run_picture_data(const RunPicture& picture) {
   Csv marks({"kind", "label", "x_m", "y_m", "step"});
   for (const RunMark& m : picture.marks) {
     require(m.at < picture.path.size(), name, "a mark lies past the path's end");
-    const char* kind = m.kind == RunMarkKind::fault       ? "fault"
-                       : m.kind == RunMarkKind::detection ? "detection"
-                                                          : "learned";
-    marks.row({kind, m.label, shortest(picture.path[m.at].x), shortest(picture.path[m.at].y),
-               std::to_string(m.at)});
+    marks.row({std::string(kRunMarkKindNames.name(m.kind)), m.label, shortest(picture.path[m.at].x),
+               shortest(picture.path[m.at].y), std::to_string(m.at)});
   }
   data.marks = marks.text();
 

@@ -1,102 +1,38 @@
 #include "sim/robot_file.h"
 
 #include <fmt/format.h>
-#include <toml++/toml.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "common/errors.h"
+#include "common/input_file.h"
+#include "common/toml_file.h"
 #include "sim/model_build.h"
 #include "sim/mujoco_load.h"
 
 namespace multicpg::sim {
 namespace {
 
-// Reads the TOML of one robot file; every error names the file and the key.
-class Reader {
- public:
-  explicit Reader(std::filesystem::path path) : path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    std::string line = path_.string() + ": " + (key.empty() ? "" : key + ": ") + what;
-    std::replace(line.begin(), line.end(), '\n', ' ');
-    line.erase(line.find_last_not_of(' ') + 1);
-    throw BadInput(line);
-  }
-
-  // Only the keys `known` may appear in `table` (so a misspelt key is not silently ignored).
-  void only(const toml::table& table, const std::string& prefix,
-            std::initializer_list<std::string_view> known) const {
-    for (const auto& [key, value] : table) {
-      if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
-        fail(prefix + std::string(key.str()), "unknown key");
-      }
-    }
-  }
-
-  const toml::node& node(const toml::table& table, const std::string& prefix,
-                         std::string_view key) const {
-    const toml::node* n = table.get(key);
-    if (n == nullptr) fail(prefix + std::string(key), "missing");
-    return *n;
-  }
-
-  std::string text(const toml::table& table, const std::string& prefix,
-                   std::string_view key) const {
-    const std::optional<std::string> v = node(table, prefix, key).value_exact<std::string>();
-    if (!v || v->empty()) fail(prefix + std::string(key), "must be a non-empty string");
-    return *v;
-  }
-
-  double number(const toml::node& n, const std::string& key) const {
-    if (!n.is_number()) fail(key, "must be a number");
-    return *n.value<double>();
-  }
-
-  robot::JointMap joint(const toml::table& table, const std::string& prefix,
-                        std::string_view key) const {
-    const std::string k = prefix + std::string(key);
-    const toml::table* t = node(table, prefix, key).as_table();
-    if (t == nullptr) fail(k, "must be a table { joint = ..., sign = ..., window = [lo, hi] }");
-    only(*t, k + ".", {"joint", "sign", "window"});
-    robot::JointMap j;
-    j.name = text(*t, k + ".", "joint");
-    j.sign = number(node(*t, k + ".", "sign"), k + ".sign");
-    if (j.sign != 1.0 && j.sign != -1.0) fail(k + ".sign", "must be 1 or -1");
-    const toml::array* w = node(*t, k + ".", "window").as_array();
-    if (w == nullptr || w->size() != 2) fail(k + ".window", "must be [lo, hi] in rad");
-    j.window = {number(*w->get(0), k + ".window"), number(*w->get(1), k + ".window")};
-    if (!(j.window.lo < j.window.hi)) fail(k + ".window", "lo must be below hi");
-    return j;
-  }
-
- private:
-  std::filesystem::path path_;
-};
-
-// A whole file, at most `limit` bytes: the robot file itself (`key` empty: the message names it
-// already) or the file its `key` names.
-std::string read_text(const std::filesystem::path& path, std::uintmax_t limit, const Reader& r,
-                      const std::string& key) {
-  const std::string file = key.empty() ? "" : " '" + path.string() + "'";
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) r.fail(key, "cannot read" + file + ": " + ec.message());
-  if (size > limit) {
-    r.fail(key, (key.empty() ? "it" : file.substr(1)) + " has " + std::to_string(size) +
-                    " bytes, at most " + std::to_string(limit));
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) r.fail(key, "cannot read" + file);
-  return bytes.str();
+// One joint of a leg map: { joint = ..., sign = ..., window = [lo, hi] }.
+robot::JointMap joint(const TomlReader& r, const toml::table& table, const std::string& prefix,
+                      std::string_view key) {
+  const std::string k = prefix + std::string(key);
+  const toml::table* t = r.node(table, prefix, key).as_table();
+  if (t == nullptr) r.fail(k, "must be a table { joint = ..., sign = ..., window = [lo, hi] }");
+  r.only(*t, k + ".", {"joint", "sign", "window"});
+  robot::JointMap j;
+  j.name = r.text(*t, k + ".", "joint");
+  j.sign = r.number(*t, k + ".", "sign");
+  if (j.sign != 1.0 && j.sign != -1.0) r.fail(k + ".sign", "must be 1 or -1");
+  const toml::array* w = r.node(*t, k + ".", "window").as_array();
+  if (w == nullptr || w->size() != 2) r.fail(k + ".window", "must be [lo, hi] in rad");
+  j.window = {r.number(*w->get(0), k + ".window"), r.number(*w->get(1), k + ".window")};
+  if (!(j.window.lo < j.window.hi)) r.fail(k + ".window", "lo must be below hi");
+  return j;
 }
 
 // The built-in robot whose layout has `legs` legs.
-robot::RobotKind layout_of(std::size_t legs, const Reader& r) {
+robot::RobotKind layout_of(std::size_t legs, const TomlReader& r) {
   for (robot::RobotKind kind : robot::kRobotKinds) {
     if (robot::morphology(kind).size() == legs) return kind;
   }
@@ -135,7 +71,7 @@ bool has_ground(const mjModel* m) {
 
 // The MJCF of a URDF (MuJoCo's loader reads it) with a free joint on its trunk, which URDF fixes
 // to the world.
-std::string urdf_model(const std::string& urdf, const std::string& trunk, const Reader& r) {
+std::string urdf_model(const std::string& urdf, const std::string& trunk, const TomlReader& r) {
   std::string xml = urdf_as_mjcf(urdf);
   const auto m = compile_mjcf(xml);
   const int body = mj_name2id(m.get(), mjOBJ_BODY, trunk.c_str());
@@ -216,14 +152,8 @@ bool is_robot_file(const std::string& robot) {
 }
 
 robot::RobotFile load_robot_file(const std::filesystem::path& path) {
-  const Reader r(path);
-  const std::string source = read_text(path, kMaxRobotFileBytes, r, "");
-  toml::table doc;
-  try {
-    doc = toml::parse(source, path.string());
-  } catch (const toml::parse_error& e) {
-    r.fail("line " + std::to_string(e.source().begin.line), std::string(e.description()));
-  }
+  const TomlReader r(path);
+  const toml::table doc = r.parse(r.read(kMaxRobotFileBytes, kMaxRobotFileText, "a robot file"));
   r.only(doc, "", {"name", "model", "trunk", "yaw", "master", "backbone", "legs"});
   robot::RobotFile file;
   file.path = path;
@@ -232,7 +162,7 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
   file.trunk = r.text(doc, "", "trunk");
   file.yaw = r.text(doc, "", "yaw");
   file.master = r.text(doc, "", "master");
-  if (doc.contains("backbone")) file.backbone = r.joint(doc, "", "backbone");
+  if (doc.contains("backbone")) file.backbone = joint(r, doc, "", "backbone");
 
   const toml::array* legs = r.node(doc, "", "legs").as_array();
   if (legs == nullptr) r.fail("legs", "must be an array of tables ([[legs]])");
@@ -264,7 +194,7 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
     }
     leg.foot = r.text(*t, p, "foot");
     for (std::size_t j = 0; j < robot::kJointsPerLeg; ++j) {
-      leg.joints[j] = r.joint(*t, p, robot::to_string(robot::kJoints[j]));
+      leg.joints[j] = joint(r, *t, p, robot::to_string(robot::kJoints[j]));
     }
     file.legs.push_back(leg);
   }
@@ -273,7 +203,11 @@ robot::RobotFile load_robot_file(const std::filesystem::path& path) {
                          " (paper §2.3)");
   }
 
-  file.model_xml = read_text(file.model, kMaxModelBytes, r, "model");
+  try {
+    file.model_xml = read_input_file(file.model, kMaxModelBytes, kMaxModelText, "a robot's model");
+  } catch (const BadInput& e) {
+    r.fail("model", e.what());
+  }
   try {
     if (file.model.extension() == ".urdf")
       file.model_xml = urdf_model(file.model_xml, file.trunk, r);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "robot/robot_file.h"
 #include "sim/sim_model.h"
@@ -14,8 +15,10 @@ namespace multicpg::sim {
 
 // Most bytes a robot file may have: a leg map of eight legs is about 3 kB.
 inline constexpr std::uintmax_t kMaxRobotFileBytes = 1 << 20;
+inline constexpr std::string_view kMaxRobotFileText = "1 MiB";
 // Most bytes of its MJCF: the built-in robots' are about 30 kB.
 inline constexpr std::uintmax_t kMaxModelBytes = 16 << 20;
+inline constexpr std::string_view kMaxModelText = "16 MiB";
 
 // The robot file at `path`, its model read and checked: it compiles in MuJoCo and holds every
 // name the leg map gives (make_sim_model). Throws BadInput, one line "FILE: KEY: what is wrong"

@@ -10,6 +10,8 @@
 #include "common/angles.h"
 #include "common/errors.h"
 #include "learning/compensation.h"
+#include "learning/json.h"
+#include "learning/number_options.h"
 #include "tests/fake_body.h"
 
 namespace multicpg::learning {
@@ -170,6 +172,35 @@ TEST(Compensation, JsonHasTheReportedFields) {
     EXPECT_TRUE(t.at("periods").is_object());
     EXPECT_TRUE(t.at("deviation_deg").is_number());
     EXPECT_TRUE(t.at("accepted").is_boolean());
+  }
+}
+
+// Each numeric option the CLI and Python make from learning/number_options.h is the record's key
+// it names: its highest value is written under that key, reads back into the same member, and
+// one above it is refused naming that key.
+TEST(Compensation, EveryNumberOptionIsTheRecordKeyItNames) {
+  for (const LearningNumber& option : kLearningNumbers) {
+    std::visit(
+        [](const auto& n) {
+          SCOPED_TRACE(std::string(n.flag));
+          CompensationOptions o;
+          n.field(o) = n.limits.hi;
+          const nlohmann::json j = o;
+          std::string pointer = "/" + std::string(n.key);
+          std::replace(pointer.begin(), pointer.end(), '.', '/');
+          EXPECT_EQ(j.at(nlohmann::json::json_pointer(pointer)), n.limits.hi);
+          CompensationOptions back = j.get<CompensationOptions>();
+          EXPECT_EQ(n.field(o), n.field(back));
+          EXPECT_NO_THROW(validate(o));
+          n.field(o) = n.limits.hi + 1;
+          try {
+            validate(o);
+            ADD_FAILURE() << "one above the limits is taken";
+          } catch (const OptionError& e) {
+            EXPECT_EQ(e.key(), n.key);
+          }
+        },
+        option);
   }
 }
 

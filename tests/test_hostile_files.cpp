@@ -390,6 +390,42 @@ TEST(HostileFiles, RunFilesAndLearnedCombinationsMustBeRegularFiles) {
   fs::remove_all(dir);
 }
 
+// A robot file and the model it names are read as every input file is (common/toml_file.h): a
+// FIFO is refused without waiting for a writer, a directory named as such, in one line.
+TEST(HostileFiles, RobotFilesAndTheirModelsMustBeRegularFiles) {
+  const std::string dir = make_temp_dir("multicpg-hostile-robots-");
+  const std::string fifo = dir + "/fifo.toml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_directories(dir + "/folder.toml");
+  // A good robot file whose model is a FIFO.
+  const std::string examples = std::string(MULTICPG_SOURCE_DIR) + "/examples/robots/";
+  std::ifstream in(examples + "hobby_hexapod.toml");
+  std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string model = "model = \"hobby_hexapod.xml\"";
+  ASSERT_NE(toml.find(model), std::string::npos);
+  toml.replace(toml.find(model), model.size(), "model = \"fifo.xml\"");
+  std::ofstream(dir + "/robot.toml") << toml;
+  ASSERT_EQ(::mkfifo((dir + "/fifo.xml").c_str(), 0600), 0);
+  for (const auto& [args, line] : std::vector<std::pair<std::string, std::string>>{
+           {"model --check " + fifo, fifo + ": is a FIFO, not a file"},
+           {"walk --robot " + dir + "/folder.toml",
+            dir + "/folder.toml: is a directory, not a file"},
+           {"model --check " + dir + "/robot.toml",
+            dir + "/robot.toml: model: " + dir + "/fifo.xml: is a FIFO, not a file"},
+       }) {
+    SCOPED_TRACE(args);
+    std::vector<std::string> words;
+    std::istringstream split(args);
+    for (std::string w; split >> w;) words.push_back(w);
+    CliProcess cli(words);
+    ASSERT_TRUE(cli.wait(kHangGuard)) << "hangs";
+    EXPECT_EQ(cli.exit_code(), 2) << cli.err();
+    EXPECT_EQ(cli.err(), "multicpg: " + line + "\n");
+    EXPECT_EQ(cli.out(), "");
+  }
+  fs::remove_all(dir);
+}
+
 // An address space of 3 GB: the program and its libraries fit, 4096 thread stacks (8 MiB each
 // by default) do not.
 constexpr long kAddressSpaceKb = 3'000'000;

@@ -67,12 +67,18 @@ TEST_F(RobotFileRuns, AnExperimentFileNamesItRelativeToItselfAndRecordsIt) {
   const json run = read_json(dir_ + "/file/runs/R1_run000.json");
   EXPECT_EQ(run.at("params").at("robot_file"), record);
 
-  // Its run files rerun from the record; a changed robot file is refused, resumed or rerun.
+  // Its run files rerun from the record, and a walk's record replays; a changed robot file is
+  // refused, resumed, rerun or replayed, by the one reader of the record (run_robot.h).
   const CliResult rerun = run_cli("rerun " + dir_ + "/file R1_run000");
   EXPECT_EQ(rerun.exit_code, 0) << rerun.err;
+  const CliResult walked = run_cli("walk --json --steps 40 --window 20 --robot " + robot_);
+  ASSERT_EQ(walked.exit_code, 0) << walked.err;
+  write(dir_ + "/walk.json", walked.out);
+  const std::string replay = "replay " + dir_ + "/walk.json --out " + dir_ + "/walk.html";
+  ok(replay);
   std::ofstream(robot_, std::ios::app) << "# edited\n";
   for (const std::string& command : {"run " + dir_ + "/file.toml --jobs 1 --out " + dir_ + "/file",
-                                     "rerun " + dir_ + "/file R1_run000"}) {
+                                     "rerun " + dir_ + "/file R1_run000", replay}) {
     const CliResult r = run_cli(command);
     EXPECT_EQ(r.exit_code, 2) << command;
     EXPECT_EQ(count_lines(r.err), 1) << r.err;
@@ -84,7 +90,7 @@ TEST_F(RobotFileRuns, ABadRobotFileInAnExperimentNamesBothFilesAndTheKey) {
   write(dir_ + "/missing.toml", "robot = \"robots/nosuch.toml\"\n" + kExperiment);
   expect_bad_input("run --check " + dir_ + "/missing.toml", "missing.toml:1: robot");
   expect_bad_input("run --check " + dir_ + "/missing.toml",
-                   "nosuch.toml: cannot read: No such file");
+                   "nosuch.toml: cannot read (No such file");
   std::string toml = read_file(robot_);
   toml.replace(toml.find("trunk = \"trunk\""), 15, "trunk = \"torso\"");
   write(dir_ + "/robots/torso.toml", toml);

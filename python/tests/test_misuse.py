@@ -172,6 +172,10 @@ CASES = [
     ("learn-paper-steering", "", "learn(disable='R1', mode='paper', steering='off')", V,
      "steering"),
     ("learn-hold-zero", "", "learn(disable='R1', hold_windows=0)", V, "hold_windows"),
+    # every numeric option of the CLI's (learning/number_options.h), with its limits
+    ("learn-episodes-zero", "", "learn(disable='R1', max_episodes=0)", V, "max_episodes"),
+    ("learn-budget-zero", "", "learn(disable='R1', step_budget=0)", V, "step_budget"),
+    ("learn-paper-episodes", "", "learn(disable='R1', mode='paper', max_episodes=2)", V, "mode"),
     ("learn-paper-two-faults", "", "learn(disable='R1', mode='paper', faults=['R2@500'])", V,
      "mode"),
     # mistyped keywords: named, with the nearest known one

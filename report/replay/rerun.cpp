@@ -22,7 +22,6 @@
 #endif
 #include "body/course_json.h"
 #include "body/fault_spec.h"
-#include "robot/leg_sets.h"
 #include "sim/walk.h"
 
 namespace multicpg::report {
@@ -72,18 +71,11 @@ auto field(const std::string& name, std::string_view key, Read&& read) -> declty
 // The run's robot: the built-in layout it names, or its robot file, which must still hold the
 // robot the run walked.
 void set_robot(experiments::RunSpec& spec, const json& result, const std::string& name) {
-  if (result.contains("robot_file")) {
-    const auto recorded = result.at("robot_file").get<experiments::RobotFileRecord>();
-    spec.robot.file = experiments::load_run_robot_file(recorded.path);
-    if (spec.robot.file->record != recorded) {
-      throw BadInput(name + " was walked by the robot file " + quoted(recorded.path) +
-                     ", which has changed since");
-    }
-    spec.robot.kind = spec.robot.file->file.layout;
-    return;
+  try {
+    spec.robot = experiments::recorded_robot(result);
+  } catch (const OptionError& e) {
+    throw BadInput(name + ": " + e.key() + ": " + e.what());
   }
-  spec.robot.kind = field(
-      name, "robot", [&] { return robot::parse_robot(result.at("robot").get<std::string>()); });
 }
 
 // Checks the run as validate does, its errors naming the file.
@@ -142,45 +134,24 @@ RerunReplay rerun_experiment_run(const fs::path& file) {
 }
 
 RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::SimOptions& sim) {
-  experiments::RunSpec spec;
-  set_robot(spec, saved, name);
-  spec.robot.sim = sim;
-  spec.robot.sim.control_dt = saved.at("control_dt_s").get<double>();
-  spec.robot.sim.physics_dt = saved.at("physics_dt_s").get<double>();
+  const experiments::RecordedWalk recorded = experiments::read_walk_json(saved, name, sim);
+  const experiments::RunSpec& spec = recorded.spec;
   const robot::Morphology& morph = experiments::morphology(spec.robot);
-  spec.start.periods = field(
-      name, "periods", [&] { return robot::period_map_from_json(morph, saved.at("periods")); });
-  spec.start.warmup = saved.at("warmup").get<long>();
-  for (const json& f : saved.at("faults")) {
-    spec.faults.push_back(field(name, "faults", [&] {
-      if (f.contains("fault")) {
-        // Walk records before the fault's one shape gave any other kind as its text.
-        return body::parse_fault(
-            morph,
-            f.at("fault").get<std::string>() + '@' + std::to_string(f.at("step").get<long>()),
-            f.at("recover").get<bool>());
-      }
-      json indexed = f;  // sim/course_json.h, its legs named as walk --json names them
-      indexed["legs"] = robot::parse_leg_set(morph, f.at("legs").get<std::string>());
-      return indexed.get<body::Fault>();
-    }));
-  }
-  body::sort_timeline(spec.faults);
   check(spec, name);
   const sim::SimModel model = experiments::make_model(spec.robot);
   ReplayRecorder recorder;
   sim::WalkSpec walk;
   walk.start = spec.start;
   walk.faults = spec.faults;
-  walk.settle = saved.at("settle").get<long>();
-  walk.steps = saved.at("steps").get<long>();
+  walk.settle = recorded.settle;
+  walk.steps = recorded.steps;
   // Checked before a step is walked: a record edited to 10^8 steps is no replay.
   if (!report::kReplayStepLimits.contains(walk.steps)) {
     throw BadInput(name + ": steps " + std::to_string(walk.steps) + " is outside " +
                    report::kReplayStepLimits.text() +
                    ", the steps a replay holds (docs/replay.md)");
   }
-  walk.window = saved.at("window").get<long>();
+  walk.window = recorded.window;
   walk.keep_record = false;
   walk.observer = &recorder;
   sim::WalkResult r;
