@@ -19,6 +19,7 @@
 #include "learning/annealing.h"
 #include "learning/compensation.h"
 #include "learning/steering.h"
+#include "python/ask_tell.h"
 #include "python/faults.h"
 #include "python/learning.h"
 #include "python/replay.h"
@@ -90,6 +91,11 @@ PYBIND11_MODULE(_multicpg, m) {
   m.attr("GAIT_PERIODS") = py::tuple(py::cast(std::vector<int>(
       multicpg::robot::kGaitPeriods.begin(), multicpg::robot::kGaitPeriods.end())));
   m.attr("MAX_STEPS") = body::kMaxSteps;
+  {
+    std::vector<std::string> names;
+    for (const learning::LearnerInfo& l : learning::learner_list()) names.emplace_back(l.name);
+    m.attr("LEARNERS") = py::tuple(py::cast(names));  // every registered learner, by name
+  }
   m.attr("FRAME_SIDE_LIMITS") =
       py::make_tuple(report::kFrameSideLimits.lo, report::kFrameSideLimits.hi);
 
@@ -98,6 +104,7 @@ PYBIND11_MODULE(_multicpg, m) {
   mp::register_state(m);
   mp::register_simulations(m);
   mp::register_learning(m);
+  mp::register_ask_tell(m);
 
   m.def(
       "_test_mujoco_error",

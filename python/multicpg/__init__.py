@@ -23,6 +23,8 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 - ``replay(sim, "run.html", steps=400)`` or ``replay(learn(...), "learn.html")``: a 3D replay,
   one HTML page that opens offline in any browser and shows itself inline in Jupyter.
 - ``experiment(file_or_dict, jobs=...)``: a sweep as ``multicpg run`` runs it; its tidy table.
+- ``Learner(name, failed=..., windows=...)``: any learner driven from your own loop, ``ask()``
+  the next periods, ``tell(windows=...)`` what they measured (ask/tell; docs/python.md).
 - ``Annealer``: the annealing search one step at a time; ``env.CompensationEnv``: the learning
   task as a Gymnasium environment (one step = one trial) with its action and observation spaces.
 
@@ -47,9 +49,11 @@ from typing import Optional as _Optional, Union as _Union
 
 from ._multicpg import (
     __version__,
+    LEARNERS,
     _run_experiment,
     Annealer,
     Fault,
+    Learner,
     Recovery,
     Robot,
     Simulation,
@@ -67,7 +71,9 @@ from .replay import Replay, replay
 
 __all__ = [
     "Annealer",
+    "LEARNERS",
     "Fault",
+    "Learner",
     "Recovery",
     "Replay",
     "Robot",
