@@ -31,6 +31,7 @@ struct BenchmarkOptions {
   int seeds = experiments::kDefaultBenchmarkSeeds;
   std::uint64_t seed = 1;
   bool live_seeds = false;
+  bool told_nothing = false;
   int budget = experiments::kDefaultBenchmarkBudget;
   int max_trials = learning::kDefaultMaxTrials;
   std::string mode = "robust";
@@ -64,6 +65,7 @@ void run(const BenchmarkOptions& o) {
   spec.seeds = o.seeds;
   spec.seed = o.seed;
   spec.live_seeds = o.live_seeds;
+  spec.told_nothing = o.told_nothing;
   spec.budget = o.budget;
   spec.search.max_trials = o.max_trials;
   spec.protocol.yaw_only = mode == learning::Mode::paper;
@@ -113,8 +115,8 @@ void run(const BenchmarkOptions& o) {
   const nlohmann::json summary = experiments::benchmark_summary(b);
   const std::size_t holding = experiments::holding_scenarios(b);
   std::cout << morph.name << ", "
-            << counted(static_cast<long>(b.cells.size() / spec.learners.size()), "scenario")
-            << " x " << counted(spec.seeds, "seed") << ", " << o.mode << " trials, held within "
+            << counted(static_cast<long>(experiments::benchmark_scenarios(b)), "scenario") << " x "
+            << counted(spec.seeds, "seed") << ", " << o.mode << " trials, held within "
             << spec.budget << " trials, pooled over the "
             << counted(static_cast<long>(holding), "scenario")
             << " where a combination holds (share held with its 95% interval):\n";
@@ -130,9 +132,9 @@ void run(const BenchmarkOptions& o) {
         }
         return s.str();
       };
-      std::cout << "  " << std::left << std::setw(10)
-                << l.at("learner").at("name").get<std::string>() << std::right << " held "
-                << std::setw(5) << 100.0 * l.at("share_held").get<double>() << "% (95% interval "
+      std::cout << "  " << std::left << std::setw(10) << experiments::benchmark_label(l)
+                << std::right << " held " << std::setw(5)
+                << 100.0 * l.at("share_held").get<double>() << "% (95% interval "
                 << 100.0 * l.at("share_low").get<double>() << "–"
                 << 100.0 * l.at("share_high").get<double>() << "%), trials to held: median "
                 << text(l.at("median_trials")) << " (quartiles " << text(l.at("q1_trials")) << "–"
@@ -176,6 +178,9 @@ void register_learner_benchmark(CLI::App& app) {
   cmd->add_flag("--live-seeds", o->live_seeds,
                 "seed run k's learner with --seed + k, as `learn --seed` seeds a live run's (with "
                 "--window-order walked a replay then retraces that run)");
+  cmd->add_flag("--told-nothing", o->told_nothing,
+                "also replay every learner told nothing about the fault: it searches every leg's "
+                "period, the failed legs' too (docs/learning.md \"What a learner is told\")");
   cmd->add_option("--budget", o->budget, "trials within which a run counts as held")
       ->check(in(experiments::kBenchmarkBudgetLimits))
       ->capture_default_str();

@@ -41,9 +41,9 @@ BodyWalk walk_body(body::Body& body, long settle, long steps, long window) {
 }
 
 BodyLearning learn_body(body::Body& body, const learning::CompensationOptions& options,
-                        long after_steps) {
+                        const learning::LearnerData& data, long after_steps) {
   BodyLearning out;
-  out.result = learning::compensate(body, options);
+  out.result = learning::compensate(body, options, data);
   out.learning_end_step = body.step_count();
   if (after_steps <= 0) return out;
   // Walk on as the learner left the robot: its periods and its steering reflex, every fault that

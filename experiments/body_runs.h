@@ -33,8 +33,9 @@ struct BodyLearning {
   long learning_end_step = 0;  // steps walked when learning stopped
   std::vector<body::WindowMeasure> after_windows;
 };
+// The learner learns from `data` (learner_data(spec), resolved before the body opens).
 BodyLearning learn_body(body::Body& body, const learning::CompensationOptions& options,
-                        long after_steps);
+                        const learning::LearnerData& data, long after_steps);
 
 // The tunnel's walk (paper §5, Table 1): from where the body stands, step by step until it has
 // gone `length_m` along the ground (a simulated body's scene) or along its start heading (a body

@@ -97,16 +97,28 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
     }
     scenarios.push_back(s);
   }
+  // Each learner's data resolved once, checked for every scenario it replays with that scenario
+  // withheld, as replay_run withholds it.
+  const learning::Criterion criterion =
+      spec.protocol.yaw_only ? learning::kPaperCriterion : b.dataset.criterion();
+  std::vector<learning::LearnerData> data;
   for (const learning::LearnerChoice& l : spec.learners) {
+    data.push_back(learning::learner_data(l, b.dataset.robot, criterion));
     for (const learning::ScenarioLandscape* s : scenarios) {
-      learning::check_learner(
-          l, b.dataset.robot, s->failed,
-          spec.protocol.yaw_only ? learning::kPaperCriterion : b.dataset.criterion());
+      learning::LearnerData unseen = data.back();
+      unseen.withheld = {s->failed};
+      learning::check_learner(l, unseen, b.dataset.robot, learning::ToldFault::legs(s->failed),
+                              criterion);
+      if (spec.told_nothing) {
+        learning::check_learner(l, unseen, b.dataset.robot, learning::ToldFault::nothing(),
+                                criterion);
+      }
     }
   }
 
-  // One job per scenario and learner, its seeds in order; results land in their own cell.
-  const std::size_t cells = scenarios.size() * spec.learners.size();
+  // One job per scenario and entry, its seeds in order; results land in their own cell.
+  const std::vector<BenchmarkEntry> entries = benchmark_entries(spec);
+  const std::size_t cells = scenarios.size() * entries.size();
   b.cells.resize(cells);
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
@@ -114,8 +126,10 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
   const auto start = std::chrono::steady_clock::now();
   const auto work = [&] {
     for (std::size_t i = next++; i < cells; i = next++) {
-      const learning::ScenarioLandscape& s = *scenarios[i / spec.learners.size()];
-      const learning::LearnerChoice& l = spec.learners[i % spec.learners.size()];
+      const learning::ScenarioLandscape& s = *scenarios[i / entries.size()];
+      const BenchmarkEntry& e = entries[i % entries.size()];
+      const learning::LearnerChoice& l = spec.learners[e.learner];
+      const learning::LearnerData& d = data[e.learner];
       const std::string name = robot::leg_set_name(morph, s.failed);
       try {
         std::vector<learning::ReplayRun> runs;
@@ -124,10 +138,10 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
           const std::uint64_t seed = derive_seed(spec.seed, name + "#" + std::to_string(k));
           std::optional<std::uint64_t> learner_seed;
           if (spec.live_seeds) learner_seed = spec.seed + static_cast<std::uint64_t>(k);
-          runs.push_back(learning::replay_run(b.dataset, s, l, spec.search, spec.protocol, seed,
-                                              learner_seed));
+          runs.push_back(learning::replay_run(b.dataset, s, l, d, spec.search, spec.protocol, seed,
+                                              learner_seed, e.told));
         }
-        b.cells[i] = score(s, name, l.name, std::move(runs), spec.budget);
+        b.cells[i] = score(s, name, e.label, std::move(runs), spec.budget);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(error_mutex);
         if (!error) error = std::current_exception();
@@ -215,7 +229,8 @@ learning::LearnerChoice resolve_benchmark_learner(learning::LearnerChoice asked,
 nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
   const LearnerBenchmarkSpec& s = b.spec;
   nlohmann::json learners = nlohmann::json::array();
-  for (const learning::LearnerChoice& l : s.learners) {
+  for (const BenchmarkEntry& e : benchmark_entries(s)) {
+    const learning::LearnerChoice& l = s.learners[e.learner];
     // Pooled over the scenarios where something holds.
     int runs = 0;
     int held = 0;
@@ -224,7 +239,7 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
     std::size_t missing = 0;
     double worst_share = 1.0;
     for (const BenchmarkCell& c : b.cells) {
-      if (c.learner != l.name || c.holding == 0) continue;
+      if (c.learner != e.label || c.holding == 0) continue;
       runs += c.runs;
       held += c.held_within;
       false_stops += c.false_stops;
@@ -256,6 +271,7 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
                         {"median_trials", q(0.5)},
                         {"q3_trials", q(0.75)},
                         {"false_stops", false_stops}});
+    if (e.told == learning::Told::nothing) learners.back()["told"] = "nothing";
   }
   return {{"dataset", s.dataset.string()},
           {"robot", robot::to_string(b.dataset.robot)},
@@ -268,9 +284,31 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
           {"yaw_only", s.protocol.yaw_only},
           {"hold_windows", s.protocol.hold_windows},
           {"window_order", learning::to_string(s.protocol.window_order)},
-          {"scenarios", b.cells.size() / std::max<std::size_t>(1, s.learners.size())},
+          {"scenarios", benchmark_scenarios(b)},
           {"holding_scenarios", holding_scenarios(b)},
           {"learners", learners}};
+}
+
+std::vector<BenchmarkEntry> benchmark_entries(const LearnerBenchmarkSpec& spec) {
+  std::vector<BenchmarkEntry> out;
+  for (std::size_t i = 0; i < spec.learners.size(); ++i) {
+    out.push_back({i, learning::Told::failed_legs, spec.learners[i].name});
+  }
+  if (spec.told_nothing) {
+    for (std::size_t i = 0; i < spec.learners.size(); ++i) {
+      out.push_back({i, learning::Told::nothing, spec.learners[i].name + ", told nothing"});
+    }
+  }
+  return out;
+}
+
+std::string benchmark_label(const nlohmann::json& summary_learner) {
+  const std::string name = summary_learner.at("learner").at("name").get<std::string>();
+  return summary_learner.value("told", "") == "nothing" ? name + ", told nothing" : name;
+}
+
+std::size_t benchmark_scenarios(const LearnerBenchmark& b) {
+  return b.cells.size() / std::max<std::size_t>(1, benchmark_entries(b.spec).size());
 }
 
 std::size_t holding_scenarios(const LearnerBenchmark& b) {
@@ -321,8 +359,7 @@ std::string benchmark_markdown(const LearnerBenchmark& b) {
   if (holding > 0) {
     for (const nlohmann::json& l : summary.at("learners")) {
       t.add_row({"pooled (" + counted(static_cast<long>(holding), "scenario") + ")",
-                 l.at("learner").at("name").get<std::string>(), "", "",
-                 std::to_string(l.at("runs").get<int>()),
+                 benchmark_label(l), "", "", std::to_string(l.at("runs").get<int>()),
                  std::to_string(l.at("held_within_budget").get<int>()),
                  percent(l.at("share_held").get<double>()),
                  percent(l.at("share_low").get<double>()) + "–" +
@@ -332,8 +369,7 @@ std::string benchmark_markdown(const LearnerBenchmark& b) {
                  std::to_string(l.at("false_stops").get<int>()), "", "", "", ""});
     }
   }
-  const std::string scenarios = counted(
-      static_cast<long>(b.cells.size() / std::max<std::size_t>(1, s.learners.size())), "scenario");
+  const std::string scenarios = counted(static_cast<long>(benchmark_scenarios(b)), "scenario");
   const std::string protocol =
       s.protocol.yaw_only ? "paper trials (one window's yaw)"
                           : "robust trials (up to " + counted(s.protocol.hold_windows, "window") +

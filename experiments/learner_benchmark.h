@@ -38,7 +38,21 @@ struct LearnerBenchmarkSpec {
   learning::SearchBounds search;  // the dataset's period set and threshold; the trial cap
   learning::TrialProtocol protocol;
   std::vector<std::vector<std::size_t>> scenarios;  // empty: every scenario of the dataset
+  // Also replay every learner told nothing about the fault (the price of not knowing,
+  // docs/learning.md "What a learner is told"), beside it told the failed legs.
+  bool told_nothing = false;
 };
+
+// One learner as a benchmark replays it: its choice, what it is told, and its name in the
+// tables ("prior", "prior, told nothing").
+struct BenchmarkEntry {
+  std::size_t learner = 0;  // index into LearnerBenchmarkSpec::learners
+  learning::Told told = learning::Told::failed_legs;
+  std::string label;
+};
+// Each learner told the failed legs, then (told_nothing) each told nothing: the cells' order
+// within a scenario.
+std::vector<BenchmarkEntry> benchmark_entries(const LearnerBenchmarkSpec& spec);
 
 // One learner on one scenario over its seeds.
 struct BenchmarkCell {
@@ -97,6 +111,10 @@ Table benchmark_runs_table(const LearnerBenchmark& b);
 // The per-learner totals over the scenarios with at least one holding combination (pooled
 // runs), and the options that decided the results.
 nlohmann::json benchmark_summary(const LearnerBenchmark& b);
+// A summary learner's name in tables: its name, with ", told nothing" when it was told nothing.
+std::string benchmark_label(const nlohmann::json& summary_learner);
+// How many scenarios `b` replayed.
+std::size_t benchmark_scenarios(const LearnerBenchmark& b);
 // How many scenarios of `b` have a combination that holds: those the pooled scores sum.
 std::size_t holding_scenarios(const LearnerBenchmark& b);
 // benchmark.md, for reading: a caption (what was replayed, how a run is scored), a row per

@@ -49,9 +49,10 @@ LearningRun run_learning(const sim::SimModel& model, const RunSpec& spec,
   own.observer = &ends;
   own.record = spec.record.steps ? &run.record : nullptr;
   own.record_joints = true;
+  const learning::LearnerData data = learner_data(spec);
   const std::unique_ptr<RunBody> body = open_body(started, model, setup, own);
   BodyLearning learned = guarded(*body, spec, watchers.stopped, [&] {
-    BodyLearning l = learn_body(body->body(), *spec.learning, after_steps);
+    BodyLearning l = learn_body(body->body(), *spec.learning, data, after_steps);
     body->finish("the learning run ended");
     return l;
   });

@@ -40,13 +40,9 @@ void validate(const RunSpec& spec) {
   within("learning", [&] {
     learning::validate(*spec.learning);
     learning::validate_faults(*spec.learning, spec.faults);
-    within("learner", [&] {
-      // Before any walk, the detection's too (a real robot walks it).
-      learning::check_learner(spec.learning->learner, spec.robot.kind,
-                              body::failing_legs(spec.faults), learning::criterion(*spec.learning),
-                              spec.learning->search.period_set);
-    });
   });
+  // Before any walk, the detection's too (a real robot walks it).
+  (void)learner_data(spec);
   if (spec.faults.empty()) {
     throw OptionError("faults", "a learning run needs a leg that fails: there is nothing to learn");
   }
@@ -55,6 +51,21 @@ void validate(const RunSpec& spec) {
                       "a learning run starts with every leg at one period, its clients "
                       "synchronised (paper §2.3)");
   }
+}
+
+learning::LearnerData learner_data(const RunSpec& spec) {
+  if (!spec.learning) return {};
+  learning::LearnerData data;
+  within("learning", [&] {
+    within("learner", [&] {
+      // Told the legs that fail, as every episode's learner is (learning/compensation.cpp).
+      data = learning::check_learner(spec.learning->learner, spec.robot.kind,
+                                     learning::ToldFault::legs(body::failing_legs(spec.faults)),
+                                     learning::criterion(*spec.learning),
+                                     spec.learning->search.period_set);
+    });
+  });
+  return data;
 }
 
 }  // namespace multicpg::experiments

@@ -58,4 +58,9 @@ body::StartSpec learning_start(learning::Mode mode);
 // cannot take.
 void validate(const RunSpec& spec);
 
+// What the learner of the learning run `spec` learns from besides its trials (its dataset,
+// learning::learner_data), read and checked against the run once before its body opens; empty
+// for a learner that needs none. Throws OptionError or BadInput as validate does.
+learning::LearnerData learner_data(const RunSpec& spec);
+
 }  // namespace multicpg::experiments

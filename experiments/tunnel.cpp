@@ -67,11 +67,12 @@ TunnelOutcome run_tunnel(const RunSpec& spec, const sim::SimModel& corridor, lon
     sim::Observers both({observer, learning_observer});
     Watchers watchers = hardware;
     watchers.observer = observer != nullptr || learning_observer != nullptr ? &both : nullptr;
+    const learning::LearnerData data = learner_data(spec);
     const std::unique_ptr<RunBody> robot = open_body(spec, corridor, setup, watchers);
     guarded(*robot, spec, hardware.stopped, [&] {
       std::optional<learning::SteeringParams> steering;
       if (spec.learning) {
-        out.learned = learn_body(robot->body(), *spec.learning, 0).result;
+        out.learned = learn_body(robot->body(), *spec.learning, data, 0).result;
         if (out.learned->steering) steering = spec.learning->steering_params;
       }
       for (const neural::LegState& leg : robot->body().controller().legs) {

@@ -26,7 +26,7 @@ class AnnealingLearner final : public Learner {
  public:
   AnnealingLearner(const LearnerSetup& setup, double beta)
       : params_(annealing_params(setup.search, beta)),
-        state_(start_annealing(params_, setup.start, setup.fixed, setup.start_deviation_deg,
+        state_(start_annealing(params_, setup.start, setup.told.failed(), setup.start_deviation_deg,
                                setup.seed)) {}
 
   std::optional<Periods> propose() override {
@@ -62,7 +62,8 @@ nlohmann::json annealing_options(const nlohmann::json& asked) {
   return read_learner_options<AnnealingOptions>(asked);
 }
 
-std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json& options) {
+std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json& options,
+                                        const LearnerData&) {
   return std::make_unique<AnnealingLearner>(setup, options.get<AnnealingOptions>().beta);
 }
 

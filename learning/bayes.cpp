@@ -13,7 +13,8 @@ nlohmann::json bayes_options(const nlohmann::json& asked) {
   return read_learner_options<ModelOptions>(asked);
 }
 
-std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::json& options) {
+std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::json& options,
+                                    const LearnerData&) {
   return std::make_unique<ModelLearner>(setup, model_learner_params(options.get<ModelOptions>()));
 }
 

@@ -48,9 +48,9 @@ WindowOrder parse_window_order(std::string_view text) {
 }
 
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
-                     const LearnerChoice& choice, const SearchBounds& search,
-                     const TrialProtocol& protocol, std::uint64_t seed,
-                     std::optional<std::uint64_t> learner_seed) {
+                     const LearnerChoice& choice, const LearnerData& data,
+                     const SearchBounds& search, const TrialProtocol& protocol, std::uint64_t seed,
+                     std::optional<std::uint64_t> learner_seed, Told told) {
   if (search.period_set != dataset.period_set) {
     throw BadInput("the search's period set is not the landscape's");
   }
@@ -132,13 +132,15 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   LearnerSetup setup;
   setup.robot = dataset.robot;
   setup.start = start;
-  setup.fixed = scenario.failed;
+  setup.told = told == Told::failed_legs ? ToldFault::legs(scenario.failed) : ToldFault::nothing();
   setup.start_deviation_deg = e0;
   setup.start_windows = {detecting};
   setup.criterion = criterion;
   setup.search = search;
   setup.seed = learner_seed.value_or(splitmix64(seed ^ kLearnerStream));
-  const std::unique_ptr<Learner> learner = make_learner(choice, setup);
+  LearnerData unseen = data;
+  unseen.withheld = {scenario.failed};
+  const std::unique_ptr<Learner> learner = make_learner(choice, setup, unseen);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {
     const std::optional<std::size_t> point = scenario.find(periods);

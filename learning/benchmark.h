@@ -37,6 +37,10 @@ struct TrialProtocol {
   WindowOrder window_order = WindowOrder::drawn;
 };
 
+// What a replayed learner is told about the fault (docs/learning.md "What a learner is told"):
+// the scenario's failed legs, as every run tells them, or nothing.
+enum class Told { failed_legs, nothing };
+
 // One learning run replayed on one scenario.
 struct ReplayRun {
   bool deviated = false;  // the start (all 4) deviated in the window it walked, so learning ran
@@ -58,14 +62,17 @@ struct ReplayRun {
 // threshold the run ends there (no deviation). The learner's seed and every window draw derive from
 // `seed`; the window drawn for a combination at its k-th measurement depends only on (seed,
 // combination, k), so every learner sees the same noise for the same combination (common random
-// numbers). `search` bounds the search (period set and threshold must be the dataset's). Throws
-// BadInput when the choice or the bounds do not fit the dataset.
+// numbers). The learner learns from `data` (learner_data of `choice`) with `scenario` withheld:
+// it never sees the scenario it replays. `search` bounds the search (period set and threshold must
+// be the dataset's). Throws BadInput when the choice or the bounds do not fit the dataset.
 // `learner_seed`, when given, seeds the learner instead (as `learn --seed` seeds a live run's
-// first episode), so a walked replay can retrace a live run trial by trial.
+// first episode), so a walked replay can retrace a live run trial by trial. `told`: what the
+// learner is told of the fault; told nothing it still never sees the scenario it replays.
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
-                     const LearnerChoice& choice, const SearchBounds& search,
-                     const TrialProtocol& protocol, std::uint64_t seed,
-                     std::optional<std::uint64_t> learner_seed = std::nullopt);
+                     const LearnerChoice& choice, const LearnerData& data,
+                     const SearchBounds& search, const TrialProtocol& protocol, std::uint64_t seed,
+                     std::optional<std::uint64_t> learner_seed = std::nullopt,
+                     Told told = Told::failed_legs);
 
 // The two exact baselines of a scenario: random search without replacement needs (N+1)/(K+1)
 // trials on average to draw the first of K holding combinations among N (the start excluded);

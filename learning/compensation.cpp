@@ -199,13 +199,13 @@ class Budget {
 
 // What the episode's learner is told: the robot, C0 and its E, the failed legs, the bounds.
 LearnerSetup learner_setup(const body::Body& body, const CompensationOptions& options,
-                           const Periods& start, std::vector<std::size_t> fixed,
+                           const Periods& start, std::vector<std::size_t> failed,
                            std::vector<body::WindowMeasure> start_windows,
                            double start_deviation_deg, std::uint64_t seed) {
   LearnerSetup setup;
   setup.robot = body.controller_model().morphology.kind;
   setup.start = start;
-  setup.fixed = std::move(fixed);
+  setup.told = ToldFault::legs(std::move(failed));
   setup.start_deviation_deg = start_deviation_deg;
   setup.start_windows = std::move(start_windows);
   setup.criterion = criterion(options);
@@ -214,7 +214,8 @@ LearnerSetup learner_setup(const body::Body& body, const CompensationOptions& op
   return setup;
 }
 
-LearningResult compensate_paper(body::Body& body, const CompensationOptions& options) {
+LearningResult compensate_paper(body::Body& body, const CompensationOptions& options,
+                                const LearnerData& data) {
   const neural::ControllerModel& model = body.controller_model();
   LearningResult result;
   result.mode = Mode::paper;
@@ -246,10 +247,11 @@ LearningResult compensate_paper(body::Body& body, const CompensationOptions& opt
 
   // Paper §2.3: a deviation desynchronises every client; then learning from C0 = current periods.
   neural::set_synchronised(body.controller(), false);
-  const std::unique_ptr<Learner> learner =
-      make_learner(options.learner, learner_setup(body, options, result.periods,
-                                                  body::failing_legs(body.faults().timeline()),
-                                                  {detecting}, e, options.seed));
+  const std::unique_ptr<Learner> learner = make_learner(
+      options.learner,
+      learner_setup(body, options, result.periods, body::failing_legs(body.faults().timeline()),
+                    {detecting}, e, options.seed),
+      data);
   Budget budget(options.step_budget);
   EpisodeHooks hooks;
   hooks.measure = [&](int trial, const Periods& periods) {
@@ -296,9 +298,10 @@ LearningResult compensate_paper(body::Body& body, const CompensationOptions& opt
 // Robust mode: see compensate() in the header.
 class RobustRun {
  public:
-  RobustRun(body::Body& body, const CompensationOptions& options)
+  RobustRun(body::Body& body, const CompensationOptions& options, const LearnerData& data)
       : body_(body),
         options_(options),
+        data_(data),
         model_(body.controller_model()),
         params_(options.search),
         walk_(body, options),
@@ -383,8 +386,10 @@ class RobustRun {
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
     const std::unique_ptr<Learner> learner =
-        make_learner(options_.learner, learner_setup(body_, options_, periods(), walk_.failed_now(),
-                                                     {detecting}, detection_deg, seed));
+        make_learner(options_.learner,
+                     learner_setup(body_, options_, periods(), walk_.failed_now(), {detecting},
+                                   detection_deg, seed),
+                     data_);
     walk_.take_fault_count();
     EpisodeHooks hooks;
     hooks.measure = [&](int trial, const Periods& candidate) {
@@ -443,6 +448,7 @@ class RobustRun {
 
   body::Body& body_;
   const CompensationOptions& options_;
+  const LearnerData& data_;
   const neural::ControllerModel& model_;
   const SearchBounds& params_;
   CourseWalk walk_;
@@ -452,14 +458,15 @@ class RobustRun {
 
 }  // namespace
 
-LearningResult compensate(body::Body& body, const CompensationOptions& options) {
+LearningResult compensate(body::Body& body, const CompensationOptions& options,
+                          const LearnerData& data) {
   validate(options);
   validate_faults(options, body.faults().timeline());
   if (body.step_count() != 0) {
     throw std::invalid_argument("compensate: the body must be at its start");
   }
-  if (options.mode == Mode::paper) return compensate_paper(body, options);
-  return RobustRun(body, options).run();
+  if (options.mode == Mode::paper) return compensate_paper(body, options, data);
+  return RobustRun(body, options, data).run();
 }
 
 }  // namespace multicpg::learning

@@ -185,7 +185,10 @@ struct LearningResult {
 // - a recovery that leaves no fault in force sets every period back to the master's and
 //   resynchronises the clients (paper §2.3), then settles;
 // - with Steering::reflex, learning/steering.h holds the course set where the run started.
-LearningResult compensate(body::Body& body, const CompensationOptions& options);
+// The learner learns from `data` (learning::learner_data of options.learner, resolved once
+// before the run; empty for a learner that learns from its trials alone).
+LearningResult compensate(body::Body& body, const CompensationOptions& options,
+                          const LearnerData& data);
 
 // The observer's events of a learning run (sim/events.h), as compensate emits them and as a
 // recorded result is replayed (its detections, decided trials and episode ends).

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "body/deviation.h"
 
@@ -32,6 +33,13 @@ struct Criterion {
   }
   double error(const body::WindowMeasure& w) const {
     return error(w.yaw_deg, w.path_deg, w.steering_effort);
+  }
+  // E of a trial: its worst window (paper mode walks one; robust mode up to hold_windows,
+  // stopping at the first over the threshold).
+  double error(const std::vector<body::WindowMeasure>& windows) const {
+    double e = 0.0;
+    for (const body::WindowMeasure& w : windows) e = std::max(e, error(w));
+    return e;
   }
   bool operator==(const Criterion&) const = default;
 };

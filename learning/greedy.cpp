@@ -71,7 +71,8 @@ nlohmann::json greedy_options(const nlohmann::json& asked) {
   return read_learner_options<NoLearnerOptions>(asked);
 }
 
-std::unique_ptr<Learner> make_greedy(const LearnerSetup& setup, const nlohmann::json&) {
+std::unique_ptr<Learner> make_greedy(const LearnerSetup& setup, const nlohmann::json&,
+                                     const LearnerData&) {
   return std::make_unique<Greedy>(setup);
 }
 

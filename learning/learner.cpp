@@ -6,9 +6,10 @@
 namespace multicpg::learning {
 
 std::vector<std::size_t> LearnerSetup::working() const {
+  const std::vector<std::size_t>& failed = told.failed();
   std::vector<std::size_t> out;
   for (std::size_t leg = 0; leg < start.size(); ++leg) {
-    if (std::find(fixed.begin(), fixed.end(), leg) == fixed.end()) out.push_back(leg);
+    if (std::find(failed.begin(), failed.end(), leg) == failed.end()) out.push_back(leg);
   }
   return out;
 }

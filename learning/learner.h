@@ -8,9 +8,11 @@
 //   1. Write learning/<name>.cpp: a class derived from Learner, its options as a struct read with
 //      read_learner_options (learning/learners.h), and two functions:
 //        nlohmann::json <name>_options(const nlohmann::json& asked);  // defaults filled, checked
-//        std::unique_ptr<Learner> make_<name>(const LearnerSetup&, const nlohmann::json& options);
+//        std::unique_ptr<Learner> make_<name>(const LearnerSetup&, const nlohmann::json& options,
+//                                             const LearnerData& data);
 //      Draw every random number from the setup's seed; record every option that decides the
-//      result in its options (they are saved with every run).
+//      result in its options (they are saved with every run). A learner that learns from data
+//      besides its trials (as the prior) also gives the table how to resolve and check them.
 //   2. Declare both and add one row to the table in learning/learners.cpp.
 //   3. Add the file to learning/CMakeLists.txt.
 //   4. Test it (tests/test_learners.cpp runs every registered learner through the common checks).
@@ -24,6 +26,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "body/deviation.h"
@@ -33,12 +36,35 @@
 
 namespace multicpg::learning {
 
+// What a learner is told about the fault (docs/learning.md "What a learner is told"): the legs
+// that failed, whose periods it then never picks (paper §3), or nothing, when it searches every
+// leg's period, the failed legs' too. Changing a lost leg's period does nothing to the body, so
+// a learner told nothing spends trials on combinations that differ only there: the price of not
+// knowing.
+class ToldFault {
+ public:
+  // Told nothing.
+  ToldFault() = default;
+  static ToldFault nothing() { return {}; }
+  // Told that `legs` (morphology indices) failed.
+  static ToldFault legs(std::vector<std::size_t> legs) { return ToldFault(std::move(legs)); }
+
+  bool told() const { return told_; }
+  // The legs it is told failed, which it never picks; none when told nothing.
+  const std::vector<std::size_t>& failed() const { return failed_; }
+  bool operator==(const ToldFault&) const = default;
+
+ private:
+  explicit ToldFault(std::vector<std::size_t> legs) : told_(true), failed_(std::move(legs)) {}
+  bool told_ = false;
+  std::vector<std::size_t> failed_;
+};
+
 // What every learner is told when an episode starts.
 struct LearnerSetup {
   robot::RobotKind robot = robot::RobotKind::hexapod;
-  Periods start;  // C0: the combination walking when the deviation was seen (every leg)
-  // Legs whose period never changes: the failed legs (paper §3: never picked).
-  std::vector<std::size_t> fixed;
+  Periods start;   // C0: the combination walking when the deviation was seen (every leg)
+  ToldFault told;  // what it is told about the fault
   double start_deviation_deg = 0.0;                // E of C0 (the detecting window)
   std::vector<body::WindowMeasure> start_windows;  // the detecting window, signed
   // What E is made of (learning/criterion.h): the paper's |yaw change| alone, robust mode's worst
@@ -50,7 +76,8 @@ struct LearnerSetup {
   SearchBounds search;
   std::uint64_t seed = 0;  // every random draw of the episode comes from it
 
-  // The legs whose period may change, in morphology order.
+  // The legs whose period may change, in morphology order: every leg but the ones it is told
+  // failed.
   std::vector<std::size_t> working() const;
 };
 
@@ -85,8 +112,8 @@ struct Answer {
 class Learner {
  public:
   virtual ~Learner() = default;
-  // The next combination to try (every leg's period; fixed legs unchanged), or nothing when no
-  // untried combination is left (the learner gives up: StopReason::space_exhausted).
+  // The next combination to try (every leg's period; the legs told failed unchanged), or nothing
+  // when no untried combination is left (the learner gives up: StopReason::space_exhausted).
   virtual std::optional<Periods> propose() = 0;
   // The measurement of the combination propose() returned: the trial's record. Afterwards
   // stop() says whether the episode is over.

@@ -10,17 +10,24 @@ namespace multicpg::learning {
 
 // Each learner's file defines these two functions (learning/learner.h "To add a learner").
 nlohmann::json annealing_options(const nlohmann::json& asked);
-std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json& options);
+std::unique_ptr<Learner> make_annealing(const LearnerSetup& setup, const nlohmann::json& options,
+                                        const LearnerData& data);
 nlohmann::json random_options(const nlohmann::json& asked);
-std::unique_ptr<Learner> make_random(const LearnerSetup& setup, const nlohmann::json& options);
+std::unique_ptr<Learner> make_random(const LearnerSetup& setup, const nlohmann::json& options,
+                                     const LearnerData& data);
 nlohmann::json greedy_options(const nlohmann::json& asked);
-std::unique_ptr<Learner> make_greedy(const LearnerSetup& setup, const nlohmann::json& options);
+std::unique_ptr<Learner> make_greedy(const LearnerSetup& setup, const nlohmann::json& options,
+                                     const LearnerData& data);
 nlohmann::json bayes_options(const nlohmann::json& asked);
-std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::json& options);
+std::unique_ptr<Learner> make_bayes(const LearnerSetup& setup, const nlohmann::json& options,
+                                    const LearnerData& data);
 nlohmann::json prior_options(const nlohmann::json& asked);
-std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options);
-void check_prior(const nlohmann::json& options, robot::RobotKind robot,
-                 const std::vector<std::size_t>& failed, const Criterion& criterion,
+std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options,
+                                    const LearnerData& data);
+LearnerData prior_data(const nlohmann::json& options, robot::RobotKind robot,
+                       const Criterion& criterion);
+void check_prior(const nlohmann::json& options, const LearnerData& data, robot::RobotKind robot,
+                 const ToldFault& told, const Criterion& criterion,
                  const std::vector<int>& period_set);
 
 namespace {
@@ -28,10 +35,14 @@ namespace {
 struct Entry {
   LearnerInfo info;
   nlohmann::json (*options)(const nlohmann::json& asked);
-  std::unique_ptr<Learner> (*make)(const LearnerSetup& setup, const nlohmann::json& options);
+  std::unique_ptr<Learner> (*make)(const LearnerSetup& setup, const nlohmann::json& options,
+                                   const LearnerData& data);
+  // The data it learns from besides its trials (null: none).
+  LearnerData (*data)(const nlohmann::json& options, robot::RobotKind robot,
+                      const Criterion& criterion) = nullptr;
   // What can be checked of a run before it starts (null: nothing beyond the options).
-  void (*check)(const nlohmann::json& options, robot::RobotKind robot,
-                const std::vector<std::size_t>& failed, const Criterion& criterion,
+  void (*check)(const nlohmann::json& options, const LearnerData& data, robot::RobotKind robot,
+                const ToldFault& told, const Criterion& criterion,
                 const std::vector<int>& period_set) = nullptr;
 };
 
@@ -60,6 +71,7 @@ const std::vector<Entry>& table() {
         {"acquisition"}},
        prior_options,
        make_prior,
+       prior_data,
        check_prior},
   };
   return entries;
@@ -121,17 +133,35 @@ LearnerChoice resolve_learner(const LearnerChoice& asked) {
   return out;
 }
 
-void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
-                   const std::vector<std::size_t>& failed, const Criterion& criterion,
+LearnerData learner_data(const LearnerChoice& choice, robot::RobotKind robot,
+                         const Criterion& criterion) {
+  const Entry& e = entry(choice.name);
+  if (e.data == nullptr) return {};
+  LearnerData out;
+  within("options", [&] { out = e.data(choice.options, robot, criterion); });
+  return out;
+}
+
+void check_learner(const LearnerChoice& choice, const LearnerData& data, robot::RobotKind robot,
+                   const ToldFault& told, const Criterion& criterion,
                    const std::vector<int>& period_set) {
   const Entry& e = entry(choice.name);
   if (e.check != nullptr) {
-    within("options", [&] { e.check(choice.options, robot, failed, criterion, period_set); });
+    within("options", [&] { e.check(choice.options, data, robot, told, criterion, period_set); });
   }
 }
 
-std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const LearnerSetup& setup) {
-  return entry(choice.name).make(setup, choice.options);
+LearnerData check_learner(const LearnerChoice& choice, robot::RobotKind robot,
+                          const ToldFault& told, const Criterion& criterion,
+                          const std::vector<int>& period_set) {
+  LearnerData data = learner_data(choice, robot, criterion);
+  check_learner(choice, data, robot, told, criterion, period_set);
+  return data;
+}
+
+std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const LearnerSetup& setup,
+                                      const LearnerData& data) {
+  return entry(choice.name).make(setup, choice.options, data);
 }
 
 }  // namespace multicpg::learning

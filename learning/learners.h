@@ -2,6 +2,7 @@
 // (learning/learners.cpp). learning/learner.h says what a learner is and how to add one.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "learning/landscapes.h"
 #include "learning/learner.h"
 
 namespace multicpg::learning {
@@ -54,18 +56,48 @@ std::optional<double> annealing_beta(const LearnerChoice& choice);
 // learner (naming the known ones), "options.<key>" for an unknown option or a bad value.
 LearnerChoice resolve_learner(const LearnerChoice& asked);
 
-// Checks what a learner needs of a run before it starts, for a run of `robot` whose legs
-// `failed` fail and whose trials `criterion` judges (its data, walked the way the run judges,
-// and that a prior never sees the scenario under test) and, when `period_set` is not empty, that
-// its data have the run's period set: all before the robot walks. Throws OptionError
-// ("options.<key>") or BadInput naming the file.
-void check_learner(const LearnerChoice& choice, robot::RobotKind robot,
-                   const std::vector<std::size_t>& failed, const Criterion& criterion,
-                   const std::vector<int>& period_set = {});
+// What the prior computed from its data once (learning/prior.cpp).
+class PriorMeans;
 
-// A resolved choice's learner for one episode. Throws BadInput for a setup the learner cannot
-// search (as start_annealing: every leg fixed, a start outside the period set, ...).
-std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const LearnerSetup& setup);
+// What a learner learns from besides its trials (docs/learning.md "A learner's data"), resolved
+// once before a run and passed to every learner the run makes: the prior's landscape dataset and
+// the file it was read from; nothing for a learner that learns from its trials alone.
+struct LearnerData {
+  std::shared_ptr<const LandscapeDataset> landscapes;  // null: no data
+  std::filesystem::path source;                        // the file the landscapes were read from
+  // Scenarios (failed legs, sorted) the learner may never learn from, nor from their mirror
+  // images, whatever it is told: the scenario a replay benchmark replays. What it may see is
+  // this rule, apart from what it is told (ToldFault).
+  std::vector<std::vector<std::size_t>> withheld;
+  // What learners computed from the landscapes once (the prior's means, learning/prior.cpp),
+  // shared by every copy of these data: the benchmark makes thousands of learners from one.
+  std::shared_ptr<PriorMeans> computed;
+};
+
+// The data `choice` learns from in a run of `robot` whose trials `criterion` judges: the dataset
+// its options name, or the repository's walked that way (repository_dataset), read here; empty
+// for a learner that needs none. Throws BadInput naming the file it cannot read.
+LearnerData learner_data(const LearnerChoice& choice, robot::RobotKind robot,
+                         const Criterion& criterion);
+
+// Checks what a learner needs of a run before it starts, for a run of `robot` whose learner is
+// `told` about the fault and whose trials `criterion` judges: its data, walked the way the run
+// judges and of the run's robot, that a prior never sees the scenario it is told nor a withheld
+// one, and, when `period_set` is not empty, that its data have the run's period set: all before
+// the robot walks. Throws OptionError ("options.<key>") or BadInput naming the file.
+void check_learner(const LearnerChoice& choice, const LearnerData& data, robot::RobotKind robot,
+                   const ToldFault& told, const Criterion& criterion,
+                   const std::vector<int>& period_set = {});
+// The same with the data resolved here (learner_data), which it returns for the run.
+LearnerData check_learner(const LearnerChoice& choice, robot::RobotKind robot,
+                          const ToldFault& told, const Criterion& criterion,
+                          const std::vector<int>& period_set = {});
+
+// A resolved choice's learner for one episode, learning from `data` (learner_data's, checked).
+// Throws BadInput for a setup the learner cannot search (as start_annealing: every leg fixed, a
+// start outside the period set, ...).
+std::unique_ptr<Learner> make_learner(const LearnerChoice& choice, const LearnerSetup& setup,
+                                      const LearnerData& data);
 
 // A learner without options of its own.
 struct NoLearnerOptions {

@@ -12,7 +12,9 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "common/errors.h"
 #include "learning/landscapes.h"
@@ -50,16 +52,6 @@ void validate(const PriorOptions& o) {
   require_in("ridge", o.ridge, kRidgeLimits);
 }
 
-// Datasets read once per process: the benchmark makes thousands of learners from one.
-std::shared_ptr<const LandscapeDataset> dataset_at(const fs::path& path) {
-  static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const LandscapeDataset>> cache;
-  const std::lock_guard<std::mutex> lock(mutex);
-  std::shared_ptr<const LandscapeDataset>& d = cache[path.string()];
-  if (!d) d = std::make_shared<const LandscapeDataset>(read_landscape_dataset(path));
-  return d;
-}
-
 // The regression's features of one combination of one scenario: the constant, each lost leg,
 // each working leg's period, and each (lost leg, working leg's period).
 class Features {
@@ -94,27 +86,39 @@ std::vector<std::size_t> digits(const Periods& periods, const std::vector<int>& 
   return out;
 }
 
-// What the other scenarios predict for every combination of `space` (yaw, path).
-// The scenarios of `d` the prior of a run with legs `lost` learns from. Throws BadInput when the
-// options name the scenario under test or its mirror, or a scenario the dataset lacks.
-std::vector<const ScenarioLandscape*> prior_scenarios(const LandscapeDataset& d,
-                                                      const PriorOptions& o,
-                                                      std::vector<std::size_t> lost) {
+// The scenarios of `d` a prior learns from: every one but the scenario it is told it is in, the
+// scenarios its data withhold, and their mirror images; or the ones its options name. Told
+// nothing, it cannot leave its own scenario out (docs/learning.md "What a learner is told").
+// Throws OptionError when the options name a scenario it may not see or one the dataset lacks;
+// BadInput when no scenario is left.
+std::vector<const ScenarioLandscape*> prior_scenarios(
+    const LandscapeDataset& d, const PriorOptions& o, const ToldFault& told,
+    const std::vector<std::vector<std::size_t>>& withheld) {
   const robot::Morphology& morph = robot::morphology(d.robot);
+  std::vector<std::size_t> lost = told.failed();
   std::sort(lost.begin(), lost.end());
-  const std::vector<std::size_t> mirrored = robot::mirror(morph, lost);
+  std::vector<std::vector<std::size_t>> unseen;
+  if (told.told()) unseen = {lost, robot::mirror(morph, lost)};
+  for (const std::vector<std::size_t>& legs : withheld) {
+    unseen.push_back(legs);
+    unseen.push_back(robot::mirror(morph, legs));
+  }
+  const auto is_unseen = [&](const std::vector<std::size_t>& legs) {
+    return std::find(unseen.begin(), unseen.end(), legs) != unseen.end();
+  };
   std::vector<const ScenarioLandscape*> out;
   if (o.scenarios.empty()) {
     for (const ScenarioLandscape& s : d.scenarios) {
-      if (s.failed != lost && s.failed != mirrored) out.push_back(&s);
+      if (!is_unseen(s.failed)) out.push_back(&s);
     }
   }
   for (const std::string& name : o.scenarios) {
     const std::vector<std::size_t> legs = robot::parse_leg_set(morph, name);
-    if (legs == lost || legs == mirrored) {
-      throw OptionError("scenarios", "names " + name +
-                                         ", so the prior would see the scenario under test (" +
-                                         robot::leg_set_name(morph, lost) + ") or its mirror");
+    if (is_unseen(legs)) {
+      throw OptionError("scenarios",
+                        "names " + name + ", so the prior would see the scenario under test (" +
+                            robot::leg_set_name(morph, told.told() ? lost : withheld.front()) +
+                            ") or its mirror");
     }
     const ScenarioLandscape* s = d.find(legs);
     if (s == nullptr) throw OptionError("scenarios", "names " + name + ", which the dataset lacks");
@@ -126,10 +130,14 @@ std::vector<const ScenarioLandscape*> prior_scenarios(const LandscapeDataset& d,
   return out;
 }
 
-std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const LearnerSetup& setup,
+// What the scenarios it learns from predict for every combination of `space` (yaw, path,
+// effort): for the legs it is told failed, or, told nothing, for the features every scenario
+// shares (each leg's period), no leg lost.
+std::vector<std::vector<double>> prior_mean(const LearnerData& data, const LearnerSetup& setup,
                                             const SearchSpace& space, const PriorOptions& o) {
+  const LandscapeDataset& d = *data.landscapes;
   const robot::Morphology& morph = robot::morphology(d.robot);
-  std::vector<std::size_t> lost = setup.fixed;
+  std::vector<std::size_t> lost = setup.told.failed();
   std::sort(lost.begin(), lost.end());
   const double ridge = o.ridge;
   const Features f(morph.size(), d.period_set.size());
@@ -146,7 +154,7 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
       for (Eigen::Index k = 0; k < outputs; ++k) xty(ii, k) += y[static_cast<std::size_t>(k)];
     }
   };
-  for (const ScenarioLandscape* scenario : prior_scenarios(d, o, lost)) {
+  for (const ScenarioLandscape* scenario : prior_scenarios(d, o, setup.told, data.withheld)) {
     const ScenarioLandscape& s = *scenario;
     const std::vector<std::size_t> image = robot::mirror(morph, s.failed);
     for (const LandscapePoint& p : s.points) {
@@ -159,7 +167,7 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
       for (double& m : mean) m /= static_cast<double>(p.windows.size());
       add(s.failed, p.periods, mean);
       // Its mirror image turns the other way, with the same effort. It is never the scenario
-      // under test: that one's mirror is not among the scenarios.
+      // the prior is told: that one's mirror is not among the scenarios.
       add(image, robot::mirror_periods(morph, p.periods),
           {-mean[kYaw], -mean[kPath], mean[kEffort]});
     }
@@ -175,14 +183,6 @@ std::vector<std::vector<double>> prior_mean(const LandscapeDataset& d, const Lea
     }
   }
   return out;
-}
-
-// The dataset a prior of `robot` learns from: the one its options name, or the repository's
-// walked the way the run judges a trial (with the steering reflex or without). Throws BadInput
-// (key "dataset") when the named one was walked the other way or is of another robot.
-fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
-                            const Criterion& criterion) {
-  return o.dataset.empty() ? repository_dataset(robot, criterion.steers()) : fs::path(o.dataset);
 }
 
 void check_dataset(const LandscapeDataset& d, const fs::path& path, robot::RobotKind robot,
@@ -218,31 +218,49 @@ void check_period_set(const LandscapeDataset& d, const fs::path& path,
                  " (learning.annealing.period_set; or a dataset walked with the run's)");
 }
 
-// Prior means are computed once per dataset, scenario, scenario list and ridge (the benchmark's
-// seeds share them); the key holds the ridge exactly.
-std::vector<std::vector<double>> cached_prior_mean(const fs::path& path, const LearnerSetup& setup,
-                                                   const SearchSpace& space,
-                                                   const PriorOptions& o) {
-  const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
-  check_dataset(*d, path, setup.robot, setup.criterion);
-  check_period_set(*d, path, setup.search.period_set);
-  static std::mutex mutex;
-  static std::map<std::string, std::vector<std::vector<double>>> cache;
-  std::vector<std::size_t> lost = setup.fixed;
+// What decides a prior mean besides its data, compared exactly.
+using PriorKey = std::tuple<bool, std::vector<std::size_t>, std::vector<std::vector<std::size_t>>,
+                            std::vector<std::string>, double, bool, double, double>;
+
+PriorKey prior_key(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o) {
+  std::vector<std::size_t> lost = setup.told.failed();
   std::sort(lost.begin(), lost.end());
-  const std::string key =
-      path.string() + "|" + robot::leg_set_name(robot::morphology(setup.robot), lost) + "|" +
-      nlohmann::json(o.scenarios).dump() + "|" + nlohmann::json(o.ridge).dump() + "|" +
-      nlohmann::json(setup.criterion.max_effort).dump() + "|" +
-      nlohmann::json(setup.criterion.threshold_deg).dump();
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    const auto it = cache.find(key);
-    if (it != cache.end()) return it->second;
+  const Criterion& c = setup.criterion;
+  return {setup.told.told(), lost,   data.withheld,   o.scenarios,
+          o.ridge,           c.path, c.threshold_deg, c.max_effort};
+}
+
+}  // namespace
+
+// Prior means computed once per scenario told, withheld scenarios, options and criterion (the
+// benchmark's seeds share them), for the data they belong to.
+class PriorMeans {
+ public:
+  std::vector<std::vector<double>> get(const LearnerData& data, const LearnerSetup& setup,
+                                       const SearchSpace& space, const PriorOptions& o) {
+    const PriorKey key = prior_key(data, setup, o);
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      const auto it = means_.find(key);
+      if (it != means_.end()) return it->second;
+    }
+    std::vector<std::vector<double>> mean = prior_mean(data, setup, space, o);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return means_.emplace(key, std::move(mean)).first->second;
   }
-  std::vector<std::vector<double>> mean = prior_mean(*d, setup, space, o);
-  const std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(key, std::move(mean)).first->second;
+
+ private:
+  std::mutex mutex_;
+  std::map<PriorKey, std::vector<std::vector<double>>> means_;
+};
+
+namespace {
+
+// The data a prior of `robot` learns from: the dataset its options name, or the repository's
+// walked the way the run judges a trial (with the steering reflex or without).
+fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
+                            const Criterion& criterion) {
+  return o.dataset.empty() ? repository_dataset(robot, criterion.steers()) : fs::path(o.dataset);
 }
 
 }  // namespace
@@ -251,23 +269,37 @@ nlohmann::json prior_options(const nlohmann::json& asked) {
   return read_learner_options<PriorOptions>(asked);
 }
 
-void check_prior(const nlohmann::json& options, robot::RobotKind robot,
-                 const std::vector<std::size_t>& failed, const Criterion& criterion,
-                 const std::vector<int>& period_set) {
-  const PriorOptions o = options.get<PriorOptions>();
-  const fs::path path = prior_dataset_path(o, robot, criterion);
-  const std::shared_ptr<const LandscapeDataset> d = dataset_at(path);
-  check_dataset(*d, path, robot, criterion);
-  if (!period_set.empty()) check_period_set(*d, path, period_set);
-  prior_scenarios(*d, o, failed);
+LearnerData prior_data(const nlohmann::json& options, robot::RobotKind robot,
+                       const Criterion& criterion) {
+  const fs::path path = prior_dataset_path(options.get<PriorOptions>(), robot, criterion);
+  LearnerData data;
+  data.landscapes = std::make_shared<const LandscapeDataset>(read_landscape_dataset(path));
+  data.source = path;
+  data.computed = std::make_shared<PriorMeans>();
+  return data;
 }
 
-std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options) {
+void check_prior(const nlohmann::json& options, const LearnerData& data, robot::RobotKind robot,
+                 const ToldFault& told, const Criterion& criterion,
+                 const std::vector<int>& period_set) {
   const PriorOptions o = options.get<PriorOptions>();
-  const fs::path path = prior_dataset_path(o, setup.robot, setup.criterion);
+  if (!data.landscapes) throw std::invalid_argument("check_prior: no data (learner_data)");
+  check_dataset(*data.landscapes, data.source, robot, criterion);
+  if (!period_set.empty()) check_period_set(*data.landscapes, data.source, period_set);
+  prior_scenarios(*data.landscapes, o, told, data.withheld);
+}
+
+std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::json& options,
+                                    const LearnerData& data) {
+  if (!data.landscapes || !data.computed) {
+    throw std::invalid_argument("make_prior: no data (learner_data)");
+  }
+  const PriorOptions o = options.get<PriorOptions>();
+  check_dataset(*data.landscapes, data.source, setup.robot, setup.criterion);
+  check_period_set(*data.landscapes, data.source, setup.search.period_set);
   const SearchSpace space(setup);
   return std::make_unique<ModelLearner>(setup, model_learner_params(o),
-                                        cached_prior_mean(path, setup, space, o));
+                                        data.computed->get(data, setup, space, o));
 }
 
 }  // namespace multicpg::learning

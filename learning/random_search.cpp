@@ -60,7 +60,8 @@ nlohmann::json random_options(const nlohmann::json& asked) {
   return read_learner_options<NoLearnerOptions>(asked);
 }
 
-std::unique_ptr<Learner> make_random(const LearnerSetup& setup, const nlohmann::json&) {
+std::unique_ptr<Learner> make_random(const LearnerSetup& setup, const nlohmann::json&,
+                                     const LearnerData&) {
   return std::make_unique<RandomSearch>(setup);
 }
 

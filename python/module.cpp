@@ -21,6 +21,7 @@
 #include "learning/landscapes.h"
 #include "learning/steering.h"
 #include "python/args.h"
+#include "python/ask_tell.h"
 #include "python/faults.h"
 #include "python/learning.h"
 #include "python/replay.h"
@@ -107,6 +108,11 @@ PYBIND11_MODULE(_multicpg, m) {
   m.attr("GAIT_PERIODS") = py::tuple(py::cast(std::vector<int>(
       multicpg::robot::kGaitPeriods.begin(), multicpg::robot::kGaitPeriods.end())));
   m.attr("MAX_STEPS") = body::kMaxSteps;
+  {
+    std::vector<std::string> names;
+    for (const learning::LearnerInfo& l : learning::learner_list()) names.emplace_back(l.name);
+    m.attr("LEARNERS") = py::tuple(py::cast(names));  // every registered learner, by name
+  }
   m.attr("FRAME_SIDE_LIMITS") =
       py::make_tuple(report::kFrameSideLimits.lo, report::kFrameSideLimits.hi);
 
@@ -115,6 +121,7 @@ PYBIND11_MODULE(_multicpg, m) {
   mp::register_state(m);
   mp::register_simulations(m);
   mp::register_learning(m);
+  mp::register_ask_tell(m);
 
   m.def(
       "_test_mujoco_error",

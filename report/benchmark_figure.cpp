@@ -12,9 +12,7 @@ namespace multicpg::report {
 std::string no_benchmark_figure(const experiments::LearnerBenchmark& b) {
   if (experiments::holding_scenarios(b) > 0) return {};
   return "none of the " +
-         counted(
-             static_cast<long>(b.cells.size() / std::max<std::size_t>(1, b.spec.learners.size())),
-             "scenario") +
+         counted(static_cast<long>(experiments::benchmark_scenarios(b)), "scenario") +
          " has a combination that holds, so no run can be held (benchmark.md lists each one)";
 }
 
@@ -35,8 +33,8 @@ std::optional<FigureFiles> draw_learner_benchmark(const experiments::LearnerBenc
   };
   std::vector<LearnerScore> scores;
   for (const nlohmann::json& l : summary.at("learners")) {
-    scores.push_back({l.at("learner").at("name").get<std::string>(), l.at("share_held"),
-                      l.at("share_low"), l.at("share_high"), optional_number(l.at("q1_trials")),
+    scores.push_back({experiments::benchmark_label(l), l.at("share_held"), l.at("share_low"),
+                      l.at("share_high"), optional_number(l.at("q1_trials")),
                       optional_number(l.at("median_trials")), optional_number(l.at("q3_trials"))});
   }
   return plot_learner_benchmark(scores,

@@ -41,7 +41,7 @@ Periods periods_of(body::Body& w) {
 TEST(Compensation, ConvergesOnFakeHexapodWithR1Disabled) {
   const CompensationOptions o = options_for(1);
   FakeBody walker(RobotKind::hexapod, failing({0}));
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
 
   ASSERT_TRUE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::converged);
@@ -73,7 +73,7 @@ TEST(Compensation, SameSeedSameRunOtherSeedOtherTrace) {
   auto run = [&](std::uint64_t seed) {
     const CompensationOptions o = options_for(seed);
     FakeBody walker(RobotKind::hexapod, failing({0, 2}));
-    return to_json(compensate(walker, o), morph, {0, 2});
+    return to_json(compensate(walker, o, {}), morph, {0, 2});
   };
   const nlohmann::json a = run(7);
   EXPECT_EQ(a, run(7));
@@ -84,7 +84,7 @@ TEST(Compensation, HealthyRobotNeedsNoCompensation) {
   CompensationOptions o = options_for(1);
   o.settle_steps = 10;
   FakeBody walker(RobotKind::hexapod);
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::no_deviation);
   EXPECT_FALSE(r.reason.has_value());
@@ -99,7 +99,7 @@ TEST(Compensation, LateFailureIsDetectedAfterIt) {
   o.settle_steps = 0;
   // Healthy windows [0,400) and [400,800) come first.
   FakeBody walker(RobotKind::hexapod, body::fail_at({0}, 1000));
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   ASSERT_TRUE(r.detection_step.has_value());
   // [800,1200) holds 200 disabled steps: 19 deg > 8, detected at its end.
   EXPECT_EQ(*r.detection_step, 1200);
@@ -113,7 +113,7 @@ TEST(Compensation, TrialCapEndsNotConvergedWithTheAcceptedPeriods) {
   o.search.max_trials = 12;
   o.settle_steps = 0;
   FakeBody walker(RobotKind::hexapod, failing({0}), 0.2);
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   EXPECT_FALSE(r.converged());
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::trial_cap);
@@ -134,7 +134,7 @@ TEST(Compensation, StepBudgetEndsBudgetReachedInBothModes) {
     // 5 trials of one window (paper) or of the first window over the threshold (robust).
     o.step_budget = 5 * kDefaultWindowSteps;
     FakeBody walker(RobotKind::hexapod, failing({0}), 0.2);
-    const LearningResult r = compensate(walker, o);
+    const LearningResult r = compensate(walker, o, {});
     EXPECT_EQ(r.outcome, Outcome::budget_reached) << to_string(mode);
     EXPECT_FALSE(r.converged());
     EXPECT_FALSE(r.reason.has_value());
@@ -149,7 +149,7 @@ TEST(Compensation, ExhaustedSearchSpaceEndsNotConverged) {
   CompensationOptions o = options_for(4);
   o.settle_steps = 0;
   FakeBody walker(RobotKind::quadruped, failing({0, 1, 2}), 0.2);  // only L2: 5 combinations
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   EXPECT_EQ(r.outcome, learning::Outcome::not_converged);
   EXPECT_EQ(r.reason, StopReason::space_exhausted);
   EXPECT_EQ(r.trials, 4);
@@ -159,7 +159,7 @@ TEST(Compensation, JsonHasTheReportedFields) {
   const robot::Morphology& morph = robot::morphology(RobotKind::hexapod);
   const CompensationOptions o = options_for(1);
   FakeBody walker(RobotKind::hexapod, failing({0}));
-  const nlohmann::json j = to_json(compensate(walker, o), morph, {0});
+  const nlohmann::json j = to_json(compensate(walker, o, {}), morph, {0});
   EXPECT_TRUE(j.at("converged").is_boolean());
   EXPECT_TRUE(j.at("trials").is_number_integer());
   EXPECT_TRUE(j.at("final_deviation_deg").is_number());
@@ -223,7 +223,7 @@ TEST(Compensation, RejectsBadInput) {
   FakeBody walker(RobotKind::hexapod);
   CompensationOptions o = options_for(1);
   o.window_steps = 0;
-  EXPECT_THROW(compensate(walker, o), BadInput);
+  EXPECT_THROW(compensate(walker, o, {}), BadInput);
   EXPECT_EQ(walker.step_count(), 0);
 }
 
@@ -287,7 +287,7 @@ int count(const std::vector<body::Event>& events, body::EventKind kind) {
 TEST(RobustCompensation, HeldCombinationHoldsEveryWindowItWasJudgedOn) {
   const CompensationOptions o = robust_options(1);
   FakeBody walker(RobotKind::hexapod, {{0, {0}, false}});
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   ASSERT_TRUE(r.converged());
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_TRUE(r.episodes[0].held);
@@ -303,13 +303,13 @@ TEST(RobustCompensation, RefusesAWalkerThatHasWalked) {
   const CompensationOptions o = robust_options(1);
   FakeBody walked(RobotKind::hexapod, {{0, {0}, false}});
   walked.step();
-  EXPECT_THROW(compensate(walked, o), std::invalid_argument);
+  EXPECT_THROW(compensate(walked, o, {}), std::invalid_argument);
 }
 
 TEST(RobustCompensation, SecondFaultLearnsTwice) {
   const CompensationOptions o = robust_options(2);
   FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {4}, false}});
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   ASSERT_EQ(r.episodes.size(), 2u);
   EXPECT_LT(r.episodes[0].detection_step, 30000);
   EXPECT_GT(r.episodes[1].detection_step, 30000);
@@ -328,7 +328,7 @@ TEST(RobustCompensation, EpisodeCapEndsTheRunAndIsItsReason) {
   CompensationOptions o = robust_options(2);
   o.max_episodes = 1;
   FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {4}, false}});
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_TRUE(r.episodes[0].held);
   EXPECT_EQ(r.outcome, Outcome::not_converged);
@@ -339,7 +339,7 @@ TEST(RobustCompensation, EpisodeCapEndsTheRunAndIsItsReason) {
 TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
   const CompensationOptions o = robust_options(3);
   FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {0}, true}});
-  const LearningResult r = compensate(walker, o);
+  const LearningResult r = compensate(walker, o, {});
   ASSERT_EQ(r.episodes.size(), 1u);
   EXPECT_EQ(count(walker.events, body::EventKind::recovery), 1);
   const neural::ControllerState& c = walker.controller();
@@ -356,7 +356,7 @@ TEST(RobustCompensation, PaperModeRefusesTimelines) {
   CompensationOptions o = robust_options(1);
   o.mode = Mode::paper;
   FakeBody twice(RobotKind::hexapod, {{0, {0}, false}, {900, {0}, true}});
-  EXPECT_THROW(compensate(twice, o), OptionError);
+  EXPECT_THROW(compensate(twice, o, {}), OptionError);
   EXPECT_EQ(twice.step_count(), 0);
   const robot::Morphology& hex = robot::morphology(RobotKind::hexapod);
   // Timelines that cannot happen never make a walker.
@@ -365,7 +365,7 @@ TEST(RobustCompensation, PaperModeRefusesTimelines) {
   o = robust_options(1);
   o.hold_windows = 0;
   FakeBody walker(RobotKind::hexapod, {{0, {0}, false}});
-  EXPECT_THROW(compensate(walker, o), OptionError);
+  EXPECT_THROW(compensate(walker, o, {}), OptionError);
 }
 
 TEST(Steering, CutsTheSideTowardWhichTheRobotMustTurn) {

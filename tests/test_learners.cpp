@@ -17,6 +17,7 @@
 #include "common/errors.h"
 #include "experiments/learner_benchmark.h"
 #include "learning/additive_model.h"
+#include "learning/ask_tell.h"
 #include "learning/benchmark.h"
 #include "learning/landscapes.h"
 #include "learning/learners.h"
@@ -120,8 +121,10 @@ ReplayRun replay(const LandscapeDataset& d, const std::vector<std::size_t>& fail
                  const LearnerChoice& choice, std::uint64_t seed, int max_trials = 60) {
   const ScenarioLandscape* s = d.find(failed);
   EXPECT_NE(s, nullptr);
-  return learning::replay_run(d, *s, learning::resolve_learner(choice), search(max_trials),
-                              TrialProtocol{}, seed);
+  const LearnerChoice resolved = learning::resolve_learner(choice);
+  return learning::replay_run(d, *s, resolved,
+                              learning::learner_data(resolved, d.robot, d.criterion()),
+                              search(max_trials), TrialProtocol{}, seed);
 }
 
 class Dataset : public ::testing::Test {
@@ -359,35 +362,176 @@ TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
   for (const char* seen : {"L2", "R2"}) {
     LearnerChoice c = choice("prior");
     c.options["scenarios"] = {"R1", seen};
-    EXPECT_THROW(learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped,
-                                         {kL2}, learning::kPeriodsAloneCriterion),
-                 BadInput)
+    EXPECT_THROW(
+        learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped,
+                                learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion),
+        BadInput)
         << seen;
   }
   LearnerChoice fine = choice("prior");
   fine.options["scenarios"] = {"R1", "L1"};
-  EXPECT_NO_THROW(learning::check_learner(learning::resolve_learner(fine),
-                                          robot::RobotKind::quadruped, {kL2},
-                                          learning::kPeriodsAloneCriterion));
+  EXPECT_NO_THROW(
+      learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped,
+                              learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion));
   // The run's period set is the dataset's, checked with the rest before anything walks.
   try {
-    learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped, {kL2},
-                            learning::kPeriodsAloneCriterion, {4, 5, 6, 8});
+    learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped,
+                            learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion,
+                            {4, 5, 6, 8});
     ADD_FAILURE() << "a prior of another period set was accepted";
   } catch (const BadInput& e) {
     EXPECT_NE(std::string(e.what()).find("has the period set 4,5,6,8,9, this run 4,5,6,8"),
               std::string::npos)
         << e.what();
   }
-  EXPECT_NO_THROW(learning::check_learner(learning::resolve_learner(fine),
-                                          robot::RobotKind::quadruped, {kL2},
-                                          learning::kPeriodsAloneCriterion, kPeriodSet));
+  EXPECT_NO_THROW(learning::check_learner(
+      learning::resolve_learner(fine), robot::RobotKind::quadruped,
+      learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion, kPeriodSet));
   LearnerChoice missing = choice("prior");
   missing.options["dataset"] = dir_ + "/nothing-here";
   EXPECT_THROW(
       learning::check_learner(learning::resolve_learner(missing), robot::RobotKind::quadruped,
-                              {kL2}, learning::kPeriodsAloneCriterion),
+                              learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion),
       BadInput);
+}
+
+// Told nothing about the fault, a learner searches every leg's period, the lost leg's too
+// (docs/learning.md "What a learner is told"); the prior then cannot leave a scenario out.
+TEST_F(Dataset, ALearnerToldNothingSearchesEveryLegsPeriod) {
+  learning::LearnerSetup setup;
+  setup.robot = robot::RobotKind::quadruped;
+  setup.start.assign(4, learning::kStartPeriod);
+  setup.start_deviation_deg = 30.0;
+  setup.search = search(60);
+  setup.seed = 3;
+  EXPECT_EQ(setup.working(), (std::vector<std::size_t>{0, 1, 2, 3}));
+  for (const learning::LearnerInfo& info : learning::learner_list()) {
+    const std::string name(info.name);
+    const LearnerChoice resolved = learning::resolve_learner(choice(name));
+    const auto learner = learning::make_learner(
+        resolved, setup,
+        learning::learner_data(resolved, setup.robot, learning::kPeriodsAloneCriterion));
+    bool lost_leg_changed = false;
+    // L2 is the lost leg of the truth walked here: its period changes nothing.
+    const ScenarioLandscape& truth = *data_.find({kL2});
+    while (learner->stop() == StopReason::running) {
+      const std::optional<Periods> p = learner->propose();
+      if (!p) break;
+      lost_leg_changed = lost_leg_changed || (*p)[kL2] != learning::kStartPeriod;
+      const LandscapePoint& point = truth.points[*truth.find(*p)];
+      learning::Measurement m;
+      m.windows = {point.windows.front()};
+      m.deviation_deg = learning::kPeriodsAloneCriterion.error(m.windows.front());
+      learner->observe(m);
+    }
+    EXPECT_TRUE(lost_leg_changed) << name;
+  }
+  LearnerChoice l2 = choice("prior");
+  l2.options["scenarios"] = {"R1", "L2"};
+  EXPECT_NO_THROW(
+      learning::check_learner(learning::resolve_learner(l2), robot::RobotKind::quadruped,
+                              learning::ToldFault::nothing(), learning::kPeriodsAloneCriterion));
+  EXPECT_THROW(
+      learning::check_learner(learning::resolve_learner(l2), robot::RobotKind::quadruped,
+                              learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion),
+      BadInput);
+}
+
+// --told-nothing replays every learner told nothing beside told the failed legs: its own rows,
+// the lost leg's period searched too, and the scenario replayed still withheld from the prior.
+TEST_F(Dataset, TheBenchmarkReplaysEveryLearnerToldNothingBesideToldTheFailedLegs) {
+  const std::string out = dir_ + "/blind";
+  const CliResult r = run_cli("learner-benchmark --dataset " + stem() +
+                              " --learners random,prior --seeds 4 --scenarios L2 --told-nothing"
+                              " --out " +
+                              out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("prior, told nothing"), std::string::npos) << r.out;
+  const std::string table = read_file(out + "/benchmark.csv");
+  EXPECT_EQ(count_lines(table), 1 + 4);
+  EXPECT_NE(table.find("random, told nothing"), std::string::npos) << table;
+  const auto summary = nlohmann::json::parse(read_file(out + "/summary.json"));
+  ASSERT_EQ(summary.at("learners").size(), 4u);
+  EXPECT_FALSE(summary.at("learners")[1].contains("told"));
+  EXPECT_EQ(summary.at("learners")[3].at("told"), "nothing");
+  EXPECT_EQ(summary.at("scenarios"), 1);
+
+  const ScenarioLandscape& s = *data_.find({kL2});
+  const LearnerChoice random = learning::resolve_learner(choice("random"));
+  bool lost_leg_searched = false;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const ReplayRun blind = learning::replay_run(data_, s, random, {}, search(60), TrialProtocol{},
+                                                 seed, std::nullopt, learning::Told::nothing);
+    for (const learning::TrialRecord& t : blind.trace) {
+      lost_leg_searched = lost_leg_searched || t.periods[kL2] != learning::kStartPeriod;
+    }
+  }
+  EXPECT_TRUE(lost_leg_searched);
+  // The prior told nothing never learns from the scenario it replays: naming it is refused.
+  LearnerChoice seeing = choice("prior");
+  seeing.options["scenarios"] = {"L2"};
+  const LearnerChoice resolved = learning::resolve_learner(seeing);
+  EXPECT_THROW(
+      learning::replay_run(data_, s, resolved,
+                           learning::learner_data(resolved, data_.robot, data_.criterion()),
+                           search(60), TrialProtocol{}, 1, std::nullopt, learning::Told::nothing),
+      BadInput);
+}
+
+// Ask/tell (learning/ask_tell.h) walking the windows a replay walks, in the order walked, gives
+// the replay's trials for every learner: the same learner made the same way, E judged from the
+// windows by the run's criterion.
+TEST_F(Dataset, AskTellRetracesAReplayForEveryLearner) {
+  const ScenarioLandscape& s = *data_.find({kL2});
+  TrialProtocol walked;
+  walked.window_order = learning::WindowOrder::walked;
+  const Periods start(4, learning::kStartPeriod);
+  const auto windows_of = [&](const Periods& periods) {
+    const LandscapePoint& p = s.points[*s.find(periods)];
+    std::vector<body::WindowMeasure> out;
+    for (int w = 0; w < walked.hold_windows; ++w) {
+      out.push_back(p.windows.at(static_cast<std::size_t>(w)));
+      if (!body::holds(data_.criterion().error(out), learning::kDefaultThresholdDeg)) break;
+    }
+    return out;
+  };
+  for (const learning::LearnerInfo& info : learning::learner_list()) {
+    const std::string name(info.name);
+    const LearnerChoice resolved = learning::resolve_learner(choice(name));
+    constexpr std::uint64_t kSeed = 11;
+    const ReplayRun replayed = learning::replay_run(
+        data_, s, resolved, learning::learner_data(resolved, data_.robot, data_.criterion()),
+        search(30), walked, 1, kSeed);
+    ASSERT_TRUE(replayed.deviated) << name;
+    learning::AskTellSetup setup;
+    setup.learner = choice(name);
+    setup.robot = data_.robot;
+    setup.told = learning::ToldFault::legs({kL2});
+    setup.search = search(30);
+    setup.criterion = data_.criterion();
+    setup.start_windows = {s.points[*s.find(start)].windows.front()};
+    setup.seed = kSeed;
+    learning::AskTell learner(setup);
+    std::vector<learning::TrialRecord> trace;
+    while (const std::optional<Periods> p = learner.ask())
+      trace.push_back(learner.tell(windows_of(*p)));
+    ASSERT_EQ(trace.size(), replayed.trace.size()) << name;
+    ASSERT_FALSE(trace.empty()) << name;
+    for (std::size_t i = 0; i < trace.size(); ++i) {
+      EXPECT_EQ(trace[i].trial, replayed.trace[i].trial) << name;
+      EXPECT_EQ(trace[i].periods, replayed.trace[i].periods) << name << " trial " << i + 1;
+      EXPECT_EQ(trace[i].deviation_deg, replayed.trace[i].deviation_deg) << name;
+      EXPECT_EQ(trace[i].accepted, replayed.trace[i].accepted) << name;
+      EXPECT_EQ(trace[i].details, replayed.trace[i].details) << name;
+    }
+    EXPECT_EQ(learner.reason(), replayed.reason) << name;
+    EXPECT_EQ(learner.answer().periods, replayed.answer) << name;
+    EXPECT_TRUE(learner.done()) << name;
+    EXPECT_THROW(learner.tell(1.0), std::logic_error) << name;
+  }
+  // C0 needs what it measured: its windows or its E.
+  learning::AskTellSetup bare;
+  EXPECT_THROW(learning::AskTell{bare}, OptionError);
 }
 
 TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
@@ -397,7 +541,7 @@ TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
   learning::LearnerSetup setup;
   setup.robot = robot::RobotKind::quadruped;
   setup.start.assign(4, learning::kStartPeriod);
-  setup.fixed = {kR2};
+  setup.told = learning::ToldFault::legs({kR2});
   setup.search = search(60);
   const learning::SearchSpace space(setup);
   const learning::AdditiveModelParams params{1.5, 8.0, 4.0, 2.0};
@@ -478,13 +622,13 @@ TEST_F(Dataset, AWalkedReplayMeasuresTheLandscapesWindowsInTheirOrder) {
   int drawn_differs = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     const learning::LearnerChoice random = learning::resolve_learner(choice("random"));
-    const ReplayRun run = learning::replay_run(data_, s, random, search(60), walked, seed);
+    const ReplayRun run = learning::replay_run(data_, s, random, {}, search(60), walked, seed);
     ASSERT_FALSE(run.trace.empty()) << seed;
     for (const learning::TrialRecord& t : run.trace) {
       EXPECT_EQ(t.deviation_deg, in_order(t.periods)) << "seed " << seed << " trial " << t.trial;
     }
     const ReplayRun drawn =
-        learning::replay_run(data_, s, random, search(60), TrialProtocol{}, seed);
+        learning::replay_run(data_, s, random, {}, search(60), TrialProtocol{}, seed);
     for (const learning::TrialRecord& t : drawn.trace) {
       drawn_differs += t.deviation_deg != in_order(t.periods) ? 1 : 0;
     }
@@ -504,7 +648,8 @@ TEST_F(Dataset, AWalkedReplayWithALearnerSeedIsThatSeedsRun) {
   const auto periods = [&](std::uint64_t run_seed, std::uint64_t learner_seed) {
     std::vector<Periods> out;
     for (const learning::TrialRecord& t :
-         learning::replay_run(data_, s, random, search(60), walked, run_seed, learner_seed).trace) {
+         learning::replay_run(data_, s, random, {}, search(60), walked, run_seed, learner_seed)
+             .trace) {
       out.push_back(t.periods);
     }
     return out;

@@ -240,7 +240,7 @@ TEST(Runner, CompensationRunsThroughRunnerIntoTables) {
     o.seed = t.seed;
     o.settle_steps = 0;
     learning::FakeBody walker(RobotKind::quadruped, body::fail_at(disabled, 0));
-    return learning::to_json(learning::compensate(walker, o), quad, disabled);
+    return learning::to_json(learning::compensate(walker, o, {}), quad, disabled);
   };
   TempDir one("learn1");
   TempDir two("learn2");

@@ -25,6 +25,8 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 - ``experiment(file_or_dict, jobs=...)``: a sweep as ``multicpg run`` runs it; its tidy table.
 - ``landscape_dataset("hexapod")``: the landscape dataset the prior learns from by default, found
   in $MULTICPG_DATA, else in the data installed with this package, else in the source tree.
+- ``Learner(name, failed=..., windows=...)``: any learner driven from your own loop, ``ask()``
+  the next periods, ``tell(windows=...)`` what they measured (ask/tell; docs/python.md).
 - ``Annealer``: the annealing search one step at a time; ``env.CompensationEnv``: the learning
   task as a Gymnasium environment (one step = one trial) with its action and observation spaces.
 
@@ -49,9 +51,11 @@ from typing import Optional as _Optional, Union as _Union
 
 from ._multicpg import (
     __version__,
+    LEARNERS,
     _run_experiment,
     Annealer,
     Fault,
+    Learner,
     Recovery,
     Robot,
     Simulation,
@@ -70,7 +74,9 @@ from .replay import Replay, replay
 
 __all__ = [
     "Annealer",
+    "LEARNERS",
     "Fault",
+    "Learner",
     "Recovery",
     "Replay",
     "Robot",

@@ -19,6 +19,7 @@ DEFAULT_HOLD_WINDOWS: int
 DETECTION_WINDOWS: int
 STEERING_MAX_EFFORT: float
 PERIOD_SET: Tuple[int, ...]
+LEARNERS: Tuple[str, ...]
 GAIT_PERIODS: Tuple[int, ...]
 MAX_STEPS: int
 FRAME_SIDE_LIMITS: Tuple[int, int]
@@ -297,6 +298,47 @@ class Annealer:
     @property
     def trace(self) -> List[Dict[str, Any]]:
         """One dict per decided trial."""
+
+class Learner:
+    """A learner asked for the next periods and told what each trial measured (ask/tell)."""
+
+    def __init__(self, learner: str = "annealing", *, options: Any = None, seed: int = 1,
+                 robot: Union[Robot, str] = "hexapod", failed: Legs = None, periods: Periods = 4,
+                 windows: Any = None, deviation_deg: Optional[float] = None,
+                 mode: str = "robust", steering: str = "reflex", period_set: Any = None,
+                 threshold: float = 8.0, max_trials: int = 200) -> None: ...
+    def ask(self) -> Optional[Dict[str, int]]:
+        """The next periods, {leg: period} in leg order, or None when it is done."""
+    def tell(self, *, windows: Any = None,
+             deviation_deg: Optional[float] = None) -> Dict[str, Any]:
+        """What the asked periods measured (windows or E); the trial's record."""
+    @property
+    def done(self) -> bool:
+        """Whether it wants no more trials."""
+    @property
+    def reason(self) -> str:
+        """running, below threshold, trial cap or search space exhausted."""
+    @property
+    def answer(self) -> Dict[str, Any]:
+        """The combination it ends with: periods and deviation_deg."""
+    @property
+    def trials(self) -> int:
+        """Trials told."""
+    @property
+    def trace(self) -> List[Dict[str, Any]]:
+        """One record per trial told."""
+    @property
+    def working(self) -> List[str]:
+        """Legs whose period it may change."""
+    @property
+    def name(self) -> str:
+        """The learner's name."""
+    @property
+    def options(self) -> Dict[str, Any]:
+        """Its options, every default filled."""
+    @property
+    def dataset(self) -> Optional[str]:
+        """The dataset it learned from (the prior's), or None."""
 
 def _learning_options(*, mode: str = "robust", learner: str = "annealing",
                       learner_options: Optional[Mapping[str, Any]] = None,

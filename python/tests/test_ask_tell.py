@@ -1,0 +1,77 @@
+"""Ask/tell (multicpg.Learner): driven by our own simulation it gives learn()'s trials for every
+learner, and both examples of docs/python.md run."""
+
+import importlib.util
+import subprocess
+import sys
+
+import pytest
+
+import multicpg
+from conftest import SOURCE_DIR
+
+EXAMPLES = SOURCE_DIR / "examples" / "python"
+SEED = 5
+MAX_TRIALS = 3  # enough for kept and rejected trials, cheap for five learners
+
+
+def example(name):
+    spec = importlib.util.spec_from_file_location(name, EXAMPLES / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("learner", multicpg.LEARNERS)
+def test_ask_tell_from_a_users_loop_retraces_learn(learner):
+    learned = multicpg.learn("hexapod", disable="R1", mode="paper", learner=learner, seed=SEED,
+                             max_trials=MAX_TRIALS, progress=False)
+    agent = example("ask_tell_simulation").learn_in_my_loop(learner, "R1", SEED, MAX_TRIALS)
+    assert learned["trace"], learner
+    assert len(agent.trace) == len(learned["trace"]), learner
+    for mine, theirs in zip(agent.trace, learned["trace"]):
+        assert mine["trial"] == theirs["trial"]
+        assert list(mine["periods"].items()) == list(theirs["periods"].items()), learner
+        assert mine["deviation_deg"] == theirs["deviation_deg"], learner
+        assert mine["accepted"] == theirs["accepted"], learner
+    assert agent.reason == learned["reason"]
+    assert agent.answer["periods"] == learned["periods"]
+    assert agent.done and agent.ask() is None
+
+
+def test_tell_judges_windows_as_the_run_does_and_refuses_misuse():
+    agent = multicpg.Learner("random", failed="R1", periods=4, windows=[(20.0, 1.0)],
+                             steering="off", seed=2)
+    assert agent.working == ["R2", "R3", "L1", "L2", "L3"]
+    periods = agent.ask()
+    assert list(periods) == multicpg.Robot("hexapod").legs and periods["R1"] == 4
+    with pytest.raises(ValueError, match="not told"):
+        agent.ask()
+    # Robust mode without the reflex: E is the worst of |yaw| and |path| over the windows.
+    record = agent.tell(windows=[(3.0, -9.5), {"yaw_deg": 1.0, "path_deg": 2.0}])
+    assert record["deviation_deg"] == 9.5 and record["trial"] == 1
+    with pytest.raises(ValueError, match="no periods were asked"):
+        agent.tell(deviation_deg=1.0)
+    with pytest.raises(ValueError, match="one of them"):
+        agent.tell()
+    # Told nothing, every leg's period is searched, the lost one's too.
+    blind = multicpg.Learner("random", periods=4, deviation_deg=20.0, steering="off")
+    assert blind.working == multicpg.Robot("hexapod").legs
+    with pytest.raises(ValueError, match="windows"):
+        multicpg.Learner("random", failed="R1")
+    with pytest.raises(ValueError, match="learner"):
+        multicpg.Learner("simplex", failed="R1", deviation_deg=20.0)
+    prior = multicpg.Learner("prior", failed="R1", deviation_deg=20.0, steering="off")
+    assert prior.dataset.endswith("hexapod")
+
+
+@pytest.mark.parametrize("script, args", [
+    ("ask_tell_simulation.py", ["--learner", "greedy", "--max-trials", "2"]),
+    ("ask_tell_function.py", ["--learner", "bayes", "--max-trials", "30"]),
+])
+def test_the_examples_run(script, args):
+    done = subprocess.run([sys.executable, str(EXAMPLES / script), *args], capture_output=True,
+                          text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert "trial   1" in done.stdout, done.stdout
+    assert " after " in done.stdout, done.stdout
