@@ -138,7 +138,8 @@ void PlotOutput::learning(const learning::LearningResult& result, double thresho
   if (result.forecasts.empty()) return;
   report::ModelMapPicture map;
   map.title = command_title();
-  map.subtitle = "the model after trial " + std::to_string(result.trace.size());
+  // Each episode's learner has its own model: the map is the last one's.
+  map.subtitle = "the last episode's model after trial " + std::to_string(result.trace.size());
   map.threshold_deg = threshold_deg;
   for (const learning::Forecast& f : result.forecasts) {
     map.rows.push_back({robot::period_map_text(recorder_->morphology(), f.periods, disabled),

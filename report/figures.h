@@ -255,7 +255,7 @@ struct ModelMapRow {
 };
 struct ModelMapPicture {
   std::string title;
-  std::string subtitle;  // e.g. "the model after trial 12"
+  std::string subtitle;  // e.g. "the last episode's model after trial 12"
   double threshold_deg = 0.0;
   std::vector<ModelMapRow> rows;  // best first
 };

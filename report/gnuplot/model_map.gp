@@ -2,9 +2,9 @@
 # docs/learning.md "Inside the model"): its combinations with the best chance that a window holds,
 # best on top, each with the median of a window's E and its band, and whether it was walked.
 # Variables: map (rank, label, hold, e_deg, e_low_deg, e_high_deg, tried), title, subtitle
-# ("the model after trial 12"), threshold (degrees), rows.
+# ("the last episode's model after trial 12"), threshold (degrees), rows.
 load dir.'common.gp'
-set title title."\n".subtitle.": the combinations it gives the best chance to hold (P = that a window holds), best on top" font ',12' noenhanced
+set title title."\n".subtitle.": best chance to hold on top (P: that a window holds)" font ',12' noenhanced
 set yrange [rows + 0.6:0.4]
 set xrange [0:*]
 set ytics scale 0 font ',10' noenhanced
