@@ -122,7 +122,7 @@ void run_learn(const LearnOptions& o) {
     steps->commit();
   }
   replay.write();
-  plot.learning(r, spec.learning->search.threshold_deg);
+  plot.learning(r, spec.learning->search.threshold_deg, body::failing_legs(spec.faults));
   plot.write();
   // Learning that did not reach a combination that holds exits 3 (docs/cli.md), after every
   // output is written.
@@ -144,6 +144,7 @@ void run_learn(const LearnOptions& o) {
   }
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
+  if (plot.model_map()) std::cout << "wrote " << model_map_path(o.plot) << "\n";
   end();
 }
 

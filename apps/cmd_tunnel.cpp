@@ -99,7 +99,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (film) film->finish();
   replay.write();
   plot.tunnel(corridor.scene.tunnel_length, corridor.scene.tunnel_width);
-  if (out.learned) plot.learning(*out.learned, spec.learning->search.threshold_deg);
+  if (out.learned) plot.learning(*out.learned, spec.learning->search.threshold_deg, out.disabled);
   plot.write();
   const experiments::TunnelRun& run = out.run;
   if (o.json) {
@@ -144,6 +144,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
   if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";
+  if (plot.model_map()) std::cout << "wrote " << model_map_path(o.plot) << "\n";
 }
 
 }  // namespace

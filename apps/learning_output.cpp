@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
 #include "body/fault_spec.h"
 #include "experiments/run_json.h"
 #include "learning/learners.h"
+#include "learning/model_learner.h"
 #include "robot/body_models.h"
 #include "robot/leg_sets.h"
 #include "robot/terrain.h"
@@ -37,12 +39,26 @@ std::string period_cells(const std::vector<int>& periods,
   return row.str();
 }
 
-// A table row: label, periods (x = disabled), E, what became of it.
+// The predicted column's width: "12.34° [10.21, 15.67]" and room.
+constexpr int kPredictedWidth = 24;
+
+// A model-based learner's forecast of the trial's E (learning/forecast.h): its median and band,
+// "12.34° [10.21, 15.67]"; empty for a trial without one.
+std::string predicted_cell(const nlohmann::json& details) {
+  const std::optional<learning::ForecastE> e = learning::forecast_e(details);
+  if (!e) return "";
+  return degrees(e->deg) + " [" + number(e->low_deg) + ", " + number(e->high_deg) + "]";
+}
+
+// A table row: label, periods (x = disabled), E, the model's forecast of E when the learner has
+// a model (`predicted` set, empty for C0), what became of it.
 void row(std::ostream& out, const std::string& label, const std::vector<int>& periods,
          const std::vector<std::size_t>& disabled, double deviation_deg,
-         const std::string& decision) {
+         const std::optional<std::string>& predicted, const std::string& decision) {
   out << std::setw(5) << label << period_cells(periods, disabled) << std::setw(10)
-      << degrees(deviation_deg) << "  " << decision << std::endl;
+      << degrees(deviation_deg);
+  if (predicted) out << std::setw(kPredictedWidth) << *predicted;
+  out << "  " << decision << std::endl;
 }
 
 std::string stop_text(learning::StopReason reason) {
@@ -115,11 +131,22 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
       << world_text(spec) << ", step budget " << options.step_budget << "\n\n";
   out << "trial";
   for (const robot::Leg& leg : morph.legs) out << std::setw(4) << leg.name;
-  out << "  deviation  decision" << std::endl;
+  out << "  deviation";
+  // The model's median E of a window and its band (docs/learning.md "Inside the model").
+  if (learning::forecasts(options.learner.name))
+    out << std::setw(kPredictedWidth) << "predicted E [band]";
+  out << "  decision" << std::endl;
 }
 
 LearningTable::LearningTable(std::ostream& out, const experiments::RunSpec& spec)
-    : out_(out), spec_(spec), disabled_(body::failing_legs(spec.faults)) {}
+    : out_(out),
+      spec_(spec),
+      disabled_(body::failing_legs(spec.faults)),
+      forecasts_(learning::forecasts(spec.learning->learner.name)) {}
+
+std::optional<std::string> LearningTable::predicted(const std::string& cell) const {
+  return forecasts_ ? std::optional<std::string>(cell) : std::nullopt;
+}
 
 void LearningTable::event(const body::Event& e) {
   const robot::Morphology& morph = experiments::morphology(spec_.robot);
@@ -136,7 +163,8 @@ void LearningTable::event(const body::Event& e) {
       out_ << "-- episode " << e.episode << ": the window ending at step " << e.step << " deviated "
            << degrees(e.deviation_deg) << " (threshold " << degrees(threshold)
            << "): CPGs desynchronised, learning starts" << std::endl;
-      row(out_, "start", e.periods, disabled_, e.deviation_deg, "C0, the periods it deviated with");
+      row(out_, "start", e.periods, disabled_, e.deviation_deg, predicted(""),
+          "C0, the periods it deviated with");
       return;
     case body::EventKind::trial_end: {
       ++trials_;
@@ -151,7 +179,8 @@ void LearningTable::event(const body::Event& e) {
       // The annealing's acceptance probability of a worse combination (paper §3).
       const double p = e.details.value("acceptance_probability", 1.0);
       if (p < 1.0) decision << " (P = " << std::setprecision(3) << std::scientific << p << ")";
-      row(out_, std::to_string(trials_), e.periods, disabled_, e.deviation_deg, decision.str());
+      row(out_, std::to_string(trials_), e.periods, disabled_, e.deviation_deg,
+          predicted(predicted_cell(e.details)), decision.str());
       return;
     }
     case body::EventKind::episode_end:

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,9 +46,14 @@ class LearningTable {
   int trials() const { return trials_; }
 
  private:
+  // `cell` in the predicted column when the learner forecasts each trial (learning/learners.h
+  // forecasts); nothing, and no column, otherwise.
+  std::optional<std::string> predicted(const std::string& cell) const;
+
   std::ostream& out_;
   const experiments::RunSpec& spec_;
   std::vector<std::size_t> disabled_;
+  bool forecasts_ = false;
   int trials_ = 0;
 };
 

@@ -1,11 +1,14 @@
 #include "apps/plot_output.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "apps/replay_output.h"
 #include "common/errors.h"
 #include "common/table.h"
 #include "learning/annealing.h"
+#include "learning/model_learner.h"
+#include "robot/leg_sets.h"
 #include "sim/robot_width.h"
 #include "sim/sim.h"
 
@@ -28,8 +31,8 @@ void add_plot_flag(CLI::App& cmd, std::string& path) {
 
 void PlotRecorder::on_start(const sim::SimModel& model, const sim::SimState& state) {
   if (picture_.legs.empty()) {
-    for (const robot::Leg& leg : model.controller.morphology.legs)
-      picture_.legs.push_back(leg.name);
+    morphology_ = model.controller.morphology;
+    for (const robot::Leg& leg : morphology_.legs) picture_.legs.push_back(leg.name);
   }
   on_step(model, state);
 }
@@ -111,15 +114,19 @@ void PlotOutput::tunnel(double length_m, double width_m) {
   recorder_->picture().course = {{0.0, 0.0}, {length_m, 0.0}};
 }
 
-void PlotOutput::learning(const learning::LearningResult& result, double threshold_deg) {
+void PlotOutput::learning(const learning::LearningResult& result, double threshold_deg,
+                          const std::vector<std::size_t>& disabled) {
   if (!recorder_) return;
   report::RunPicture& picture = recorder_->picture();
   picture.threshold_deg = threshold_deg;
   picture.trials = {{0, result.initial_deviation_deg, true,
                      std::vector<int>(picture.legs.size(), learning::kStartPeriod)}};
   for (const learning::TrialRecord& t : result.trace) {
-    picture.trials.push_back(
-        {static_cast<int>(picture.trials.size()), t.deviation_deg, t.accepted, t.periods});
+    std::optional<report::PredictedE> predicted;
+    if (const std::optional<learning::ForecastE> e = learning::forecast_e(t.details))
+      predicted = report::PredictedE{e->deg, e->low_deg, e->high_deg};
+    picture.trials.push_back({static_cast<int>(picture.trials.size()), t.deviation_deg, t.accepted,
+                              t.periods, predicted});
   }
   if (result.trace.empty()) {
     picture.no_trial_note = result.outcome == learning::Outcome::no_deviation
@@ -128,6 +135,19 @@ void PlotOutput::learning(const learning::LearningResult& result, double thresho
                                 : "No trial: nothing was learned";
   }
   learned_ = true;
+  if (result.forecasts.empty()) return;
+  report::ModelMapPicture map;
+  map.title = command_title();
+  // Each episode's learner has its own model: the map is the last one's.
+  map.subtitle = "the last episode's model after trial " + std::to_string(result.trace.size());
+  map.threshold_deg = threshold_deg;
+  for (const learning::Forecast& f : result.forecasts) {
+    map.rows.push_back({robot::period_map_text(recorder_->morphology(), f.periods, disabled),
+                        f.hold,
+                        {f.e_deg, f.e_low_deg, f.e_high_deg},
+                        f.tried});
+  }
+  model_map_ = std::move(map);
 }
 
 report::RunPicture PlotOutput::picture() const {
@@ -150,6 +170,12 @@ report::RunPicture PlotOutput::picture() const {
 void PlotOutput::write() {
   if (!recorder_) return;
   report::plot_run_picture(picture(), path_);
+  if (model_map_) report::plot_model_map(*model_map_, model_map_path(path_));
+}
+
+std::string model_map_path(const std::string& plot_path) {
+  const std::filesystem::path p(plot_path);
+  return (p.parent_path() / (p.stem().string() + "-model" + p.extension().string())).string();
 }
 
 }  // namespace multicpg::apps

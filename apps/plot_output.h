@@ -35,6 +35,8 @@ class PlotRecorder final : public sim::Observer {
   const std::deque<std::vector<bool>>& contact() const { return contact_; }
   // The body's lateral reach at each path point (sim/robot_width.h).
   const std::vector<report::LateralSpan>& span() const { return span_; }
+  // The robot's legs, as the run's model has them (empty before the run starts).
+  const robot::Morphology& morphology() const { return morphology_; }
   long steps() const { return steps_; }
   // Whether a learning episode ended, and whether the run walked on after the last one.
   bool learned() const { return last_episode_end_.has_value(); }
@@ -46,6 +48,7 @@ class PlotRecorder final : public sim::Observer {
   std::size_t here() const { return picture_.path.empty() ? 0 : picture_.path.size() - 1; }
 
   report::RunPicture picture_;
+  robot::Morphology morphology_{};
   std::deque<std::vector<bool>> contact_;  // the last steps' contact, [step][leg]
   std::vector<report::LateralSpan> span_;
   long steps_ = 0;  // rows recorded
@@ -64,18 +67,27 @@ class PlotOutput {
   // The tunnel the run walked: its walls and its axis, the course (metres, robot/mjcf.h).
   void tunnel(double length_m, double width_m);
   // The learning the run did: trial 0 (the detection window, all periods 4) and every trial,
-  // numbered across episodes.
-  void learning(const learning::LearningResult& result, double threshold_deg);
+  // numbered across episodes, with a model's forecast of each; a model-based learner's map after
+  // its last trial, for the picture beside (model_map_path). `disabled`: the failed legs.
+  void learning(const learning::LearningResult& result, double threshold_deg,
+                const std::vector<std::size_t>& disabled);
   // The picture as write() draws it (only with --plot): the run so far, titled with the command
   // line, the body's reach with the tunnel, a subtitle when the run ended with its last trial.
   report::RunPicture picture() const;
-  // Draws the picture (when --plot named a file).
+  // The model's map learning() made, if the run's learner has a model.
+  const std::optional<report::ModelMapPicture>& model_map() const { return model_map_; }
+  // Draws the picture (when --plot named a file), and the model's map beside it when there is
+  // one.
   void write();
 
  private:
   std::string path_;
   std::optional<PlotRecorder> recorder_;
   bool learned_ = false;  // learning() was told a result
+  std::optional<report::ModelMapPicture> model_map_;
 };
+
+// Where --plot FILE.png draws a model-based learner's map: FILE-model.png beside it.
+std::string model_map_path(const std::string& plot_path);
 
 }  // namespace multicpg::apps

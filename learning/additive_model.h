@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "learning/forecast.h"
 #include "learning/search_space.h"
 
 namespace multicpg::learning {
@@ -25,12 +26,6 @@ struct AdditiveModelParams {
   double intercept_deg = 0.0;  // prior sd of the constant
   double effect_deg = 0.0;     // prior sd of each leg's contribution at each period
   double pair_deg = 0.0;       // prior sd of each pair's contribution; 0 = no pairs
-};
-
-// Prediction of one output for one combination: mean and sd of its mean (without the noise).
-struct Prediction {
-  double mean = 0.0;
-  double sd = 0.0;
 };
 
 // What the model predicts of a window: the three parts of E (learning/criterion.h).

@@ -268,6 +268,7 @@ LearningResult compensate_paper(body::Body& body, const CompensationOptions& opt
     return budget.used_up();
   };
   EpisodeEnd end = run_episode(*learner, hooks);
+  result.forecasts = learner->best_forecasts(kBestForecasts);
   // A run that did not converge keeps walking with the accepted combination, the one reported.
   if (current_periods(body) != end.answer.periods) {
     neural::set_periods(model, body.controller(), end.answer.periods);
@@ -403,6 +404,7 @@ class RobustRun {
       return ep.interrupted || budget_.used_up();
     };
     EpisodeEnd end = run_episode(*learner, hooks);
+    result_.forecasts = learner->best_forecasts(kBestForecasts);
     if (periods() != end.answer.periods) set(end.answer.periods);
     ep.trials = end.trials;
     ep.held = end.reason == StopReason::below_threshold;

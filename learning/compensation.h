@@ -170,6 +170,9 @@ struct LearningResult {
   double steering_effort = 0.0;
   // The reflex as the run left it (robust mode with Steering::reflex), to walk on with.
   std::optional<SteeringState> steering;
+  // A model-based learner's map after the last trial (its last episode's): the kBestForecasts
+  // combinations its model gives the best chance to hold, best first; not recorded in JSON.
+  std::vector<Forecast> forecasts;
 };
 
 // Runs the whole online loop on `body`, which should be walking forward with every client

@@ -31,6 +31,7 @@
 
 #include "body/deviation.h"
 #include "learning/criterion.h"
+#include "learning/forecast.h"
 #include "learning/search_bounds.h"
 #include "robot/morphology.h"
 
@@ -122,6 +123,10 @@ class Learner {
   // space_exhausted when it gives up with answer().
   virtual StopReason stop() const = 0;
   virtual Answer answer() const = 0;
+  // A model-based learner's forecasts of the `count` combinations its model now gives the best
+  // chance to hold, best first (docs/learning.md "Inside the model"); none from a learner
+  // without a model.
+  virtual std::vector<Forecast> best_forecasts(std::size_t /*count*/) const { return {}; }
 };
 
 // What an episode needs of whoever walks its trials.

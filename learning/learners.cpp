@@ -5,6 +5,7 @@
 
 #include "common/user_text.h"
 #include "learning/annealing.h"
+#include "learning/forecast.h"
 
 namespace multicpg::learning {
 
@@ -31,6 +32,14 @@ void check_prior(const nlohmann::json& options, const LearnerData& data, robot::
                  const std::vector<int>& period_set);
 
 namespace {
+
+// A model-based learner's details: its acquisition score and the forecast of the combination it
+// chose (learning/forecast.h).
+std::vector<std::string_view> model_details() {
+  std::vector<std::string_view> keys{"acquisition"};
+  keys.insert(keys.end(), kForecastKeys.begin(), kForecastKeys.end());
+  return keys;
+}
 
 struct Entry {
   LearnerInfo info;
@@ -62,13 +71,13 @@ const std::vector<Entry>& table() {
         {"legs_changed"}},
        greedy_options,
        make_greedy},
-      {{"bayes", "Gaussian-process Bayesian optimisation over the period grid", {"acquisition"}},
+      {{"bayes", "Gaussian-process Bayesian optimisation over the period grid", model_details()},
        bayes_options,
        make_bayes},
       {{"prior",
         "a GP whose prior mean is what the other leg losses' landscapes predict "
         "(Intelligent Trial and Error)",
-        {"acquisition"}},
+        model_details()},
        prior_options,
        make_prior,
        prior_data,
@@ -113,6 +122,15 @@ std::vector<std::string> detail_columns(std::string_view learner,
     for (const auto& [key, value] : t.details.items()) keys.insert(key);
   }
   return {keys.begin(), keys.end()};
+}
+
+bool forecasts(std::string_view learner) {
+  for (const Entry& e : table()) {
+    if (e.info.name != learner) continue;
+    return std::find(e.info.details.begin(), e.info.details.end(), kPredictedEKey) !=
+           e.info.details.end();
+  }
+  return false;
 }
 
 std::optional<double> annealing_beta(const LearnerChoice& choice) {

@@ -48,6 +48,10 @@ std::string learner_names();
 std::vector<std::string> detail_columns(std::string_view learner,
                                         const std::vector<TrialRecord>& trace);
 
+// Whether `learner`'s trials record its model's forecast (learning/forecast.h): the model-based
+// learners.
+bool forecasts(std::string_view learner);
+
 // The annealing's beta in `choice` (its option "beta", kDefaultBeta when not given); nothing for
 // another learner, which has no beta.
 std::optional<double> annealing_beta(const LearnerChoice& choice);

@@ -4,8 +4,10 @@
 // scenarios predict) differ only in the model's prior mean.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <string>
 #include <string_view>
@@ -53,6 +55,15 @@ inline constexpr Limits<double> kKappaLimits{0.0, 10.0};
 void validate(const ModelOptions& options);
 ModelLearnerParams model_learner_params(const ModelOptions& options);
 
+// A trial's forecast E as its details (TrialRecord::details) record it (learning/forecast.h): the
+// median of a window's E and its band; nothing for a trial of a learner without a model.
+struct ForecastE {
+  double deg = 0.0;
+  double low_deg = 0.0;
+  double high_deg = 0.0;
+};
+std::optional<ForecastE> forecast_e(const nlohmann::json& details);
+
 class ModelLearner final : public Learner {
  public:
   // `prior_mean`: as AdditiveModel's (empty: zero). Throws BadInput for a start outside the
@@ -64,12 +75,18 @@ class ModelLearner final : public Learner {
   TrialRecord observe(const Measurement& measurement) override;
   StopReason stop() const override { return best_.stop(); }
   Answer answer() const override { return best_.answer(); }
+  std::vector<Forecast> best_forecasts(std::size_t count) const override;
 
  private:
-  // P(|x| < threshold) for x ~ N(mean, sd^2 + noise^2): one window of the output holds.
-  double window_holds(const Prediction& p) const;
-  // P(x < threshold): the reflex's effort, never negative, holds.
-  double effort_holds(const Prediction& p) const;
+  // P(|x| < limit) for x ~ N(mean, sd^2 + noise^2): one window of the output is under `limit`.
+  double window_under(const Prediction& p, double limit) const;
+  // P(x < limit): the reflex's effort, never negative, is under `limit`.
+  double effort_under(const Prediction& p, double limit) const;
+  // The probability that one window's E is under `limit`: each part the criterion counts under
+  // it, the parts independent as the model has them.
+  double e_under(const std::array<Prediction, kOutputs>& p, double limit) const;
+  // The forecast of combination `c` whose outputs the model predicts `p`.
+  Forecast forecast(std::size_t c, const std::array<Prediction, kOutputs>& p) const;
   // What the model sees of a window (its effort scaled as the criterion scales it).
   WindowOutputs outputs(const body::WindowMeasure& w) const;
 
@@ -80,7 +97,8 @@ class ModelLearner final : public Learner {
   std::vector<bool> tried_;
   BestSoFar best_;
   std::size_t pending_ = 0;
-  double pending_score_ = 0.0;
+  // What the trial of pending_ records: its acquisition score and forecast, made by propose().
+  nlohmann::json pending_details_;
 };
 
 }  // namespace multicpg::learning

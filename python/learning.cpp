@@ -79,6 +79,46 @@ py::dict trace_arrays(std::string_view learner, const learning::LearningResult& 
   return out;
 }
 
+// A model-based learner's map after its last trial (docs/learning.md "Inside the model"): the
+// combinations its model gives the best chance to hold, best first, as arrays: periods
+// [rows, legs], hold, e_deg, e_low_deg, e_high_deg, yaw_deg, yaw_sd_deg, path_deg, path_sd_deg,
+// effort_deg, effort_sd_deg and tried.
+py::dict model_arrays(const std::vector<learning::Forecast>& forecasts, std::size_t legs) {
+  const auto n = static_cast<py::ssize_t>(forecasts.size());
+  std::vector<int> periods;
+  std::vector<double> hold, e, low, high, yaw, yaw_sd, path, path_sd, effort, effort_sd;
+  py::array_t<bool> tried(n);
+  for (std::size_t i = 0; i < forecasts.size(); ++i) {
+    const learning::Forecast& f = forecasts[i];
+    periods.insert(periods.end(), f.periods.begin(), f.periods.end());
+    hold.push_back(f.hold);
+    e.push_back(f.e_deg);
+    low.push_back(f.e_low_deg);
+    high.push_back(f.e_high_deg);
+    yaw.push_back(f.yaw.mean);
+    yaw_sd.push_back(f.yaw.sd);
+    path.push_back(f.path.mean);
+    path_sd.push_back(f.path.sd);
+    effort.push_back(f.effort.mean);
+    effort_sd.push_back(f.effort.sd);
+    tried.mutable_at(static_cast<py::ssize_t>(i)) = f.tried;
+  }
+  py::dict out;
+  out["periods"] = array(periods, {n, static_cast<py::ssize_t>(legs)});
+  out["hold"] = array(hold, {n});
+  out["e_deg"] = array(e, {n});
+  out["e_low_deg"] = array(low, {n});
+  out["e_high_deg"] = array(high, {n});
+  out["yaw_deg"] = array(yaw, {n});
+  out["yaw_sd_deg"] = array(yaw_sd, {n});
+  out["path_deg"] = array(path, {n});
+  out["path_sd_deg"] = array(path_sd, {n});
+  out["effort_deg"] = array(effort, {n});
+  out["effort_sd_deg"] = array(effort_sd, {n});
+  out["tried"] = tried;
+  return out;
+}
+
 py::dict path_arrays(const sim::WalkRecord& r) {
   const auto n = static_cast<py::ssize_t>(r.rows());
   py::dict out;
@@ -130,6 +170,8 @@ py::dict learn(const Keywords& k) {
   if (setup) json["hardware"] = run.hardware;
   py::dict out = to_python(json);
   out["trace_arrays"] = trace_arrays(spec.learning->learner.name, run.result, morph.size());
+  if (!run.result.forecasts.empty())
+    out["model_arrays"] = model_arrays(run.result.forecasts, morph.size());
   if (spec.record.steps) out["path"] = path_arrays(run.record);
   return out;
 }
@@ -243,6 +285,8 @@ py::dict tunnel(const Keywords& k) {
   py::dict result = to_python(experiments::tunnel_json(spec, out, scale));
   if (out.learned) {
     result["trace_arrays"] = trace_arrays(spec.learning->learner.name, *out.learned, morph.size());
+    if (!out.learned->forecasts.empty())
+      result["model_arrays"] = model_arrays(out.learned->forecasts, morph.size());
   }
   if (!setup) result["path"] = path_arrays(out.run.record);
   return result;
@@ -408,7 +452,10 @@ void register_learning(py::module_& m) {
       "(0..100), threshold (deg, 0.001..180), window (steps), settle (steps; None: the mode's),\n"
       "max_trials (1..100000), seed (0..4294967295). Returns the dict of `learn --json`, plus\n"
       "trace_arrays (trial from 0, periods [trials,legs], deviation_deg, accepted, the\n"
-      "learner's details) and, with record=True, path (time, x, y, yaw_deg). observer(trial)\n"
+      "learner's details: a model-based learner's forecast of each trial, predicted_e_deg ...),\n"
+      "for a model-based learner model_arrays (its map after the last trial: periods\n"
+      "[rows,legs], hold, e_deg, e_low_deg, e_high_deg, yaw/path/effort _deg and _sd_deg,\n"
+      "tried) and, with record=True, path (time, x, y, yaw_deg). observer(trial)\n"
       "is called after every trial with episode, trial, step, periods, deviation_deg and\n"
       "accepted. Releases the GIL while it walks; Ctrl-C raises KeyboardInterrupt within half a\n"
       "second. progress: a bar once the run has taken half a second (False: none; a callable:\n"
@@ -423,7 +470,8 @@ void register_learning(py::module_& m) {
       "given periods (as for Simulation; None: every leg 4), or (learn=True) after learning in\n"
       "the open field (learning arguments as for learn(), refused without learn=True).\n"
       "max_steps: 1..100000000. Returns the dict of `tunnel --json` plus path (time, x, y,\n"
-      "yaw_deg) and, after learning, trace_arrays. video='run.mp4' films the tunnel walk;\n"
+      "yaw_deg) and, after learning, trace_arrays (and model_arrays, as learn's). video='run.mp4'\n"
+      "films the tunnel walk;\n"
       "observer and progress as for learn(). scale_tunnel=True scales the tunnel to the\n"
       "robot's width (`tunnel --scale-tunnel`).";
   static const std::string options_doc =

@@ -62,11 +62,19 @@ FigureFiles plot_cpg_sync(const std::vector<CpgPairPoint>& synchronised,
 
 // Fig. 8: deviation of every trial of one learning run. Trial 0 is the detection window (the
 // starting combination, accepted by definition); periods[leg] is the tried combination.
+// What a model-based learner's model expected of a trial (learning/forecast.h): the median of a
+// window's E and the band around it, degrees.
+struct PredictedE {
+  double deg;
+  double low_deg;
+  double high_deg;
+};
 struct TrialPoint {
   int trial;
   double deviation_deg;
   bool accepted;
   std::vector<int> periods;
+  std::optional<PredictedE> predicted = {};  // none: a learner without a model, or trial 0
 };
 FigureFiles plot_learning_trace(const std::vector<TrialPoint>& trials,
                                 const std::vector<std::string>& legs, double threshold_deg,
@@ -225,13 +233,37 @@ void check_run_picture_path(const std::filesystem::path& png);
 struct RunPictureData {
   std::string path;   // series,x_m,y_m,y_low_m,y_high_m (series: path | wall | course)
   std::string marks;  // kind,label,x_m,y_m,step (kind: fault | detection | learned)
-  std::string trace;  // trial,deviation_deg,accepted,reference_deg
-  std::string gait;   // leg,row,stance_start_step,stance_end_step
+  // trial,deviation_deg,accepted,reference_deg; with a model's forecasts also predicted_deg,
+  // predicted_low_deg, predicted_high_deg (NaN for trial 0)
+  std::string trace;
+  std::string gait;  // leg,row,stance_start_step,stance_end_step
   std::string subtitle;
   std::string trace_note;  // non-empty: the learning panel is this text alone
 };
 // Throws BadInput as plot_run_picture for unusable data.
 RunPictureData run_picture_data(const RunPicture& picture);
+
+// `--plot FILE.png` of a model-based learner's run, beside it as FILE-model.png: the model's map
+// after the last trial (docs/learning.md "Inside the model"), its combinations with the best
+// chance to hold, best on top, each with the median of a window's E and its band, and whether it
+// was walked.
+struct ModelMapRow {
+  std::string label;  // the combination, e.g. "R1=4x R2=5 ..."
+  double hold = 0.0;  // the chance that a window holds
+  PredictedE e{};
+  bool tried = false;
+};
+struct ModelMapPicture {
+  std::string title;
+  std::string subtitle;  // e.g. "the last episode's model after trial 12"
+  double threshold_deg = 0.0;
+  std::vector<ModelMapRow> rows;  // best first
+};
+// The data gnuplot reads: rank,label,hold,e_deg,e_low_deg,e_high_deg,tried (rank 1 = best).
+// Throws BadInput naming the figure for no row or a threshold that is not positive.
+std::string model_map_data(const ModelMapPicture& picture);
+// Writes the picture to `png` alone (whole or not at all). Errors as plot_run_picture.
+void plot_model_map(const ModelMapPicture& picture, const std::filesystem::path& png);
 // Writes the picture to `png` alone (whole or not at all); the data gnuplot reads live in a
 // temporary folder removed afterwards. Errors as the figures above.
 void plot_run_picture(const RunPicture& picture, const std::filesystem::path& png);

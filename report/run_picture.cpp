@@ -31,6 +31,11 @@ constexpr int kPictureTraceHeight = 400;
 // Points of the trunk path drawn at most: a long run is thinned evenly (its last point kept),
 // so gnuplot reads a small file whatever the run's length.
 constexpr std::size_t kPicturePathPoints = 4000;
+// The model's map: wide enough for a six-leg combination's label beside the chart; a row's
+// height fits its label.
+constexpr int kMapWidth = 1100;
+constexpr int kMapHeaderHeight = 160;
+constexpr int kMapRowHeight = 28;
 
 // A folder of its own under the system's temporary folder, removed with everything in it.
 class TempDir {
@@ -54,6 +59,11 @@ class TempDir {
  private:
   fs::path path_;
 };
+
+bool has_predictions(const RunPicture& picture) {
+  return std::any_of(picture.trials.begin(), picture.trials.end(),
+                     [](const TrialPoint& t) { return t.predicted.has_value(); });
+}
 
 }  // namespace
 
@@ -103,12 +113,25 @@ RunPictureData run_picture_data(const RunPicture& picture) {
   }
   data.marks = marks.text();
 
-  Csv trace({"trial", "deviation_deg", "accepted", "reference_deg"});
+  const bool predicted = has_predictions(picture);
+  std::vector<std::string> columns{"trial", "deviation_deg", "accepted", "reference_deg"};
+  if (predicted)
+    columns.insert(columns.end(), {"predicted_deg", "predicted_low_deg", "predicted_high_deg"});
+  Csv trace(columns);
   const std::vector<double> references = reference_deviations(picture.trials);
   for (std::size_t i = 0; i < picture.trials.size(); ++i) {
     const TrialPoint& t = picture.trials[i];
-    trace.row({std::to_string(t.trial), shortest(t.deviation_deg), t.accepted ? "1" : "0",
-               shortest(references[i])});
+    std::vector<std::string> row{std::to_string(t.trial), shortest(t.deviation_deg),
+                                 t.accepted ? "1" : "0", shortest(references[i])};
+    if (predicted) {
+      // gnuplot skips a NaN: trial 0 (the detection window) has no forecast.
+      const auto cell = [&](double PredictedE::*part) {
+        return t.predicted ? shortest((*t.predicted).*part) : std::string("NaN");
+      };
+      row.insert(row.end(),
+                 {cell(&PredictedE::deg), cell(&PredictedE::low_deg), cell(&PredictedE::high_deg)});
+    }
+    trace.row(row);
   }
   data.trace = trace.text();
   // Trial 0 alone is no trace: one lone point would read as a learning run of one trial.
@@ -162,6 +185,7 @@ void plot_run_picture(const RunPicture& picture, const fs::path& png) {
       .num("n_detection", count(RunMarkKind::detection))
       .num("n_learned", count(RunMarkKind::learned))
       .num("has_trace", picture.trials.empty() ? 0 : 1)
+      .num("has_predicted", has_predictions(picture) ? 1 : 0)
       .text("trace_note", csv.trace_note)
       .num("threshold", picture.threshold_deg)
       .text("legs", join(picture.legs))
@@ -170,6 +194,40 @@ void plot_run_picture(const RunPicture& picture, const fs::path& png) {
   const int height = kPictureHeight + (picture.trials.empty() ? 0 : kPictureTraceHeight);
   run_gnuplot(dir / "run_picture.gp",
               "set terminal pngcairo size " + std::to_string(kPictureWidth) + "," +
+                  std::to_string(height) + " enhanced font " + gp_string(kFont) +
+                  " background rgb 'white'",
+              params, png);
+}
+
+std::string model_map_data(const ModelMapPicture& picture) {
+  const std::string name = "the model's map";
+  require(!picture.rows.empty(), name, "no combination");
+  require(picture.threshold_deg > 0.0, name, "the threshold must be positive");
+  Csv csv({"rank", "label", "hold", "e_deg", "e_low_deg", "e_high_deg", "tried"});
+  for (std::size_t i = 0; i < picture.rows.size(); ++i) {
+    const ModelMapRow& r = picture.rows[i];
+    csv.row({std::to_string(i + 1), r.label, shortest(r.hold), shortest(r.e.deg),
+             shortest(r.e.low_deg), shortest(r.e.high_deg), r.tried ? "1" : "0"});
+  }
+  return csv.text();
+}
+
+void plot_model_map(const ModelMapPicture& picture, const fs::path& png) {
+  check_run_picture_path(png);
+  const std::string csv = model_map_data(picture);
+  const TempDir data;
+  write_file_atomic(data.path() / "map.csv", csv);
+  const fs::path dir = scripts_dir();
+  Params params;
+  params.text("dir", (dir / "").string())
+      .text("map", (data.path() / "map.csv").string())
+      .text("title", picture.title)
+      .text("subtitle", picture.subtitle)
+      .num("threshold", picture.threshold_deg)
+      .num("rows", static_cast<double>(picture.rows.size()));
+  const int height = kMapHeaderHeight + kMapRowHeight * static_cast<int>(picture.rows.size());
+  run_gnuplot(dir / "model_map.gp",
+              "set terminal pngcairo size " + std::to_string(kMapWidth) + "," +
                   std::to_string(height) + " enhanced font " + gp_string(kFont) +
                   " background rgb 'white'",
               params, png);

@@ -6,12 +6,16 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 #include <string_view>
 #include <tuple>
 #include <vector>
 
 #include "apps/plot_output.h"
+#include "common/table.h"
 #include "experiments/learning_run.h"
 #include "experiments/run_spec.h"
 #include "experiments/tunnel.h"
@@ -66,6 +70,53 @@ TEST(CliPlot, LearnDrawsTheLearningTrace) {
   fs::remove_all(dir);
 }
 
+// "12.34° [10.21, 15.67]": how learn prints a forecast E (docs/learning.md "Inside the model").
+std::string forecast_cell(const nlohmann::json& trial) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << trial.at("predicted_e_deg").get<double>() << "° ["
+    << trial.at("predicted_e_low_deg").get<double>() << ", "
+    << trial.at("predicted_e_high_deg").get<double>() << "]";
+  return s.str();
+}
+
+// A model-based learner's run prints each trial's forecast as a column, as its record has it,
+// and --plot draws the model's map beside the run's picture.
+TEST(CliPlot, AModelLearnersForecastsArePrintedAndItsMapDrawn) {
+  const std::string dir = make_temp_dir("plot-model-");
+  const auto r = run_cli("learn --mode paper --disable R1 --max-trials 3 --learner bayes --out " +
+                         dir + "/run --plot " + dir + "/learn.png");
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.err;
+  EXPECT_NE(r.out.find("deviation      predicted E [band]  decision"), std::string::npos) << r.out;
+  const nlohmann::json record = nlohmann::json::parse(read_file(dir + "/run/learning.json"));
+  const nlohmann::json& trace = record.at("trace");
+  ASSERT_FALSE(trace.empty());
+  for (const nlohmann::json& t : trace) {
+    EXPECT_NE(r.out.find(forecast_cell(t)), std::string::npos) << forecast_cell(t) << "\n" << r.out;
+  }
+  // trace.csv has the forecast's columns.
+  const std::string csv = read_file(dir + "/run/trace.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const char* key :
+       {"predicted_e_deg", "predicted_hold", "predicted_yaw_sd_deg", "may_hold"}) {
+    EXPECT_NE(header.find(key), std::string::npos) << header;
+  }
+  expect_picture(fs::path(dir) / "learn.png", 1250);
+  const fs::path map = fs::path(dir) / "learn-model.png";
+  EXPECT_NE(r.out.find("wrote " + map.string()), std::string::npos) << r.out;
+  ASSERT_TRUE(fs::exists(map));
+  const multicpg::report::Image image = multicpg::report::read_png(map);
+  EXPECT_EQ(image.width, 1100);
+  EXPECT_EQ(image.height, 160 + 28 * 20);  // a header and the 20 best combinations
+  fs::remove_all(dir);
+  // The annealing has no model: no column, no map.
+  const std::string plain = make_temp_dir("plot-model-");
+  const auto a =
+      run_cli("learn --mode paper --disable R1 --max-trials 2 --plot " + plain + "/learn.png");
+  EXPECT_EQ(a.out.find("predicted"), std::string::npos) << a.out;
+  EXPECT_FALSE(fs::exists(fs::path(plain) / "learn-model.png"));
+  fs::remove_all(plain);
+}
+
 TEST(CliPlot, TunnelDrawsTheWallsAndCourse) {
   const std::string dir = make_temp_dir("plot-");
   const auto r = run_cli("tunnel --disable R1 --max-steps 300 --plot " + dir + "/tunnel.png");
@@ -109,7 +160,7 @@ TEST(CliPlot, LearnMarksFaultDetectionAndLearnedGait) {
   mc::experiments::validate(spec);
   mc::apps::PlotOutput plot(dir + "/learn.png");
   const auto run = mc::experiments::run_learning(hexapod(), spec, 0, plot.observer());
-  plot.learning(run.result, o.search.threshold_deg);
+  plot.learning(run.result, o.search.threshold_deg, mc::body::failing_legs(spec.faults));
   const mc::report::RunPicture picture = plot.picture();
   using mc::report::RunMarkKind;
   const auto faults = marks_of(picture, RunMarkKind::fault);
@@ -133,6 +184,57 @@ TEST(CliPlot, LearnMarksFaultDetectionAndLearnedGait) {
   fs::remove_all(dir);
 }
 
+// The picture's data as --plot records a model-based learner's run: each trial's forecast
+// beside its measured E (trial 0 has none), and the model's map after the last trial.
+TEST(CliPlot, AModelLearnersPictureCarriesItsForecasts) {
+  const std::string dir = make_temp_dir("plot-forecast-");
+  mc::experiments::RunSpec spec;
+  mc::learning::CompensationOptions& o = spec.learning.emplace();
+  o.mode = mc::learning::Mode::paper;
+  o.learner = mc::learning::resolve_learner({"prior", nlohmann::json::object()});
+  o.seed = 2;
+  o.search.max_trials = 2;
+  spec.start = mc::experiments::learning_start(o.mode);
+  spec.faults = mc::body::fail_at({leg("R1"), leg("R3")}, 0);
+  mc::experiments::validate(spec);
+  mc::apps::PlotOutput plot(dir + "/learn.png");
+  const auto run = mc::experiments::run_learning(hexapod(), spec, 0, plot.observer());
+  ASSERT_FALSE(run.result.trace.empty());
+  plot.learning(run.result, o.search.threshold_deg, mc::body::failing_legs(spec.faults));
+  const mc::report::RunPictureData data = mc::report::run_picture_data(plot.picture());
+  std::istringstream lines(data.trace);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line,
+            "trial,deviation_deg,accepted,reference_deg,predicted_deg,predicted_low_deg,"
+            "predicted_high_deg");
+  std::getline(lines, line);
+  EXPECT_EQ(line.substr(line.size() - 12), ",NaN,NaN,NaN") << "trial 0 has no forecast";
+  for (const mc::learning::TrialRecord& t : run.result.trace) {
+    ASSERT_TRUE(std::getline(lines, line));
+    const std::string predicted =
+        mc::shortest(t.details.at("predicted_e_deg").get<double>()) + "," +
+        mc::shortest(t.details.at("predicted_e_low_deg").get<double>()) + "," +
+        mc::shortest(t.details.at("predicted_e_high_deg").get<double>());
+    EXPECT_EQ(line.substr(line.size() - predicted.size()), predicted) << line;
+  }
+  // The map: the run's best forecasts, labelled without the failed legs.
+  ASSERT_TRUE(plot.model_map());
+  const mc::report::ModelMapPicture& map = *plot.model_map();
+  ASSERT_EQ(map.rows.size(), run.result.forecasts.size());
+  ASSERT_EQ(map.rows.size(), 20u);
+  EXPECT_EQ(map.rows[0].hold, run.result.forecasts[0].hold);
+  EXPECT_EQ(map.rows[0].label.find("R1"), std::string::npos) << map.rows[0].label;
+  EXPECT_NE(map.rows[0].label.find("R2="), std::string::npos) << map.rows[0].label;
+  for (std::size_t i = 1; i < map.rows.size(); ++i) {
+    EXPECT_GE(map.rows[i - 1].hold, map.rows[i].hold);
+  }
+  EXPECT_EQ(mc::report::model_map_data(map).rfind(
+                "rank,label,hold,e_deg,e_low_deg,e_high_deg,tried\n1,", 0),
+            0u);
+  fs::remove_all(dir);
+}
+
 // Robust mode walks monitored windows after its last episode: the path goes on past the learned
 // gait, and no subtitle says it ends with the trial.
 TEST(CliPlot, RobustLearnPathWalksOnAfterLearning) {
@@ -150,7 +252,7 @@ TEST(CliPlot, RobustLearnPathWalksOnAfterLearning) {
   mc::apps::PlotOutput plot(dir + "/learn.png");
   const auto run = mc::experiments::run_learning(hexapod(), spec, 0, plot.observer());
   ASSERT_EQ(run.result.episodes.size(), 1u) << "R1+R3 deviates with the reflex alone";
-  plot.learning(run.result, o.search.threshold_deg);
+  plot.learning(run.result, o.search.threshold_deg, mc::body::failing_legs(spec.faults));
   const mc::report::RunPicture picture = plot.picture();
   const auto learned = marks_of(picture, mc::report::RunMarkKind::learned);
   ASSERT_EQ(learned.size(), 1u);

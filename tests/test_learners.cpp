@@ -21,6 +21,8 @@
 #include "learning/benchmark.h"
 #include "learning/landscapes.h"
 #include "learning/learners.h"
+#include "learning/model_learner.h"
+#include "learning/search_space.h"
 #include "tests/cli_runner.h"
 
 namespace multicpg::testing {
@@ -601,6 +603,145 @@ TEST(Learners, TheAdditiveModelIsTheGaussianProcessOfItsKernel) {
       EXPECT_NEAR(predicted[o][c].sd, std::sqrt(var), 1e-9) << c;
     }
   }
+}
+
+// What a window of `periods` measures on a made-up body: a turn each working leg's period moves,
+// a path angle following it, the reflex's effort rising with the turn, two windows a trial.
+std::vector<body::WindowMeasure> made_up_windows(const Periods& periods) {
+  double yaw = 14.0;
+  for (std::size_t leg = 0; leg < periods.size(); ++leg) {
+    yaw -= kLegWeightDeg[leg] * period_index(periods[leg]);
+  }
+  std::vector<body::WindowMeasure> out;
+  for (double noise : {-0.7, 0.4}) {
+    body::WindowMeasure w;
+    w.yaw_deg = yaw + noise;
+    w.path_deg = kPathPerYaw * (yaw - noise);
+    w.steering_effort = std::min(0.9, 0.02 * std::abs(yaw) + 0.1);
+    out.push_back(w);
+  }
+  return out;
+}
+
+// Each trial's forecast is the model's: rebuilt from the start's and the earlier trials' windows,
+// the model predicts at the chosen combination the recorded means and sds, and the recorded
+// chance to hold, E band and count of combinations that may hold follow from them
+// (docs/learning.md "Inside the model"). Bayes by its name; the prior's path (a prior mean) by
+// the learner they share.
+TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
+  learning::LearnerSetup setup;
+  setup.robot = robot::RobotKind::quadruped;
+  setup.start.assign(4, learning::kStartPeriod);
+  setup.fixed = {kR2};
+  setup.criterion = learning::reflex_criterion(learning::kDefaultThresholdDeg, 0.75);
+  setup.start_windows = made_up_windows(setup.start);
+  setup.start_deviation_deg = setup.criterion.error(setup.start_windows.front());
+  setup.search = search(15);
+  setup.seed = 3;
+  const learning::SearchSpace space(setup);
+  const double t = setup.search.threshold_deg;
+  const learning::ModelOptions options;
+  const learning::ModelLearnerParams params = learning::model_learner_params(options);
+  std::vector<std::vector<double>> prior_mean(learning::kOutputs,
+                                              std::vector<double>(space.size(), 0.0));
+  for (std::size_t c = 0; c < space.size(); ++c) {
+    prior_mean[learning::kYaw][c] = 1.5 * static_cast<double>(c % 4);
+  }
+  const auto cdf = [](double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); };
+  for (const bool with_prior : {false, true}) {
+    SCOPED_TRACE(with_prior ? "a prior mean" : "bayes");
+    const std::unique_ptr<learning::Learner> learner =
+        with_prior ? std::make_unique<learning::ModelLearner>(setup, params, prior_mean)
+                   : learning::make_learner(
+                         learning::resolve_learner({"bayes", nlohmann::json::object()}), setup);
+    std::vector<std::pair<std::size_t, body::WindowMeasure>> told;
+    for (const body::WindowMeasure& w : setup.start_windows) {
+      told.emplace_back(*space.index(setup.start), w);
+    }
+    // The model as the trials told so far leave it, rebuilt from their windows.
+    const auto rebuilt = [&] {
+      auto model = std::make_unique<learning::AdditiveModel>(
+          space, params.model, with_prior ? prior_mean : std::vector<std::vector<double>>{});
+      for (const auto& [c, w] : told) {
+        model->observe(c, {w.yaw_deg, w.path_deg, setup.criterion.effort_deg(w.steering_effort)});
+      }
+      return model;
+    };
+    const auto hold = [&](const std::array<learning::Prediction, learning::kOutputs>& p,
+                          double limit) {
+      const double sd = std::hypot(p[0].sd, options.noise_deg);
+      const auto within = [&](const learning::Prediction& x) {
+        return cdf((limit - x.mean) / sd) - cdf((-limit - x.mean) / sd);
+      };
+      return within(p[learning::kYaw]) * within(p[learning::kPath]) *
+             cdf((limit - p[learning::kEffort].mean) / sd);
+    };
+    std::set<std::size_t> tried{*space.index(setup.start)};
+    int trials = 0;
+    while (learner->stop() == StopReason::running) {
+      const std::optional<Periods> chosen = learner->propose();
+      ASSERT_TRUE(chosen);
+      const std::size_t c = *space.index(*chosen);
+      const std::unique_ptr<learning::AdditiveModel> model = rebuilt();
+      const std::array<learning::Prediction, learning::kOutputs> p = model->predict(c);
+      std::size_t may_hold = 0;
+      for (std::size_t other = 0; other < space.size(); ++other) {
+        if (tried.count(other) == 0 && hold(model->predict(other), t) >= learning::kMayHoldLevel)
+          ++may_hold;
+      }
+      const std::vector<body::WindowMeasure> windows = made_up_windows(*chosen);
+      double e = 0.0;
+      for (const body::WindowMeasure& w : windows) e = std::max(e, setup.criterion.error(w));
+      const learning::TrialRecord r = learner->observe({e, windows});
+      const nlohmann::json& d = r.details;
+      SCOPED_TRACE("trial " + std::to_string(r.trial));
+      EXPECT_EQ(d.at("predicted_yaw_deg").get<double>(), p[learning::kYaw].mean);
+      EXPECT_EQ(d.at("predicted_yaw_sd_deg").get<double>(), p[learning::kYaw].sd);
+      EXPECT_EQ(d.at("predicted_path_deg").get<double>(), p[learning::kPath].mean);
+      EXPECT_EQ(d.at("predicted_path_sd_deg").get<double>(), p[learning::kPath].sd);
+      EXPECT_EQ(d.at("predicted_effort_deg").get<double>(), p[learning::kEffort].mean);
+      EXPECT_EQ(d.at("predicted_effort_sd_deg").get<double>(), p[learning::kEffort].sd);
+      EXPECT_NEAR(d.at("predicted_hold").get<double>(), hold(p, t), 1e-12);
+      // The pi acquisition scores by that chance.
+      EXPECT_EQ(d.at("predicted_hold").get<double>(), d.at("acquisition").get<double>());
+      const double median = d.at("predicted_e_deg").get<double>();
+      const double low = d.at("predicted_e_low_deg").get<double>();
+      const double high = d.at("predicted_e_high_deg").get<double>();
+      EXPECT_LT(low, median);
+      EXPECT_LT(median, high);
+      EXPECT_NEAR(hold(p, median), 0.5, 1e-9);
+      EXPECT_NEAR(hold(p, low), learning::kBandLowQuantile, 1e-9);
+      EXPECT_NEAR(hold(p, high), learning::kBandHighQuantile, 1e-9);
+      EXPECT_EQ(d.at("untried").get<std::size_t>(), space.size() - tried.size());
+      EXPECT_EQ(d.at("may_hold").get<std::size_t>(), may_hold);
+      tried.insert(c);
+      for (const body::WindowMeasure& w : windows) told.emplace_back(c, w);
+      ++trials;
+    }
+    EXPECT_GT(trials, 1);
+    // After the last trial: the map's best, in order, as the model told everything predicts.
+    const std::vector<learning::Forecast> best = learner->best_forecasts(5);
+    ASSERT_EQ(best.size(), 5u);
+    const std::unique_ptr<learning::AdditiveModel> model = rebuilt();
+    for (std::size_t i = 0; i < best.size(); ++i) {
+      const std::size_t c = *space.index(best[i].periods);
+      EXPECT_EQ(best[i].yaw.mean, model->predict(c)[learning::kYaw].mean);
+      EXPECT_EQ(best[i].tried, tried.count(c) == 1);
+      EXPECT_NEAR(best[i].hold, hold(model->predict(c), t), 1e-12);
+      if (i > 0) {
+        EXPECT_GE(best[i - 1].hold, best[i].hold);
+      }
+    }
+    for (std::size_t c = 0; c < space.size(); ++c) {
+      EXPECT_LE(hold(model->predict(c), t), best.front().hold + 1e-12);
+    }
+  }
+  // A learner without a model has no forecast.
+  const std::unique_ptr<learning::Learner> random = learning::make_learner(
+      learning::resolve_learner({"random", nlohmann::json::object()}), setup);
+  EXPECT_TRUE(random->best_forecasts(5).empty());
+  EXPECT_TRUE(learning::forecasts("prior"));
+  EXPECT_FALSE(learning::forecasts("annealing"));
 }
 
 // With windows walked in order a trial measures the landscape's first windows, the same at every

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -309,6 +310,43 @@ TEST(Replay, ScreenshotShowsTheRobotWithItsFailedLegInRed) {
   fs::remove_all(dir);
 }
 
+// A model-based learner's trials show its forecast of E in the trial table, as the run recorded
+// it (docs/learning.md "Inside the model"); the annealing's table has no such column.
+TEST(Replay, AModelLearnersTrialTableShowsItsForecasts) {
+  const fs::path dir = make_temp_dir("replay-forecast-");
+  const fs::path page = dir / "learn.html";
+  const CliResult r = run_cli(
+      "learn --mode paper --disable R1 --seed 1 --learner bayes "
+      "--max-trials 3 --json --replay " +
+      page.string());
+  ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 3) << r.err;
+  const json trace = json::parse(r.out).at("trace");
+  ASSERT_FALSE(trace.empty());
+  std::vector<std::string> console;
+  const json result =
+      probe_page(page, std::string(kStateProbe) + ",header:r.trialHeader()};", console);
+  expect_clean(result, console);
+  const json& header = result.at("header");
+  const auto column = std::find(header.begin(), header.end(), "predicted (deg) [band]");
+  ASSERT_NE(column, header.end()) << header.dump();
+  const auto at = static_cast<std::size_t>(column - header.begin());
+  ASSERT_EQ(result.at("trials").size(), trace.size());
+  for (std::size_t t = 0; t < trace.size(); ++t) {
+    const std::string cell = result.at("trials")[t].at("cells")[at];
+    double e = 0.0;
+    double low = 0.0;
+    double high = 0.0;
+    ASSERT_EQ(std::sscanf(cell.c_str(), "%lf [%lf, %lf]", &e, &low, &high), 3) << cell;
+    EXPECT_NEAR(e, trace[t].at("predicted_e_deg").get<double>(), 0.005) << cell;
+    EXPECT_NEAR(low, trace[t].at("predicted_e_low_deg").get<double>(), 0.005) << cell;
+    EXPECT_NEAR(high, trace[t].at("predicted_e_high_deg").get<double>(), 0.005) << cell;
+  }
+  // The saved run replays with its forecasts.
+  write_text(dir / "learn.json", r.out);
+  expect_same_replay(dir / "learn.json", page);
+  fs::remove_all(dir);
+}
+
 TEST(Replay, LearningTimelineHoldsEveryEventOfTheRun) {
   const fs::path dir = make_temp_dir("replay-learn-");
   const fs::path page = dir / "learn.html";
@@ -319,8 +357,13 @@ TEST(Replay, LearningTimelineHoldsEveryEventOfTheRun) {
   write_text(dir / "learn.json", r.out);
 
   std::vector<std::string> console;
-  const json result = probe_page(page, std::string(kStateProbe) + "};", console);
+  const json result =
+      probe_page(page, std::string(kStateProbe) + ",header:r.trialHeader()};", console);
   expect_clean(result, console);
+  // The annealing has no model: no forecast column.
+  for (const json& th : result.at("header")) {
+    EXPECT_EQ(th.get<std::string>().find("predicted"), std::string::npos) << th;
+  }
   const json& events = result.at("events");
   const json& trace = learned.at("trace");
   // The fault, the detection, each trial, the end of the episode.

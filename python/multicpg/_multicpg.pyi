@@ -247,8 +247,10 @@ def learn(robot: Union[Robot, str] = "hexapod", *, terrain: Union[None, "Terrain
           step_budget: int = 1000000, seed: int = 1,
           record: bool = False, hardware: Optional[PathLike] = None, lock_step: bool = False,
           observer: Observer = None, progress: Progress = True) -> Dict[str, Any]:
-    """`multicpg learn`: the dict of `learn --json` plus trace_arrays (and path); with hardware,
-    on the real robot of that hardware file (its hardware record under 'hardware')."""
+    """`multicpg learn`: the dict of `learn --json` plus trace_arrays (a model-based learner's
+    forecast of each trial among them: predicted_e_deg, ...), model_arrays for a model-based
+    learner (its map after the last trial) and path; with hardware, on the real robot of that
+    hardware file (its hardware record under 'hardware')."""
 
 def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disable_at: int = 0,
            faults: Faults = None, recoveries: Faults = None, periods: Optional[Periods] = None, learn: bool = False, max_steps: int = 12000,
@@ -264,8 +266,9 @@ def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disabl
            hardware: Optional[PathLike] = None, lock_step: bool = False,
            observer: Observer = None, progress: Progress = True,
            scale_tunnel: bool = False) -> Dict[str, Any]:
-    """`multicpg tunnel`: the dict of `tunnel --json` plus path (and trace_arrays); with
-    hardware, on the real robot of that hardware file (no path)."""
+    """`multicpg tunnel`: the dict of `tunnel --json` plus path (and trace_arrays, and
+    model_arrays for a model-based learner); with hardware, on the real robot of that hardware
+    file (no path)."""
 
 class Annealer:
     """The simulated annealing of paper §3, one call per step."""

@@ -50,6 +50,40 @@ def test_learn_chooses_the_learner_as_the_cli_does():
     assert py["trace"] == cli["trace"]
 
 
+def test_a_model_learners_forecasts_come_as_arrays():
+    # Each trial's forecast (docs/learning.md "Inside the model") as an array from trial 0, which
+    # has none; the model's map after the last trial as model_arrays, best first.
+    result = multicpg.learn(disable="R1", mode="paper", seed=3, max_trials=3, learner="bayes",
+                            progress=False)
+    arrays = result["trace_arrays"]
+    for key in ("predicted_e_deg", "predicted_e_low_deg", "predicted_e_high_deg",
+                "predicted_yaw_deg", "predicted_yaw_sd_deg", "predicted_path_deg",
+                "predicted_hold", "may_hold", "untried"):
+        assert np.isnan(arrays[key][0]), key
+        assert list(arrays[key][1:]) == [t[key] for t in result["trace"]], key
+    # Paper mode has no reflex: no effort forecast.
+    assert np.all(np.isnan(arrays["predicted_effort_deg"]))
+    assert np.all(arrays["predicted_e_low_deg"][1:] < arrays["predicted_e_deg"][1:])
+    assert np.all(arrays["predicted_e_deg"][1:] < arrays["predicted_e_high_deg"][1:])
+    model = result["model_arrays"]
+    rows = len(model["hold"])
+    assert rows == 20
+    assert model["periods"].shape == (rows, 6)
+    assert np.all(model["periods"][:, 0] == 4)  # R1 failed: its period never changes
+    assert np.all(np.diff(model["hold"]) <= 0)
+    assert model["tried"].dtype == np.bool_
+    assert np.all(model["e_low_deg"] < model["e_deg"]) and np.all(model["e_deg"] < model["e_high_deg"])
+    tried = {tuple(t["periods"][leg] for leg in ("R1", "R2", "R3", "L1", "L2", "L3"))
+             for t in result["trace"]}
+    for periods, walked in zip(model["periods"], model["tried"]):
+        if tuple(periods) in tried:
+            assert walked
+    # The annealing has no model.
+    plain = multicpg.learn(disable="R1", mode="paper", seed=3, max_trials=1, progress=False)
+    assert "model_arrays" not in plain
+    assert "predicted_e_deg" not in plain["trace_arrays"]
+
+
 def test_trace_arrays_start_at_trial_0_as_the_cli_and_fig_8():
     result = multicpg.learn(disable="R1", mode="paper", seed=5, max_trials=3, progress=False)
     arrays = result["trace_arrays"]

@@ -5,7 +5,8 @@
 # Variables: path (series = path | wall | course, x_m, y_m, y_low_m, y_high_m: the body's lateral
 # reach; blocks separated by blank lines), has_walls, has_course, has_span, marks (kind = fault |
 # detection | learned, label, x_m, y_m, step), has_marks, n_fault, n_detection, n_learned, trace
-# (trial, deviation_deg, accepted, reference_deg), has_trace, trace_note (non-empty: written
+# (trial, deviation_deg, accepted, reference_deg; with has_predicted also predicted_deg,
+# predicted_low_deg, predicted_high_deg: a model's forecast), has_trace, trace_note (non-empty: written
 # instead of the trace), threshold (degrees), gait (leg, row, stance_start_step,
 # stance_end_step), legs (names, space-separated, top to bottom), first_step, last_step, title,
 # subtitle (a second line, may be empty).
@@ -34,7 +35,10 @@ plot @band @walls @course \
      path using (is('path') ? column('x_m') : NaN):'y_m' with lines lw 2.5 lc rgb blue title 'trunk', \
      path using (is('path') ? column('x_m') : NaN):'y_m' every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'start' @events
 
-# The learning trace: each trial's deviation, kept or rejected, E_ref and the threshold.
+# The learning trace: each trial's deviation, kept or rejected, E_ref and the threshold; a
+# model's forecast of each trial's E a little left of the measured E it forecast (a macro, set
+# outside the block that uses it: gnuplot expands a block's macros before running it).
+predicted = has_predicted ? "trace using (column('trial') - 0.25):'predicted_deg':'predicted_low_deg':'predicted_high_deg' with yerrorbars pt 6 ps 1 lw 1.5 lc rgb blue title 'predicted E (median, band)', " : ""
 set size noratio
 set offsets 0.5, 0.5, graph 0.1, graph 0.05
 if (has_trace && trace_note ne '') {
@@ -66,6 +70,7 @@ if (has_trace && trace_note eq '') {
   set ylabel 'deviation (degrees)'
   set title 'Learning trace'
   plot threshold with lines lw 2 dt 2 lc rgb 'black' title sprintf('threshold %g°', threshold), \
+       @predicted \
        trace using 'trial':'reference_deg' with steps lw 2 lc rgb grey title 'E_{ref} (kept combination)', \
        trace using 'trial':(column('accepted') == 1 ? column('deviation_deg') : NaN) with points pt 7 ps 1.3 lc rgb green title 'kept', \
        trace using 'trial':(column('accepted') == 0 ? column('deviation_deg') : NaN) with points pt 2 ps 1.5 lw 2 lc rgb red title 'rejected'

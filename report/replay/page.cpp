@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string_view>
 
 #include "body/fault_spec.h"
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/table.h"
+#include "learning/model_learner.h"
 #include "report/replay/assets.h"
 #include "robot/leg_sets.h"
 
@@ -202,6 +204,12 @@ json event_json(const robot::Morphology& morph, const body::Event& e) {
       j["periods"] = e.periods;
       j["deviation_deg"] = e.deviation_deg;
       j["accepted"] = e.accepted;
+      // A model-based learner's forecast of the trial's E (docs/learning.md "Inside the model").
+      if (const std::optional<learning::ForecastE> f = learning::forecast_e(e.details)) {
+        j["predicted_e_deg"] = f->deg;
+        j["predicted_e_low_deg"] = f->low_deg;
+        j["predicted_e_high_deg"] = f->high_deg;
+      }
       break;
   }
   return j;

@@ -597,13 +597,17 @@ const trialRows = [];
   if (trials.length === 0) return;
   $('trials-section').hidden = false;
   const table = $('trials');
+  // A model-based learner's forecast of each trial's E: median and band (docs/learning.md
+  // "Inside the model").
+  const predicted = trials.some((t) => 'predicted_e_deg' in t.end);
   const head = document.createElement('tr');
+  const numeric = ['deviation (deg)'].concat(predicted ? ['predicted (deg) [band]'] : []);
   ['episode', 'trial']
-      .concat(morphLegs, ['deviation (deg)', 'decision', 'steps'])
+      .concat(morphLegs, numeric, ['decision', 'steps'])
       .forEach((t, i) => {
         const th = document.createElement('th');
         th.textContent = t;
-        if (i >= morphLegs.length + 3) th.className = 'left';
+        if (i >= morphLegs.length + 2 + numeric.length) th.className = 'left';
         head.appendChild(th);
       });
   table.appendChild(head);
@@ -624,6 +628,12 @@ const trialRows = [];
             failed.has(morphLegs[i]) ? p + ' \u00d7' : p,
             failed.has(morphLegs[i]) ? 'disabled' : ''));
     cell(fmt(t.end.deviation_deg, 2));
+    if (predicted) {
+      cell('predicted_e_deg' in t.end ?
+               fmt(t.end.predicted_e_deg, 2) + ' [' + fmt(t.end.predicted_e_low_deg, 2) + ', ' +
+                   fmt(t.end.predicted_e_high_deg, 2) + ']' :
+               '');
+    }
     cell(t.end.accepted ? 'kept' : 'rejected', 'left');
     const link = document.createElement('a');
     link.href = '#step=' + t.start.step;
@@ -867,7 +877,14 @@ window.multicpgReplay = {
   },
   // The timeline's markers as the page drew them.
   events: () => Array.from(markers.children).map((m) => Object.assign({}, m.dataset)),
-  trials: () => trialRows.map(({trial}) => ({start: trial.start.step, end: trial.end.step})),
+  // Each trial's steps and its row's cells as the table shows them.
+  trials: () => trialRows.map(({tr, trial}) => ({
+                                start: trial.start.step,
+                                end: trial.end.step,
+                                cells: Array.from(tr.children).map((td) => td.textContent),
+                              })),
+  trialHeader: () =>
+      Array.from($('trials').querySelector('tr').children).map((th) => th.textContent),
   contact: (step, leg) => contact(rowOf(step), legs.indexOf(leg)),
   seek,
   currentStep: () => current,
