@@ -632,7 +632,7 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
   learning::LearnerSetup setup;
   setup.robot = robot::RobotKind::quadruped;
   setup.start.assign(4, learning::kStartPeriod);
-  setup.fixed = {kR2};
+  setup.told = learning::ToldFault::legs({kR2});
   setup.criterion = learning::reflex_criterion(learning::kDefaultThresholdDeg, 0.75);
   setup.start_windows = made_up_windows(setup.start);
   setup.start_deviation_deg = setup.criterion.error(setup.start_windows.front());
@@ -653,7 +653,8 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
     const std::unique_ptr<learning::Learner> learner =
         with_prior ? std::make_unique<learning::ModelLearner>(setup, params, prior_mean)
                    : learning::make_learner(
-                         learning::resolve_learner({"bayes", nlohmann::json::object()}), setup);
+                         learning::resolve_learner({"bayes", nlohmann::json::object()}), setup,
+                         learning::LearnerData{});
     std::vector<std::pair<std::size_t, body::WindowMeasure>> told;
     for (const body::WindowMeasure& w : setup.start_windows) {
       told.emplace_back(*space.index(setup.start), w);
@@ -738,7 +739,8 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
   }
   // A learner without a model has no forecast.
   const std::unique_ptr<learning::Learner> random = learning::make_learner(
-      learning::resolve_learner({"random", nlohmann::json::object()}), setup);
+      learning::resolve_learner({"random", nlohmann::json::object()}), setup,
+      learning::LearnerData{});
   EXPECT_TRUE(random->best_forecasts(5).empty());
   EXPECT_TRUE(learning::forecasts("prior"));
   EXPECT_FALSE(learning::forecasts("annealing"));

@@ -123,7 +123,7 @@ def test_a_drifting_yaw_sensor_reads_the_same_from_the_cli_python_and_an_experim
     assert straight.walk_window(400)["yaw_deg"] != windows[0]["yaw_deg"], "the drift is read"
 
     # An experiment file's run and the same run from the CLI and Python (bayes draws nothing, so
-    # the experiment's seed of its own is no matter).
+    # the experiment's seed of its own is no matter; one episode: the drift never lets it hold).
     experiment = tmp_path / "drift.toml"
     experiment.write_text('''robot = "hexapod"
 scenarios = [{ name = "R1+R3-drift", faults = [{ step = 0, legs = ["R1", "R3"] },
@@ -134,6 +134,7 @@ seed = 1
 [learning]
 learner = { name = "bayes" }
 monitor_windows = 2
+max_episodes = 1
 
 [learning.annealing]
 max_trials = 3
@@ -143,9 +144,9 @@ max_trials = 3
     assert len(runs) == 1
     run = json.loads(runs[0].read_text())
     cli = cli_json("learn", "--disable", "R1,R3", "--fault", drift, "--learner", "bayes",
-                   "--max-trials", "3", "--monitor-windows", "2")
+                   "--max-trials", "3", "--monitor-windows", "2", "--max-episodes", "1")
     mine = multicpg.learn(disable="R1,R3", faults=[drift], learner="bayes", max_trials=3,
-                          monitor_windows=2, progress=False)
+                          monitor_windows=2, max_episodes=1, progress=False)
     assert cli["trace"], "the drift makes the robot learn"
     assert mine["trace"] == cli["trace"]
     assert mine["final_windows"] == cli["final_windows"]
