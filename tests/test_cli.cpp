@@ -143,7 +143,7 @@ TEST(Cli, OnePrefixPerMessage) {
   EXPECT_EQ(run_cli("walk --terrain slope:31").err,
             "multicpg: --terrain: the slope must be in 0..30 deg, got 31\n");
   EXPECT_EQ(run_cli("walk --robot /nonexistent/robot.toml").err,
-            "multicpg: /nonexistent/robot.toml: cannot read: No such file or directory\n");
+            "multicpg: /nonexistent/robot.toml: cannot read (No such file or directory)\n");
 }
 
 // A flag that does nothing without another, or contradicts it, is refused (exit 2), never
