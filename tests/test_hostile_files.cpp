@@ -358,6 +358,21 @@ TEST(HostileFiles, TheLimitsThemselvesAreAccepted) {
 // given to replay (a result, or an experiment's run file) and landscape --learned are refused,
 // naming the file, when they are a FIFO (without waiting for a writer) or a device (without
 // reading it).
+// Each command (its words split at spaces) ends at once with exit 2 and exactly "multicpg: LINE".
+void expect_refused_without_waiting(const std::vector<std::pair<std::string, std::string>>& cases) {
+  for (const auto& [args, line] : cases) {
+    SCOPED_TRACE(args);
+    std::vector<std::string> words;
+    std::istringstream split(args);
+    for (std::string w; split >> w;) words.push_back(w);
+    CliProcess cli(words);
+    ASSERT_TRUE(cli.wait(kHangGuard)) << "hangs";
+    EXPECT_EQ(cli.exit_code(), 2) << cli.err();
+    EXPECT_EQ(cli.err(), "multicpg: " + line + "\n");
+    EXPECT_EQ(cli.out(), "");
+  }
+}
+
 TEST(HostileFiles, RunFilesAndLearnedCombinationsMustBeRegularFiles) {
   const std::string dir = make_temp_dir("multicpg-hostile-runs-");
   const std::string fifo = dir + "/fifo.json";
@@ -369,23 +384,13 @@ TEST(HostileFiles, RunFilesAndLearnedCombinationsMustBeRegularFiles) {
   ASSERT_EQ(::mkfifo(run_fifo.c_str(), 0600), 0);
   const std::string html = " --out " + dir + "/replay.html";
   const std::string landscape = "landscape --disable R1 --windows 1 --out " + dir + "/l --learned ";
-  for (const auto& [args, line] : std::vector<std::pair<std::string, std::string>>{
+  expect_refused_without_waiting(std::vector<std::pair<std::string, std::string>>{
            {"replay " + fifo + html, fifo + ": is a FIFO, not a file"},
            {"replay /dev/zero" + html, "/dev/zero: is a device, not a file"},
            {"replay " + run_fifo + html, run_fifo + ": is a FIFO, not a file"},
            {landscape + fifo, "--learned: " + fifo + ": is a FIFO, not a file"},
            {landscape + "/dev/zero", "--learned: /dev/zero: is a device, not a file"},
-       }) {
-    SCOPED_TRACE(args);
-    std::vector<std::string> words;
-    std::istringstream split(args);
-    for (std::string w; split >> w;) words.push_back(w);
-    CliProcess cli(words);
-    ASSERT_TRUE(cli.wait(kHangGuard)) << "hangs";
-    EXPECT_EQ(cli.exit_code(), 2) << cli.err();
-    EXPECT_EQ(cli.err(), "multicpg: " + line + "\n");
-    EXPECT_EQ(cli.out(), "");
-  }
+       });
   EXPECT_FALSE(fs::exists(dir + "/replay.html"));
   fs::remove_all(dir);
 }
@@ -406,23 +411,13 @@ TEST(HostileFiles, RobotFilesAndTheirModelsMustBeRegularFiles) {
   toml.replace(toml.find(model), model.size(), "model = \"fifo.xml\"");
   std::ofstream(dir + "/robot.toml") << toml;
   ASSERT_EQ(::mkfifo((dir + "/fifo.xml").c_str(), 0600), 0);
-  for (const auto& [args, line] : std::vector<std::pair<std::string, std::string>>{
+  expect_refused_without_waiting(std::vector<std::pair<std::string, std::string>>{
            {"model --check " + fifo, fifo + ": is a FIFO, not a file"},
            {"walk --robot " + dir + "/folder.toml",
             dir + "/folder.toml: is a directory, not a file"},
            {"model --check " + dir + "/robot.toml",
             dir + "/robot.toml: model: " + dir + "/fifo.xml: is a FIFO, not a file"},
-       }) {
-    SCOPED_TRACE(args);
-    std::vector<std::string> words;
-    std::istringstream split(args);
-    for (std::string w; split >> w;) words.push_back(w);
-    CliProcess cli(words);
-    ASSERT_TRUE(cli.wait(kHangGuard)) << "hangs";
-    EXPECT_EQ(cli.exit_code(), 2) << cli.err();
-    EXPECT_EQ(cli.err(), "multicpg: " + line + "\n");
-    EXPECT_EQ(cli.out(), "");
-  }
+       });
   fs::remove_all(dir);
 }
 
