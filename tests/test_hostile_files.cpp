@@ -385,12 +385,12 @@ TEST(HostileFiles, RunFilesAndLearnedCombinationsMustBeRegularFiles) {
   const std::string html = " --out " + dir + "/replay.html";
   const std::string landscape = "landscape --disable R1 --windows 1 --out " + dir + "/l --learned ";
   expect_refused_without_waiting(std::vector<std::pair<std::string, std::string>>{
-           {"replay " + fifo + html, fifo + ": is a FIFO, not a file"},
-           {"replay /dev/zero" + html, "/dev/zero: is a device, not a file"},
-           {"replay " + run_fifo + html, run_fifo + ": is a FIFO, not a file"},
-           {landscape + fifo, "--learned: " + fifo + ": is a FIFO, not a file"},
-           {landscape + "/dev/zero", "--learned: /dev/zero: is a device, not a file"},
-       });
+      {"replay " + fifo + html, fifo + ": is a FIFO, not a file"},
+      {"replay /dev/zero" + html, "/dev/zero: is a device, not a file"},
+      {"replay " + run_fifo + html, run_fifo + ": is a FIFO, not a file"},
+      {landscape + fifo, "--learned: " + fifo + ": is a FIFO, not a file"},
+      {landscape + "/dev/zero", "--learned: /dev/zero: is a device, not a file"},
+  });
   EXPECT_FALSE(fs::exists(dir + "/replay.html"));
   fs::remove_all(dir);
 }
@@ -412,12 +412,11 @@ TEST(HostileFiles, RobotFilesAndTheirModelsMustBeRegularFiles) {
   std::ofstream(dir + "/robot.toml") << toml;
   ASSERT_EQ(::mkfifo((dir + "/fifo.xml").c_str(), 0600), 0);
   expect_refused_without_waiting(std::vector<std::pair<std::string, std::string>>{
-           {"model --check " + fifo, fifo + ": is a FIFO, not a file"},
-           {"walk --robot " + dir + "/folder.toml",
-            dir + "/folder.toml: is a directory, not a file"},
-           {"model --check " + dir + "/robot.toml",
-            dir + "/robot.toml: model: " + dir + "/fifo.xml: is a FIFO, not a file"},
-       });
+      {"model --check " + fifo, fifo + ": is a FIFO, not a file"},
+      {"walk --robot " + dir + "/folder.toml", dir + "/folder.toml: is a directory, not a file"},
+      {"model --check " + dir + "/robot.toml",
+       dir + "/robot.toml: model: " + dir + "/fifo.xml: is a FIFO, not a file"},
+  });
   fs::remove_all(dir);
 }
 

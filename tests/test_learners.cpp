@@ -651,10 +651,10 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
   for (const bool with_prior : {false, true}) {
     SCOPED_TRACE(with_prior ? "a prior mean" : "bayes");
     const std::unique_ptr<learning::Learner> learner =
-        with_prior ? std::make_unique<learning::ModelLearner>(setup, params, prior_mean)
-                   : learning::make_learner(
-                         learning::resolve_learner({"bayes", nlohmann::json::object()}), setup,
-                         learning::LearnerData{});
+        with_prior
+            ? std::make_unique<learning::ModelLearner>(setup, params, prior_mean)
+            : learning::make_learner(learning::resolve_learner({"bayes", nlohmann::json::object()}),
+                                     setup, learning::LearnerData{});
     std::vector<std::pair<std::size_t, body::WindowMeasure>> told;
     for (const body::WindowMeasure& w : setup.start_windows) {
       told.emplace_back(*space.index(setup.start), w);
@@ -738,9 +738,9 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
     }
   }
   // A learner without a model has no forecast.
-  const std::unique_ptr<learning::Learner> random = learning::make_learner(
-      learning::resolve_learner({"random", nlohmann::json::object()}), setup,
-      learning::LearnerData{});
+  const std::unique_ptr<learning::Learner> random =
+      learning::make_learner(learning::resolve_learner({"random", nlohmann::json::object()}), setup,
+                             learning::LearnerData{});
   EXPECT_TRUE(random->best_forecasts(5).empty());
   EXPECT_TRUE(learning::forecasts("prior"));
   EXPECT_FALSE(learning::forecasts("annealing"));
