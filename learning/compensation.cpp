@@ -317,13 +317,16 @@ class RobustRun {
       const int faults = walk_.take_fault_count();
       if (walk_.take_full_recovery()) {
         resynchronise();
+        memory_.clear();
         monitored = 0;
         result_.final_windows.clear();
         continue;
       }
       if (faults > 0) {
         // The window a fault came in measures the transient, not the controller that walks on:
-        // neither a trigger for learning nor one of the windows after the last fault.
+        // neither a trigger for learning nor one of the windows after the last fault. What
+        // earlier episodes measured was another body's.
+        memory_.clear();
         monitored = 0;
         result_.final_windows.clear();
         continue;
@@ -386,17 +389,19 @@ class RobustRun {
     neural::set_synchronised(body_.controller(), false);  // paper §2.3
     // Episode k > 1 draws from its own stream, so a run's first episode is the seed's.
     const std::uint64_t seed = options_.seed + static_cast<std::uint64_t>(number - 1);
-    const std::unique_ptr<Learner> learner =
-        make_learner(options_.learner,
-                     learner_setup(body_, options_, periods(), walk_.failed_now(), {detecting},
-                                   detection_deg, seed),
-                     data_);
+    LearnerSetup setup = learner_setup(body_, options_, periods(), walk_.failed_now(), {detecting},
+                                       detection_deg, seed);
+    setup.earlier = memory_;
+    const std::unique_ptr<Learner> learner = make_learner(options_.learner, setup, data_);
     walk_.take_fault_count();
+    std::vector<EarlierTrial> walked;
     EpisodeHooks hooks;
     hooks.measure = [&](int trial, const Periods& candidate) {
       emit_trial_start(body_, number, trial, candidate);
-      return budget_.count(
+      Measurement m = budget_.count(
           body_, [&] { return robust_trial(walk_, options_, candidate, options_.hold_windows); });
+      walked.push_back({candidate, m.windows});
+      return m;
     };
     hooks.decided = [&](const TrialRecord& t) {
       body_.emit(trial_end_event(number, t));
@@ -404,6 +409,12 @@ class RobustRun {
       return ep.interrupted || budget_.used_up();
     };
     EpisodeEnd end = run_episode(*learner, hooks);
+    // A fault that came during the episode makes what it walked another body's.
+    if (ep.interrupted) {
+      memory_.clear();
+    } else {
+      memory_.insert(memory_.end(), walked.begin(), walked.end());
+    }
     result_.forecasts = learner->best_forecasts(kBestForecasts);
     if (periods() != end.answer.periods) set(end.answer.periods);
     ep.trials = end.trials;
@@ -456,6 +467,8 @@ class RobustRun {
   CourseWalk walk_;
   Budget budget_;
   LearningResult result_;
+  // What this run's episodes walked since the faults last changed (LearnerSetup::earlier).
+  std::vector<EarlierTrial> memory_;
 };
 
 }  // namespace

@@ -61,6 +61,14 @@ class ToldFault {
   std::vector<std::size_t> failed_;
 };
 
+// A combination an earlier episode of the same run walked under the faults still in force, with
+// the windows it measured (docs/learning.md "Memory across episodes"): in robust mode a
+// combination that held can drift over the threshold later and start another episode.
+struct EarlierTrial {
+  Periods periods;
+  std::vector<body::WindowMeasure> windows;
+};
+
 // What every learner is told when an episode starts.
 struct LearnerSetup {
   robot::RobotKind robot = robot::RobotKind::hexapod;
@@ -76,6 +84,10 @@ struct LearnerSetup {
   // options).
   SearchBounds search;
   std::uint64_t seed = 0;  // every random draw of the episode comes from it
+  // What the run's earlier episodes walked under the same faults, oldest first: the model-based
+  // learners and random search do not walk them again (their windows tell the model), the
+  // annealing and greedy search keep the paper's search from C0 (docs/learning.md).
+  std::vector<EarlierTrial> earlier;
 
   // The legs whose period may change, in morphology order: every leg but the ones it is told
   // failed.

@@ -45,6 +45,12 @@ ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& 
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
   for (const body::WindowMeasure& w : setup.start_windows) model_.observe(start, outputs(w));
+  for (const EarlierTrial& t : setup.earlier) {
+    const std::optional<std::size_t> c = space_.index(t.periods);
+    if (!c) continue;  // a combination outside this episode's space tells it nothing
+    tried_[*c] = true;
+    for (const body::WindowMeasure& w : t.windows) model_.observe(*c, outputs(w));
+  }
 }
 
 WindowOutputs ModelLearner::outputs(const body::WindowMeasure& w) const {

@@ -1,7 +1,8 @@
 // Random search without replacement: each trial a combination drawn uniformly from those not yet
-// tried (the paper's beta = 0 draws from one-leg changes only; this draws from the whole space).
-// The baseline every other learner must beat: its expected trials to the first holding
-// combination are (N + 1) / (K + 1) for K holding among N (docs/learning.md "Learners").
+// tried, in this episode or an earlier one of the run (the paper's beta = 0 draws from one-leg
+// changes only; this draws from the whole space). The baseline every other learner must beat: its
+// expected trials to the first holding combination are (N + 1) / (K + 1) for K holding among N
+// (docs/learning.md "Learners").
 #include <memory>
 #include <random>
 #include <vector>
@@ -18,6 +19,14 @@ class RandomSearch final : public Learner {
   explicit RandomSearch(const LearnerSetup& setup)
       : space_(setup), tried_(space_.size(), false), untried_(space_.size() - 1), best_(setup) {
     tried_[*space_.index(setup.start)] = true;
+    // What earlier episodes of the run walked is not drawn again.
+    for (const EarlierTrial& t : setup.earlier) {
+      const std::optional<std::size_t> c = space_.index(t.periods);
+      if (c && !tried_[*c]) {
+        tried_[*c] = true;
+        --untried_;
+      }
+    }
     rng_.seed(setup.seed);
   }
 

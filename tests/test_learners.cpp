@@ -335,6 +335,55 @@ TEST_F(Dataset, EveryLearnerTriesEachCombinationOnceWhenNoneHolds) {
   }
 }
 
+// What a run's earlier episodes walked (LearnerSetup::earlier) the learners that remember do not
+// walk again, and the models are told its windows (docs/learning.md "Memory across episodes").
+TEST_F(Dataset, TheLearnersThatRememberDoNotWalkAnEarlierEpisodesCombinationsAgain) {
+  // R1+R2 lost: 25 combinations of L1 and L2, none holding; the start (4, 4) is walked already.
+  const ScenarioLandscape& s = *data_.find({0, 1});
+  const auto windows = [&](const Periods& p) { return s.points[*s.find(p)].windows; };
+  learning::LearnerSetup setup;
+  setup.robot = robot::RobotKind::quadruped;
+  setup.start.assign(4, learning::kStartPeriod);
+  setup.told = learning::ToldFault::legs({0, 1});
+  setup.start_windows = {windows(setup.start).front()};
+  setup.start_deviation_deg = setup.criterion.error(setup.start_windows.front());
+  setup.search = search(100);
+  setup.seed = 5;
+  // Ten combinations an earlier episode walked.
+  std::set<Periods> earlier;
+  for (int l1 : {5, 6}) {
+    for (int l2 : kPeriodSet) {
+      const Periods p{4, 4, l1, l2};
+      setup.earlier.push_back({p, windows(p)});
+      earlier.insert(p);
+    }
+  }
+  for (const std::string name : {"random", "bayes", "prior"}) {
+    SCOPED_TRACE(name);
+    const LearnerChoice c = learning::resolve_learner(choice(name));
+    const std::unique_ptr<learning::Learner> learner =
+        learning::make_learner(c, setup, learning::learner_data(c, setup.robot, setup.criterion));
+    std::set<Periods> tried;
+    while (learner->stop() == StopReason::running) {
+      const std::optional<Periods> p = learner->propose();
+      if (!p) break;
+      EXPECT_EQ(earlier.count(*p), 0u) << "walked again";
+      tried.insert(*p);
+      double e = 0.0;
+      for (const body::WindowMeasure& w : windows(*p)) e = std::max(e, setup.criterion.error(w));
+      learner->observe({e, windows(*p)});
+    }
+    EXPECT_EQ(learner->stop(), StopReason::space_exhausted);
+    EXPECT_EQ(tried.size(), 24u - earlier.size());
+  }
+  // The model is told the earlier windows: its first pick differs from a model without them.
+  const LearnerChoice bayes = learning::resolve_learner(choice("bayes"));
+  learning::LearnerSetup forgetful = setup;
+  forgetful.earlier.clear();
+  EXPECT_NE(learning::make_learner(bayes, setup, {})->propose(),
+            learning::make_learner(bayes, forgetful, {})->propose());
+}
+
 TEST_F(Dataset, ModelsFindTheHoldingCombinationsSoonerThanChance) {
   // L2 lost: 2 of 125 combinations hold, so chance needs (N+1)/(K+1) = 41.7 trials on average.
   const ScenarioLandscape& s = *data_.find({kL2});
