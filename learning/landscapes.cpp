@@ -1,7 +1,5 @@
 #include "learning/landscapes.h"
 
-#include <dlfcn.h>
-#include <sys/auxv.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -17,6 +15,7 @@
 #include "common/checksum.h"
 #include "common/errors.h"
 #include "common/input_file.h"
+#include "common/installed_data.h"
 #include "learning/compensation.h"
 #include "learning/json.h"
 #include "robot/leg_sets.h"
@@ -61,36 +60,12 @@ fs::path manifest_path(const fs::path& stem) {
 
 // The datasets' folder in each directory of the search path (data/landscapes in the source tree).
 constexpr const char* kLandscapesDir = "landscapes";
-// Installed beside the running code: the Python package multicpg/ holds the module's shared
-// library and data/ (setup.py); an installed program is <prefix>/bin/multicpg with its data in
-// <prefix>/share/multicpg (apps/CMakeLists.txt), as its gnuplot scripts are.
-constexpr const char* kPackageData = "data";
-constexpr const char* kInstalledData = "../share/multicpg";
 
 // $MULTICPG_DATA, unless unset or empty.
 std::optional<fs::path> data_env() {
   const char* given = std::getenv(kDataEnv);
   if (given == nullptr || *given == '\0') return std::nullopt;
   return fs::path(given);
-}
-
-// The data directory installed beside the code running this, or nothing when it cannot tell.
-// dladdr names the object holding `anchor`: the Python module's shared library, or the program
-// itself when that object also holds the program's headers (AT_PHDR); a program's name as dladdr
-// gives it is argv[0], so its path is read from /proc/self/exe instead.
-fs::path installed_data_dir() {
-  static const int anchor = 0;
-  Dl_info code{};
-  if (dladdr(&anchor, &code) == 0 || code.dli_fname == nullptr) return {};
-  Dl_info program{};
-  const void* headers = reinterpret_cast<const void*>(getauxval(AT_PHDR));
-  if (dladdr(headers, &program) == 0 || program.dli_fbase != code.dli_fbase) {
-    return fs::path(code.dli_fname).parent_path() / kPackageData;
-  }
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
-  return (exe.parent_path() / kInstalledData).lexically_normal();
 }
 
 std::string rounded(double v, double resolution, int decimals) {

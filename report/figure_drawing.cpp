@@ -7,6 +7,7 @@
 
 #include "common/atomic_file.h"
 #include "common/errors.h"
+#include "common/installed_data.h"
 #include "report/subprocess.h"
 
 namespace multicpg::report::drawing {
@@ -16,8 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kGnuplot = "gnuplot";
-// Installed layout: <prefix>/bin/multicpg and <prefix>/share/multicpg/gnuplot.
-constexpr const char* kInstalledScripts = "../share/multicpg/gnuplot";
+// Installed in <prefix>/share/multicpg/gnuplot (common/installed_data.h).
+constexpr const char* kInstalledScripts = "gnuplot";
 
 std::string temp_name(const fs::path& path) {
   return path.string() + ".tmp" + std::to_string(::getpid());
@@ -34,10 +35,8 @@ std::string gp_string(std::string_view text) {
 fs::path scripts_dir() {
   const fs::path source(MULTICPG_GNUPLOT_SOURCE_DIR);
   if (fs::is_directory(source)) return source;
-  std::error_code ec;
-  const fs::path installed =
-      fs::read_symlink("/proc/self/exe", ec).parent_path() / kInstalledScripts;
-  if (!ec && fs::is_directory(installed)) return installed.lexically_normal();
+  const fs::path data = program_data_dir();
+  if (!data.empty() && fs::is_directory(data / kInstalledScripts)) return data / kInstalledScripts;
   throw RuntimeFailure("gnuplot scripts not found in " + source.string() +
                        " nor next to the program");
 }

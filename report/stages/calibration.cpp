@@ -12,6 +12,7 @@
 #include "common/atomic_file.h"
 #include "common/errors.h"
 #include "common/input_file.h"
+#include "common/installed_data.h"
 #include "common/table.h"
 #include "experiments/paper.h"
 #include "report/stages/stage.h"
@@ -24,15 +25,14 @@ namespace {
 namespace fs = std::filesystem;
 namespace paper = experiments::paper;
 
-// Installed layout: <prefix>/bin/multicpg and <prefix>/share/multicpg/calibration.
-constexpr const char* kInstalledData = "../share/multicpg/calibration";
+// Installed in <prefix>/share/multicpg/calibration (common/installed_data.h).
+constexpr const char* kInstalledData = "calibration";
 
 fs::path calibration_dir() {
   const fs::path source(MULTICPG_CALIBRATION_SOURCE_DIR);
   if (fs::is_directory(source)) return source;
-  std::error_code ec;
-  const fs::path installed = fs::read_symlink("/proc/self/exe", ec).parent_path() / kInstalledData;
-  if (!ec && fs::is_directory(installed)) return installed.lexically_normal();
+  const fs::path data = program_data_dir();
+  if (!data.empty() && fs::is_directory(data / kInstalledData)) return data / kInstalledData;
   throw RuntimeFailure("calibration data not found in " + source.string() +
                        " nor next to the program");
 }
