@@ -138,7 +138,7 @@ void run_learn(const LearnOptions& o) {
     return;
   }
   print_learning_end(std::cout, spec, r);
-  if (setup) std::cout << hardware_summary(run.hardware) << "\n";
+  if (setup) std::cout << hw::hardware_summary(run.hardware) << "\n";
   if (!o.out.empty()) {
     std::cout << "wrote " << o.out << "/{learning.json,trace.csv," << steps_file << "}\n";
   }

@@ -20,6 +20,7 @@
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
 #include "experiments/tunnel.h"
+#include "hw/hardware_record.h"
 #include "report/film.h"
 #include "robot/leg_sets.h"
 
@@ -140,7 +141,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
     std::cout << result << " (" << run.steps << " steps, yaw change " << run.yaw_change_deg
               << "°, + = left)\n";
   }
-  if (setup) std::cout << hardware_summary(run.hardware) << "\n";
+  if (setup) std::cout << hw::hardware_summary(run.hardware) << "\n";
   if (!o.video.empty()) std::cout << "wrote " << o.video << "\n";
   if (!o.replay.empty()) std::cout << "wrote " << o.replay << "\n";
   if (!o.plot.empty()) std::cout << "wrote " << o.plot << "\n";

@@ -86,7 +86,7 @@ void print_summary(std::ostream& out, const experiments::WalkRecord& w,
     out << "\n";
   }
   out << "final yaw " << w.measure.final_yaw_deg << " deg\n";
-  if (!w.hardware.is_null()) out << hardware_summary(w.hardware) << "\n";
+  if (!w.hardware.is_null()) out << hw::hardware_summary(w.hardware) << "\n";
 }
 
 void run_walk(const WalkOptions& o) {

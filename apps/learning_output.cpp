@@ -285,6 +285,10 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
         << degrees(r.initial_deviation_deg) << ")\n";
   }
 
+  if (r.learned_from) {
+    out << "\nthe " << options.learner.name << " learner learned from " << r.learned_from->dataset
+        << " (" << r.learned_from->walked << ")\n";
+  }
   out << "\n" << learning::to_string(r.outcome);
   if (r.detection_step) {
     out << " after " << counted(r.trials, "trial") << ": "

@@ -43,6 +43,27 @@ nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& r
   return json;
 }
 
+RunSpec read_learn_json(const nlohmann::json& saved, const std::string& name,
+                        const sim::SimOptions& sim) {
+  RunSpec spec;
+  spec.robot = field(name, "robot", [&] { return recorded_robot(saved); });
+  spec.robot.sim = sim;
+  const nlohmann::json& recorded = saved.at("options");
+  const learning::CompensationOptions& options = spec.learning.emplace(field(name, "options", [&] {
+    learning::CompensationOptions o;
+    from_json(recorded, o);
+    return o;
+  }));
+  spec.faults = field(name, "options.faults", [&] {
+    return !recorded.at("faults").empty()
+               ? recorded.at("faults").get<body::FaultTimeline>()
+               : body::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
+                               recorded.at("fail_step").get<long>());
+  });
+  spec.start = learning_start(options.mode);
+  return spec;
+}
+
 nlohmann::json walk_json(const WalkRecord& w) {
   const robot::Morphology& morph = morphology(w.spec->robot);
   nlohmann::json faults = nlohmann::json::array();

@@ -26,6 +26,13 @@ nlohmann::json learning_record(const learning::CompensationOptions& options,
 // robot_file), disable_at (the step of the first fault) and the options (learning_record).
 nlohmann::json learn_json(const RunSpec& spec, const learning::LearningResult& result);
 
+// The run a learn_json record describes, to make it again (report/replay/rerun.h): its robot,
+// learning options, faults and start; the simulation options are `sim`. Throws BadInput "NAME:
+// KEY: what" for a bad value (an unknown robot or leg, a robot file that changed since) and
+// nlohmann's exception for a missing or mistyped field.
+RunSpec read_learn_json(const nlohmann::json& saved, const std::string& name,
+                        const sim::SimOptions& sim = {});
+
 // A walk as `walk --json` records it: what was walked and what it measured, on the simulation or
 // a real robot.
 struct WalkRecord {

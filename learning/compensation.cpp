@@ -480,8 +480,11 @@ LearningResult compensate(body::Body& body, const CompensationOptions& options,
   if (body.step_count() != 0) {
     throw std::invalid_argument("compensate: the body must be at its start");
   }
-  if (options.mode == Mode::paper) return compensate_paper(body, options, data);
-  return RobustRun(body, options, data).run();
+  LearningResult result = options.mode == Mode::paper ? compensate_paper(body, options, data)
+                                                      : RobustRun(body, options, data).run();
+  if (data.landscapes)
+    result.learned_from = LearnedFrom{data.source.string(), data.landscapes->walked()};
+  return result;
 }
 
 }  // namespace multicpg::learning

@@ -148,6 +148,15 @@ std::string_view to_string(Outcome outcome);
 Outcome parse_outcome(std::string_view text);         // throws BadInput naming the choices
 StopReason parse_stop_reason(std::string_view text);  // to_string(StopReason)'s names
 
+// What a learner learned from besides its trials (docs/learning.md "A learner's data"): the file
+// of its landscape dataset and how that was walked ("periods alone", "the steering reflex").
+struct LearnedFrom {
+  std::string dataset;
+  std::string walked;
+  bool operator==(const LearnedFrom&) const = default;
+};
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(LearnedFrom, dataset, walked)
+
 struct LearningResult {
   Outcome outcome = Outcome::not_converged;
   bool converged() const { return outcome == Outcome::converged; }
@@ -173,6 +182,7 @@ struct LearningResult {
   // A model-based learner's map after the last trial (its last episode's): the kBestForecasts
   // combinations its model gives the best chance to hold, best first; not recorded in JSON.
   std::vector<Forecast> forecasts;
+  std::optional<LearnedFrom> learned_from;  // empty: the learner learned from its trials alone
 };
 
 // Runs the whole online loop on `body`, which should be walking forward with every client

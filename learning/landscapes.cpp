@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -346,13 +347,25 @@ void write_landscape_dataset(const LandscapeDataset& d, const fs::path& path) {
   write_file_atomic(manifest_path(stem), manifest.dump(kJsonIndent) + "\n");
 }
 
-LandscapeDataset read_landscape_dataset(const fs::path& path) {
+namespace {
+
+std::string read_manifest_file(const fs::path& stem) {
+  return read_input_file(manifest_path(stem), kMaxManifestBytes, kMaxManifestText,
+                         "a landscape manifest");
+}
+
+std::string read_csv_file(const fs::path& stem) {
+  return read_input_file(csv_path(stem), kMaxGzipBytes, kMaxGzipText, "a landscape dataset");
+}
+
+// The dataset of `path` from its files' bytes: the manifest's text, and the CSV's gzip bytes,
+// read here when not given (after the manifest is checked, so a bad manifest is named first).
+LandscapeDataset parse_landscape_dataset(const fs::path& path, const std::string& manifest_text,
+                                         const std::string* csv_gzip) {
   const fs::path stem = stem_of(path);
   const fs::path mpath = manifest_path(stem);
   const fs::path cpath = csv_path(stem);
   const std::string mname = mpath.string();
-  const std::string manifest_text =
-      read_input_file(mpath, kMaxManifestBytes, kMaxManifestText, "a landscape manifest");
   nlohmann::json m;
   try {
     m = nlohmann::json::parse(manifest_text);
@@ -467,8 +480,7 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
     d.scenarios.push_back(std::move(scenario));
   }
 
-  const std::string text =
-      gunzip(read_input_file(cpath, kMaxGzipBytes, kMaxGzipText, "a landscape dataset"), cpath);
+  const std::string text = gunzip(csv_gzip != nullptr ? *csv_gzip : read_csv_file(stem), cpath);
   if (checksum_text(text) != checksum) {
     throw BadInput(cpath.string() + ": does not match its manifest's checksum (edited?)");
   }
@@ -591,6 +603,37 @@ LandscapeDataset read_landscape_dataset(const fs::path& path) {
     }
   }
   return d;
+}
+
+}  // namespace
+
+LandscapeDataset read_landscape_dataset(const fs::path& path) {
+  return parse_landscape_dataset(path, read_manifest_file(stem_of(path)), nullptr);
+}
+
+std::shared_ptr<const LandscapeDataset> read_landscape_dataset_once(const fs::path& path) {
+  const fs::path stem = stem_of(path);
+  const std::string manifest = read_manifest_file(stem);
+  std::string csv;
+  try {
+    csv = read_csv_file(stem);
+  } catch (const BadInput&) {
+    // Named after whatever is wrong with the manifest, as read_landscape_dataset names it.
+    return std::make_shared<const LandscapeDataset>(
+        parse_landscape_dataset(path, manifest, nullptr));
+  }
+  // No manifest holds a NUL (JSON text), so the two files' bytes cannot run together.
+  std::string key = manifest + '\0' + csv;
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const LandscapeDataset>> parsed;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (const auto it = parsed.find(key); it != parsed.end()) return it->second;
+  }
+  auto dataset =
+      std::make_shared<const LandscapeDataset>(parse_landscape_dataset(path, manifest, &csv));
+  const std::lock_guard<std::mutex> lock(mutex);
+  return parsed.emplace(std::move(key), std::move(dataset)).first->second;
 }
 
 }  // namespace multicpg::learning

@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -111,5 +112,12 @@ void write_landscape_dataset(const LandscapeDataset& dataset, const std::filesys
 // that is not a number, a combination missing or repeated, a window not walked where it should
 // have been, holds or worst that its windows contradict.
 LandscapeDataset read_landscape_dataset(const std::filesystem::path& path);
+
+// The same, parsed once per process for each content: a run's data are resolved when its spec is
+// checked and again when it starts, a sweep checks every run's. The key is both files' whole
+// bytes, so an edited or damaged file is read (and refused) anew, never served from memory.
+// Thread-safe.
+std::shared_ptr<const LandscapeDataset> read_landscape_dataset_once(
+    const std::filesystem::path& path);
 
 }  // namespace multicpg::learning

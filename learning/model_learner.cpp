@@ -3,20 +3,25 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
+#include "common/enum_names.h"
 #include "common/errors.h"
 
 namespace multicpg::learning {
 
-std::string_view to_string(Acquisition a) {
-  return a == Acquisition::pi ? "pi" : "ucb";
-}
+namespace {
+
+constexpr auto kAcquisitionNames =
+    enum_names<Acquisition>({{Acquisition::pi, "pi"}, {Acquisition::ucb, "ucb"}});
+
+}  // namespace
 
 Acquisition parse_acquisition(std::string_view text) {
-  if (text == "pi") return Acquisition::pi;
-  if (text == "ucb") return Acquisition::ucb;
-  throw OptionError("acquisition", "must be \"pi\" or \"ucb\", got \"" + std::string(text) + "\"");
+  if (const std::optional<Acquisition> a = kAcquisitionNames.find(text)) return *a;
+  throw OptionError("acquisition", "must be " + kAcquisitionNames.list(" or ") + ", got \"" +
+                                       std::string(text) + "\"");
 }
 
 void validate(const ModelOptions& o) {

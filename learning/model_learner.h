@@ -24,7 +24,6 @@ enum class Acquisition {
   pi,   // probability of improvement past the threshold: that a window of it holds
   ucb,  // lowest confidence bound of the error (upper confidence bound of its negative)
 };
-std::string_view to_string(Acquisition a);
 Acquisition parse_acquisition(std::string_view text);  // throws OptionError("acquisition")
 
 struct ModelLearnerParams {

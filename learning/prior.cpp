@@ -273,7 +273,7 @@ LearnerData prior_data(const nlohmann::json& options, robot::RobotKind robot,
                        const Criterion& criterion) {
   const fs::path path = prior_dataset_path(options.get<PriorOptions>(), robot, criterion);
   LearnerData data;
-  data.landscapes = std::make_shared<const LandscapeDataset>(read_landscape_dataset(path));
+  data.landscapes = read_landscape_dataset_once(path);
   data.source = path;
   data.computed = std::make_shared<PriorMeans>();
   return data;

@@ -45,24 +45,27 @@ nlohmann::json to_json(const LearningResult& result, const robot::Morphology& mo
   for (const TrialRecord& t : result.trace) trace.push_back(trial_json(t, morph));
   nlohmann::json disabled_names = nlohmann::json::array();
   for (std::size_t leg : disabled) disabled_names.push_back(morph.legs.at(leg).name);
-  return {{"converged", result.converged()},
-          {"status", to_string(result.outcome)},
-          {"reason", result.reason ? nlohmann::json(std::string(to_string(*result.reason)))
-                                   : nlohmann::json(nullptr)},
-          {"trials", result.trials},
-          {"initial_deviation_deg", result.initial_deviation_deg},
-          {"final_deviation_deg", result.final_deviation_deg},
-          {"periods", robot::period_map_json(morph, result.periods)},
-          {"disabled", disabled_names},
-          {"steps_walked", result.steps_walked},
-          {"detection_step", result.detection_step ? nlohmann::json(*result.detection_step)
-                                                   : nlohmann::json(nullptr)},
-          {"settle_steps", result.settle_steps},
-          {"mode", to_string(result.mode)},
-          {"episodes", episodes_json(result, morph)},
-          {"final_windows", nlohmann::json(result.final_windows)},
-          {"steering_effort", result.steering_effort},
-          {"trace", trace}};
+  nlohmann::json j{{"converged", result.converged()},
+                   {"status", to_string(result.outcome)},
+                   {"reason", result.reason ? nlohmann::json(std::string(to_string(*result.reason)))
+                                            : nlohmann::json(nullptr)},
+                   {"trials", result.trials},
+                   {"initial_deviation_deg", result.initial_deviation_deg},
+                   {"final_deviation_deg", result.final_deviation_deg},
+                   {"periods", robot::period_map_json(morph, result.periods)},
+                   {"disabled", disabled_names},
+                   {"steps_walked", result.steps_walked},
+                   {"detection_step", result.detection_step ? nlohmann::json(*result.detection_step)
+                                                            : nlohmann::json(nullptr)},
+                   {"settle_steps", result.settle_steps},
+                   {"mode", to_string(result.mode)},
+                   {"episodes", episodes_json(result, morph)},
+                   {"final_windows", nlohmann::json(result.final_windows)},
+                   {"steering_effort", result.steering_effort},
+                   {"trace", trace}};
+  // Only a learner with data of its own records them: the records of the others stay as they were.
+  if (result.learned_from) j["learned_from"] = *result.learned_from;
+  return j;
 }
 
 namespace {
@@ -99,6 +102,7 @@ LearningResult result_from_json(const nlohmann::json& j, const robot::Morphology
     }
     r.final_windows = j.at("final_windows").get<std::vector<body::WindowMeasure>>();
     r.steering_effort = j.at("steering_effort").get<double>();
+    if (j.contains("learned_from")) r.learned_from = j.at("learned_from").get<LearnedFrom>();
     // An experiment may record its runs without their trace ([record] trace = false,
     // docs/experiments.md): such a result reads with an empty trace.
     for (const nlohmann::json& t : j.value("trace", nlohmann::json::array())) {

@@ -13,8 +13,8 @@
 #include <sstream>
 #include <thread>
 
-#include "apps/hardware_output.h"
 #include "apps/learning_output.h"
+#include "hw/hardware_record.h"
 #include "learning/compensation.h"
 #include "tests/cli_runner.h"
 
@@ -46,8 +46,27 @@ TEST(CliLearn, JsonHasTheDocumentedFields) {
     EXPECT_TRUE(t.at("deviation_deg").is_number());
     EXPECT_TRUE(t.at("accepted").is_boolean());
   }
+  EXPECT_FALSE(j.contains("learned_from")) << "the annealing learns from its trials alone";
   // Same seed, same run.
   EXPECT_EQ(run_cli("learn --disable R1,R3,L2 --seed 2 --json").out, r.out);
+}
+
+// The prior says which data it learned from, in the JSON and above the result line.
+TEST(CliLearn, APriorRunSaysWhichDatasetItLearnedFrom) {
+  const std::string run = "learn --disable R1,R3 --mode paper --learner prior";
+  const auto r = run_cli(run + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto from = nlohmann::json::parse(r.out).at("learned_from");
+  const fs::path dataset = from.at("dataset").get<std::string>();
+  EXPECT_EQ(dataset.filename(), "hexapod");
+  EXPECT_TRUE(fs::exists(dataset.string() + ".csv.gz")) << dataset;
+  EXPECT_EQ(from.at("walked"), "periods alone");
+  const auto text = run_cli(run);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(
+      text.out.find("the prior learner learned from " + dataset.string() + " (periods alone)"),
+      std::string::npos)
+      << text.out;
 }
 
 TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
@@ -422,7 +441,7 @@ TEST(CliExperiment, ResultsPageSetsOursBesideThePaper) {
 TEST(HardwareSummary, LinkErrorsSayWhetherTheyAreNormal) {
   const auto summary = [](const nlohmann::json& bus) {
     const nlohmann::json none{{"timeout", 0}, {"bad_checksum", 0}};
-    return multicpg::apps::hardware_summary(
+    return multicpg::hw::hardware_summary(
         {{"pacing", "lock_step"},
          {"timing", {{"period_mean_s", 0.001}, {"jitter_p99_s", 0.0}, {"overruns", 0}}},
          {"errors", {{"bus", bus}, {"yaw", none}}},

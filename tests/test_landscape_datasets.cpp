@@ -33,6 +33,34 @@ TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
   EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
 }
 
+// A run resolves its data when its spec is checked and again when it starts: the same bytes are
+// parsed once, other bytes (an edited dataset, a damaged one) never served from memory.
+TEST_F(Dataset, ADatasetIsParsedOncePerContentAndAnEditedOneIsReadAnew) {
+  const std::shared_ptr<const LandscapeDataset> first =
+      learning::read_landscape_dataset_once(stem());
+  EXPECT_EQ(learning::read_landscape_dataset_once(stem()).get(), first.get());
+
+  LandscapeDataset edited = data_;
+  edited.scenarios.front().points.front().windows.front().yaw_deg += 1.0;
+  learning::write_landscape_dataset(edited, stem());
+  const std::shared_ptr<const LandscapeDataset> again =
+      learning::read_landscape_dataset_once(stem());
+  EXPECT_NE(again.get(), first.get());
+  EXPECT_NEAR(again->scenarios.front().points.front().windows.front().yaw_deg,
+              first->scenarios.front().points.front().windows.front().yaw_deg + 1.0,
+              learning::kLandscapeAngleResolutionDeg);
+
+  const fs::path csv = stem() + ".csv.gz";
+  const std::string bytes = read_file(csv.string());
+  std::ofstream(csv, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  EXPECT_THROW(learning::read_landscape_dataset_once(stem()), BadInput);
+  fs::remove(csv);
+  EXPECT_THROW(learning::read_landscape_dataset_once(stem()), BadInput);
+
+  learning::write_landscape_dataset(data_, stem());
+  EXPECT_EQ(learning::read_landscape_dataset_once(stem()).get(), first.get());
+}
+
 // A manifest whose checksum still matches its table but whose own fields are damaged is refused
 // with one line naming the file and the field, never read as some other dataset.
 TEST_F(Dataset, ADamagedManifestIsRefusedNamingTheFileAndTheField) {

@@ -1,27 +1,13 @@
 #include "report/replay/rerun.h"
 
+#include "body/fault_spec.h"
 #include "common/errors.h"
 #include "common/input_file.h"
 #include "experiments/learning_run.h"
 #include "experiments/run_json.h"
-#include "experiments/run_robot.h"
 #include "experiments/run_spec.h"
 #include "experiments/sweep.h"
 #include "report/replay/page.h"
-// GCC 12 inlines the type macro's default object of CompensationOptions here and warns that its
-// std::optional settle_steps may be uninitialized, which it is not: a known false positive of
-// -Wmaybe-uninitialized with std::optional, silenced for this header's from_json alone (clang
-// has no such warning).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include "learning/json.h"
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
-#include "body/course_json.h"
-#include "body/fault_spec.h"
 #include "sim/walk.h"
 
 namespace multicpg::report {
@@ -54,27 +40,6 @@ json read_json(const fs::path& path) {
   } catch (const json::parse_error& e) {
     throw BadInput(quoted(path.string()) +
                    " is not a whole JSON document (truncated or damaged): " + first_line(e.what()));
-  }
-}
-
-// What `read` reads from the field `key` of the record `name`; a bad value (BadInput, e.g. an
-// unknown robot or leg) names the record and the field.
-template <class Read>
-auto field(const std::string& name, std::string_view key, Read&& read) -> decltype(read()) {
-  try {
-    return read();
-  } catch (const BadInput& e) {
-    throw BadInput(name + ": " + std::string(key) + ": " + e.what());
-  }
-}
-
-// The run's robot: the built-in layout it names, or its robot file, which must still hold the
-// robot the run walked.
-void set_robot(experiments::RunSpec& spec, const json& result, const std::string& name) {
-  try {
-    spec.robot = experiments::recorded_robot(result);
-  } catch (const OptionError& e) {
-    throw BadInput(name + ": " + e.key() + ": " + e.what());
   }
 }
 
@@ -168,13 +133,6 @@ RerunReplay rerun_walk(const json& saved, const std::string& name, const sim::Si
   return {recorder.recording(), "walk: " + morph.name + ", " + faults_title(morph, spec.faults)};
 }
 
-// The learning options a result recorded (learning/json.h).
-learning::CompensationOptions learning_options(const json& recorded) {
-  learning::CompensationOptions options;
-  from_json(recorded, options);
-  return options;
-}
-
 // What kind of result `saved` is, by the keys its command writes.
 enum class Saved { learning, walk, tunnel, unknown };
 
@@ -193,19 +151,8 @@ Saved kind_of(const json& saved) {
 RerunReplay rerun_learning(const json& saved, const std::string& name, const sim::SimOptions& sim,
                            sim::Observer* watch) {
   try {
-    experiments::RunSpec spec;
-    set_robot(spec, saved, name);
-    spec.robot.sim = sim;
-    const json& recorded = saved.at("options");
-    const learning::CompensationOptions& options =
-        spec.learning.emplace(field(name, "options", [&] { return learning_options(recorded); }));
-    spec.faults = field(name, "options.faults", [&] {
-      return !recorded.at("faults").empty()
-                 ? recorded.at("faults").get<body::FaultTimeline>()
-                 : body::fail_at(recorded.at("disabled").get<std::vector<std::size_t>>(),
-                                 recorded.at("fail_step").get<long>());
-    });
-    spec.start = experiments::learning_start(options.mode);
+    const experiments::RunSpec spec = experiments::read_learn_json(saved, name, sim);
+    const learning::CompensationOptions& options = *spec.learning;
     check(spec, name);
     const sim::SimModel model = experiments::make_model(spec.robot);
     ReplayRecorder recorder;
