@@ -38,7 +38,7 @@ FAULTS = ["R1.TC:locked", "R2.CTr:locked", "L3.TC:locked", "L1.CTr:passive", "R3
 GROUPS = {"leg-losses": LEG_LOSSES, "faults": FAULTS}
 KNOWN_LEARNERS = ["annealing", "random", "greedy", "bayes", "prior"]
 SEEDS = 10
-WITHIN = 10  # trials: the issue's bound on a first episode
+WITHIN = 10  # trials: the bound docs/learning.md "The default run in the tunnel" sets a first episode
 
 
 def run(exe, out, scenario, learner, seed):
