@@ -111,6 +111,14 @@ TEST(Learners, TheRepositoryDatasetsReadWhole) {
     for (std::size_t i = 0; i < working; ++i) expected *= kPeriodSet.size();
     EXPECT_EQ(s.points.size(), expected);
   }
+  // Walked as the default run walks (docs/learning.md "Walked as the default run walks"): every
+  // loss of one to three legs, each scenario's start windows kept.
+  const LandscapeDataset r = learning::read_landscape_dataset(
+      learning::repository_dataset(robot::RobotKind::hexapod, true));
+  ASSERT_TRUE(r.reflex);
+  EXPECT_EQ(r.scenarios.size(), 41u);
+  EXPECT_EQ(r.find({0, 2})->holding(), 85u);  // R1+R3, docs/learning.md
+  for (const ScenarioLandscape& s : r.scenarios) EXPECT_FALSE(s.start_windows.empty());
 }
 
 // The search path (learning/landscapes.h): $MULTICPG_DATA before the source tree (nothing is
