@@ -8,7 +8,6 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -360,8 +359,8 @@ std::string read_csv_file(const fs::path& stem) {
 
 // The dataset of `path` from its files' bytes: the manifest's text, and the CSV's gzip bytes,
 // read here when not given (after the manifest is checked, so a bad manifest is named first).
-LandscapeDataset parse_landscape_dataset(const fs::path& path, const std::string& manifest_text,
-                                         const std::string* csv_gzip) {
+LandscapeDataset parse_dataset(const fs::path& path, const std::string& manifest_text,
+                               const std::string* csv_gzip) {
   const fs::path stem = stem_of(path);
   const fs::path mpath = manifest_path(stem);
   const fs::path cpath = csv_path(stem);
@@ -608,32 +607,16 @@ LandscapeDataset parse_landscape_dataset(const fs::path& path, const std::string
 }  // namespace
 
 LandscapeDataset read_landscape_dataset(const fs::path& path) {
-  return parse_landscape_dataset(path, read_manifest_file(stem_of(path)), nullptr);
+  return parse_dataset(path, read_manifest_file(stem_of(path)), nullptr);
 }
 
-std::shared_ptr<const LandscapeDataset> read_landscape_dataset_once(const fs::path& path) {
+LandscapeFiles read_landscape_files(const fs::path& path) {
   const fs::path stem = stem_of(path);
-  const std::string manifest = read_manifest_file(stem);
-  std::string csv;
-  try {
-    csv = read_csv_file(stem);
-  } catch (const BadInput&) {
-    // Named after whatever is wrong with the manifest, as read_landscape_dataset names it.
-    return std::make_shared<const LandscapeDataset>(
-        parse_landscape_dataset(path, manifest, nullptr));
-  }
-  // No manifest holds a NUL (JSON text), so the two files' bytes cannot run together.
-  std::string key = manifest + '\0' + csv;
-  static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const LandscapeDataset>> parsed;
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (const auto it = parsed.find(key); it != parsed.end()) return it->second;
-  }
-  auto dataset =
-      std::make_shared<const LandscapeDataset>(parse_landscape_dataset(path, manifest, &csv));
-  const std::lock_guard<std::mutex> lock(mutex);
-  return parsed.emplace(std::move(key), std::move(dataset)).first->second;
+  return {read_manifest_file(stem), read_csv_file(stem)};
+}
+
+LandscapeDataset parse_landscape_dataset(const fs::path& path, const LandscapeFiles& files) {
+  return parse_dataset(path, files.manifest, &files.csv_gzip);
 }
 
 }  // namespace multicpg::learning

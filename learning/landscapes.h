@@ -25,7 +25,6 @@
 
 #include <cstddef>
 #include <filesystem>
-#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -113,11 +112,16 @@ void write_landscape_dataset(const LandscapeDataset& dataset, const std::filesys
 // have been, holds or worst that its windows contradict.
 LandscapeDataset read_landscape_dataset(const std::filesystem::path& path);
 
-// The same, parsed once per process for each content: a run's data are resolved when its spec is
-// checked and again when it starts, a sweep checks every run's. The key is both files' whole
-// bytes, so an edited or damaged file is read (and refused) anew, never served from memory.
-// Thread-safe.
-std::shared_ptr<const LandscapeDataset> read_landscape_dataset_once(
-    const std::filesystem::path& path);
+// The bytes of a dataset's two files, read as read_landscape_dataset reads them (the same size
+// limits); throws BadInput naming a file it cannot read.
+struct LandscapeFiles {
+  std::string manifest;  // the manifest's JSON text
+  std::string csv_gzip;  // the gzip CSV
+};
+LandscapeFiles read_landscape_files(const std::filesystem::path& path);
+
+// read_landscape_dataset of files already read; `path` names them in messages.
+LandscapeDataset parse_landscape_dataset(const std::filesystem::path& path,
+                                         const LandscapeFiles& files);
 
 }  // namespace multicpg::learning

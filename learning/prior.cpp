@@ -17,6 +17,7 @@
 #include <tuple>
 
 #include "common/errors.h"
+#include "learning/landscape_cache.h"
 #include "learning/landscapes.h"
 #include "learning/learners.h"
 #include "learning/model_learner.h"

@@ -1,4 +1,5 @@
 // Landscape datasets: written and read back, damaged ones refused, where they are found.
+#include "learning/landscape_cache.h"
 #include "tests/synthetic_landscapes.h"
 
 namespace multicpg::testing {
