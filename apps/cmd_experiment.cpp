@@ -39,9 +39,10 @@ experiments::ExperimentSpec spec_of(const ExperimentOptions& o, experiments::Rob
   spec.seed = o.learning.options.seed;
   spec.jobs = o.jobs.value_or(0);
   spec.out = o.out;
-  spec.base = learning_options(o.learning);  // checked with each run (resolve_sweep)
-  spec.check_windows = o.check_windows;
   spec.robot.sim = sim_options(o.sim, o.body, spec.robot.kind);
+  // The presets' scenarios are leg losses. Checked with each run (resolve_sweep).
+  spec.base = learning_options(o.learning, spec.robot, {});
+  spec.check_windows = o.check_windows;
   spec.limits.max_runs = o.max_runs;
   if (experiments::is_primary_process()) ensure_writable_dir(spec.out);
   return spec;
@@ -69,6 +70,8 @@ void add_common(CLI::App& cmd, ExperimentOptions& o, int default_runs, bool with
   cmd.add_option("--jobs", o.jobs, "parallel runs (default: every core)")
       ->check(in(experiments::kJobsLimits));
   add_learning_flags(cmd, o.learning, with_beta);
+  // The beta study is the annealing's (paper Fig. 14): its learner unless another is named.
+  if (!with_beta) o.learning.learner_named = true;
   cmd.add_option("--check-windows", o.check_windows,
                  "windows walked after each run with its final controller; the run files say "
                  "whether every one held (holds_after)")

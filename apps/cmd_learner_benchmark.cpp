@@ -16,6 +16,7 @@
 #include "common/table.h"
 #include "experiments/learner_benchmark.h"
 #include "experiments/runner.h"
+#include "learning/compensation.h"
 #include "learning/landscapes.h"
 #include "report/benchmark_figure.h"
 #include "robot/leg_sets.h"
@@ -37,6 +38,7 @@ struct BenchmarkOptions {
   std::string mode = "robust";
   std::optional<learning::Steering> steering;  // empty: reflex in robust mode, off in paper mode
   int hold_windows = learning::kDefaultHoldWindows;
+  int episodes = 1;
   std::string window_order;  // empty: the dataset's (drawn, or walked for a reflex dataset)
   std::optional<int> jobs;
   std::string out;
@@ -70,10 +72,17 @@ void run(const BenchmarkOptions& o) {
   spec.search.max_trials = o.max_trials;
   spec.protocol.yaw_only = mode == learning::Mode::paper;
   spec.protocol.hold_windows = o.hold_windows;
+  spec.protocol.episodes = o.episodes;
   spec.protocol.window_order =
       o.window_order.empty()
           ? (probe.reflex ? learning::WindowOrder::walked : learning::WindowOrder::drawn)
           : learning::parse_window_order(o.window_order);
+  if (o.episodes > 1 && (mode == learning::Mode::paper ||
+                         spec.protocol.window_order != learning::WindowOrder::walked)) {
+    throw BadInput(
+        "--episodes: more than one replays robust mode's monitoring, which walks a "
+        "combination's windows on in the order walked (--window-order walked)");
+  }
   if (o.hold_windows > probe.windows) {
     throw BadInput("--hold-windows: the dataset measured " + std::to_string(probe.windows) +
                    " windows per combination, got " + std::to_string(o.hold_windows));
@@ -200,6 +209,13 @@ void register_learner_benchmark(CLI::App& app) {
       ->check(one_of(steering_names(), "steering"));
   cmd->add_option("--hold-windows", o->hold_windows, "robust mode: windows a trial must hold")
       ->check(in(learning::kHoldWindowsLimits))
+      ->capture_default_str();
+  cmd->add_option("--episodes", o->episodes,
+                  "robust mode: learning episodes a run may have; 1: a stop on a combination that "
+                  "drifts over the threshold in a later window ends the run (a false stop); "
+                  "more: that window starts another episode, its learner told what the earlier "
+                  "ones walked, as a live run's monitoring does (walked window order)")
+      ->check(in(learning::kMaxEpisodesLimits))
       ->capture_default_str();
   cmd->add_option("--window-order", o->window_order,
                   "which measured windows a trial walks: drawn (a permutation drawn by the seed, "

@@ -9,6 +9,7 @@
 
 #include "apps/flag_checks.h"
 #include "common/errors.h"
+#include "learning/default_learner.h"
 #include "learning/learners.h"
 #include "learning/number_options.h"
 
@@ -80,9 +81,10 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
       ->default_str(std::string(learning::to_string(o.mode)));
   cmd.add_option("--learner", o.learner.name,
                  "which learner searches: " + learning::learner_names() +
-                     " (docs/learning.md \"Learners\")")
+                     " (docs/learning.md \"Which learner a run uses\")")
       ->check(one_of(learner_name_list(), "learner"))
-      ->capture_default_str();
+      ->each([&f](const std::string&) { f.learner_named = true; })
+      ->default_str("prior in robust mode where the robot's dataset is, else annealing");
   cmd.add_option("--learner-option", f.learner_options,
                  "KEY=VALUE, one of the learner's options (repeatable; VALUE is read as JSON "
                  "when it is JSON, else as text), e.g. acquisition=ucb");
@@ -127,8 +129,15 @@ std::pair<std::string, nlohmann::json> learner_option(const std::string& item,
   return {item.substr(0, eq), parsed.is_discarded() ? nlohmann::json(value) : parsed};
 }
 
-learning::CompensationOptions learning_options(const LearningFlags& f) {
+learning::CompensationOptions learning_options(const LearningFlags& f,
+                                               const experiments::RobotSpec& robot,
+                                               const body::FaultTimeline& faults) {
   learning::CompensationOptions o = f.options;
+  if (!f.learner_named) {
+    o.learner.name = learning::default_learner(
+                         {o, robot.kind, robot.file != nullptr, f.beta.has_value(), faults})
+                         .name;
+  }
   for (const std::string& item : f.learner_options) {
     auto [key, value] = learner_option(item, "--learner-option");
     if (o.learner.options.contains(key)) {
@@ -137,7 +146,7 @@ learning::CompensationOptions learning_options(const LearningFlags& f) {
     o.learner.options[key] = std::move(value);
   }
   if (f.beta) {
-    if (o.learner.name != learning::kDefaultLearner) {
+    if (o.learner.name != learning::kPaperLearner) {
       throw BadInput("--beta: the annealing's option; --learner " + o.learner.name +
                      " has no beta");
     }

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "experiments/run_robot.h"
 #include "learning/compensation.h"
 #include "sim/stepper.h"
 
@@ -19,6 +20,7 @@ struct LearningFlags {
   bool robust_only = false;  // a robust-mode flag (--steering, --hold-windows, ...) was given
   std::vector<std::string> learner_options;  // --learner-option KEY=VALUE, repeatable
   std::optional<double> beta;  // --beta: the annealing's option beta (learning/learners.h)
+  bool learner_named = false;  // --learner was given; else the run's default (default_learner)
 };
 
 // The names each choice of the learning options takes, for one_of (apps/flag_checks.h): the
@@ -40,9 +42,12 @@ void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = tr
 std::pair<std::string, nlohmann::json> learner_option(const std::string& item,
                                                       const std::string& flag);
 
-// The options the flags give (checked with the run, experiments::validate; the learner's options
-// as given, resolved by learning::resolve_learner). Throws BadInput (one line) for robust-mode
-// flags in paper mode or a --learner-option that is not KEY=VALUE.
-learning::CompensationOptions learning_options(const LearningFlags& flags);
+// The options the flags give for a run of `robot` under `faults` (checked with the run,
+// experiments::validate; the learner's options as given, resolved by learning::resolve_learner;
+// without --learner the run's default, learning::default_learner). Throws BadInput (one line)
+// for robust-mode flags in paper mode or a --learner-option that is not KEY=VALUE.
+learning::CompensationOptions learning_options(const LearningFlags& flags,
+                                               const experiments::RobotSpec& robot,
+                                               const body::FaultTimeline& faults);
 
 }  // namespace multicpg::apps

@@ -122,7 +122,8 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
     out << " " << body::malfunction_text(morph, f) << (f.recover ? " recover" : " fail") << "@"
         << f.step;
   }
-  if (options.learner.name != learning::kDefaultLearner)
+  // Robust mode's learner depends on the robot's data (learning/default_learner.h): always named.
+  if (options.mode == learning::Mode::robust || options.learner.name != learning::kPaperLearner)
     out << ", learner " << options.learner.name;
   if (const std::optional<double> beta = learning::annealing_beta(options.learner))
     out << ", beta " << *beta;
@@ -171,7 +172,7 @@ void LearningTable::event(const body::Event& e) {
       std::ostringstream decision;
       // "kept" is the annealing's: the search moves on from this combination (E_ref), a worse one
       // with probability P (paper §3). The other learners answer with their best so far.
-      if (spec_.learning->learner.name == learning::kDefaultLearner) {
+      if (spec_.learning->learner.name == learning::kPaperLearner) {
         decision << (e.accepted ? "kept" : "rejected");
       } else {
         decision << (e.accepted ? "new best" : "not better");

@@ -150,7 +150,7 @@ experiments::RunSpec run_spec(const RunFlags& f, bool learn) {
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   spec.faults = parse_faults(morph, f);
   if (learn) {
-    spec.learning = learning_options(f.learning);
+    spec.learning = learning_options(f.learning, spec.robot, spec.faults);
     spec.start = experiments::learning_start(spec.learning->mode);
     try {
       spec.learning->learner = learning::resolve_learner(spec.learning->learner);

@@ -178,7 +178,7 @@ Table benchmark_table(const LearnerBenchmark& b) {
 Table benchmark_runs_table(const LearnerBenchmark& b) {
   Table t;
   for (const char* c : {"scenario", "learner"}) t.columns.push_back({c, Align::left});
-  for (const char* c : {"run", "deviated", "trials", "reason", "held_at", "false_stop",
+  for (const char* c : {"run", "deviated", "trials", "episodes", "reason", "held_at", "false_stop",
                         "answer_holds", "answer_worst_deg", "first_holding_tried"}) {
     t.columns.push_back({c});
   }
@@ -186,7 +186,7 @@ Table benchmark_runs_table(const LearnerBenchmark& b) {
     for (std::size_t k = 0; k < c.run_list.size(); ++k) {
       const learning::ReplayRun& r = c.run_list[k];
       t.add_row({c.scenario, c.learner, std::to_string(k), r.deviated ? "1" : "0",
-                 std::to_string(r.trials),
+                 std::to_string(r.trials), std::to_string(r.episodes),
                  r.deviated ? std::string(learning::to_string(r.reason)) : "no deviation",
                  r.held_at ? std::to_string(*r.held_at) : "", r.false_stop ? "1" : "0",
                  r.answer_holds ? "1" : "0", shortest(r.answer_worst_deg),
@@ -284,6 +284,7 @@ nlohmann::json benchmark_summary(const LearnerBenchmark& b) {
           {"yaw_only", s.protocol.yaw_only},
           {"hold_windows", s.protocol.hold_windows},
           {"window_order", learning::to_string(s.protocol.window_order)},
+          {"episodes", s.protocol.episodes},
           {"scenarios", benchmark_scenarios(b)},
           {"holding_scenarios", holding_scenarios(b)},
           {"learners", learners}};
@@ -371,9 +372,16 @@ std::string benchmark_markdown(const LearnerBenchmark& b) {
   }
   const std::string scenarios = counted(static_cast<long>(benchmark_scenarios(b)), "scenario");
   const std::string protocol =
-      s.protocol.yaw_only ? "paper trials (one window's yaw)"
-                          : "robust trials (up to " + counted(s.protocol.hold_windows, "window") +
-                                ", worst of yaw and path angle)";
+      s.protocol.yaw_only
+          ? "paper trials (one window's yaw)"
+          : "robust trials (up to " + counted(s.protocol.hold_windows, "window") +
+                ", worst of yaw and path angle" +
+                (s.protocol.episodes > 1
+                     ? "; up to " + counted(s.protocol.episodes, "episode") +
+                           ", a later window of the combination stopped on over the threshold "
+                           "starting the next, trials counted over all of them"
+                     : std::string()) +
+                ")";
   return "# Learner benchmark: " + std::string(robot::to_string(b.dataset.robot)) + ", " +
          scenarios + " x " + counted(s.seeds, "seed") + "\n\n" +
          "Each learner replayed on the landscape dataset `" + s.dataset.string() + "` with " +

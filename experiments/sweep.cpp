@@ -11,6 +11,7 @@
 #include "experiments/learner_table.h"
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
+#include "learning/default_learner.h"
 #include "learning/json.h"
 #include "robot/body_models.h"
 #include "robot/leg_sets.h"
@@ -353,7 +354,7 @@ namespace {
 void canonical_annealing(json& learning_point) {
   if (!learning_point.contains("learner")) return;
   json& learner = learning_point["learner"];
-  if (!learner.is_object() || learner.value("name", json()) != learning::kDefaultLearner) return;
+  if (!learner.is_object() || learner.value("name", json()) != learning::kPaperLearner) return;
   json* options = learner.contains("options") ? &learner["options"] : nullptr;
   if (options && options->is_object() && options->contains("beta")) {
     const json beta = options->at("beta");
@@ -414,6 +415,11 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
   json learning = learning_document(learning::CompensationOptions{}, 0);
   json learning_given = doc.value("learning", json::object());
   const std::optional<json> learner_given = take_learner(learning_given);
+  // A document that sets the annealing's beta asks for the annealing (default_learner).
+  const json annealing_given = learning_given.is_object()
+                                   ? learning_given.value("annealing", json::object())
+                                   : json::object();
+  const bool beta_given = annealing_given.is_object() && annealing_given.contains("beta");
   merge_checked(learning_given, json(learning), "learning", learning, sweep.grid,
                 kPerRunLearningKeys);
   if (learner_given) add_learner(*learner_given, learning, sweep.grid);
@@ -496,6 +502,14 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
         spec.faults.front().step = fail_step;
       } else if (s.faults.empty()) {
         spec.faults = body::fail_at(s.disabled, fail_step);
+      }
+      // Without a learner the run's default for its mode, robot and faults (docs/learning.md
+      // "Which learner a run uses"), recorded with every run.
+      if (!learner_given) {
+        const learning::LearnerChoice chosen = learning::default_learner(
+            {base, sweep.robot, sweep.robot_file != nullptr, beta_given, spec.faults});
+        // The annealing keeps the options the document gave it (its beta).
+        if (chosen.name != base.learner.name) spec.learning->learner = chosen;
       }
       spec.record.check_windows = check_windows;
       spec.record.trace = trace.get<bool>();

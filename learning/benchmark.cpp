@@ -66,6 +66,13 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
                    ", which paper mode does not use: replay paper mode on a dataset of periods "
                    "alone");
   }
+  if (protocol.episodes < 1) throw BadInput("a run has at least one episode");
+  if (protocol.episodes > 1 &&
+      (protocol.yaw_only || protocol.window_order != WindowOrder::walked)) {
+    throw BadInput(
+        "more than one episode replays robust mode's monitoring, which walks a "
+        "combination's windows on in the order walked (--window-order walked)");
+  }
   if (dataset.reflex && protocol.window_order == WindowOrder::drawn) {
     throw BadInput("the dataset was walked with " + dataset.walked() +
                    " up to each combination's first window over the threshold, so its windows "
@@ -137,30 +144,53 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
   setup.start_windows = {detecting};
   setup.criterion = criterion;
   setup.search = search;
-  setup.seed = learner_seed.value_or(splitmix64(seed ^ kLearnerStream));
+  const std::uint64_t first_seed = learner_seed.value_or(splitmix64(seed ^ kLearnerStream));
   LearnerData unseen = data;
   unseen.withheld = {scenario.failed};
-  const std::unique_ptr<Learner> learner = make_learner(choice, setup, unseen);
-  EpisodeHooks hooks;
-  hooks.measure = [&](int trial, const Periods& periods) {
-    const std::optional<std::size_t> point = scenario.find(periods);
-    if (!point) throw std::logic_error("a learner proposed a combination outside its space");
-    if (!run.first_holding_tried && scenario.points[*point].holds) {
-      run.first_holding_tried = trial;
-    }
-    return measure(*point);
-  };
-  EpisodeEnd end = run_episode(*learner, hooks);
-  run.trials = end.trials;
-  run.reason = end.reason;
-  run.trace = std::move(end.trace);
-  finish(end.answer);
-  if (end.reason == StopReason::below_threshold) {
+  for (int episode = 1;; ++episode) {
+    // Episode k + 1 draws from its own stream, as a live run's (learning/compensation.cpp).
+    setup.seed = first_seed + static_cast<std::uint64_t>(episode - 1);
+    const std::unique_ptr<Learner> learner = make_learner(choice, setup, unseen);
+    std::vector<EarlierTrial> walked;
+    EpisodeHooks hooks;
+    hooks.measure = [&](int trial, const Periods& periods) {
+      const std::optional<std::size_t> point = scenario.find(periods);
+      if (!point) throw std::logic_error("a learner proposed a combination outside its space");
+      if (!run.first_holding_tried && scenario.points[*point].holds) {
+        run.first_holding_tried = run.trials + trial;
+      }
+      Measurement m = measure(*point);
+      walked.push_back({periods, m.windows});
+      return m;
+    };
+    EpisodeEnd end = run_episode(*learner, hooks);
+    run.episodes = episode;
+    run.trials += end.trials;
+    run.reason = end.reason;
+    for (TrialRecord& t : end.trace) run.trace.push_back(std::move(t));
+    finish(end.answer);
+    if (end.reason != StopReason::below_threshold) break;
     if (run.answer_holds) {
-      run.held_at = end.trials;
-    } else {
-      run.false_stop = true;
+      run.held_at = run.trials;
+      break;
     }
+    if (episode == protocol.episodes) {
+      run.false_stop = true;
+      break;
+    }
+    // Monitoring: the combination walks on after the trial's windows; the first later window
+    // over the threshold (one is, as it does not hold) starts the next episode from it.
+    const LandscapePoint& p = scenario.points[*scenario.find(end.answer.periods)];
+    std::optional<body::WindowMeasure> drift;
+    for (std::size_t w = static_cast<std::size_t>(protocol.hold_windows);
+         w < p.windows.size() && !drift; ++w) {
+      if (!body::holds(criterion.error(p.windows[w]), search.threshold_deg)) drift = p.windows[w];
+    }
+    if (!drift) throw std::logic_error("a combination that does not hold has no window over");
+    setup.earlier.insert(setup.earlier.end(), walked.begin(), walked.end());
+    setup.start = end.answer.periods;
+    setup.start_windows = {*drift};
+    setup.start_deviation_deg = criterion.error(*drift);
   }
   return run;
 }

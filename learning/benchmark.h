@@ -35,6 +35,12 @@ struct TrialProtocol {
   bool yaw_only = false;  // paper mode
   int hold_windows = 3;   // robust mode (kDefaultHoldWindows)
   WindowOrder window_order = WindowOrder::drawn;
+  // Episodes a run may have. 1: the first alone, a stop on a combination that does not hold in
+  // truth ends the run (a false stop). More: robust mode's monitoring, as a live run has it: the
+  // combination walks on through the landscape's later windows, and the first of them over the
+  // threshold starts another episode from it, its learner told what the earlier ones walked
+  // (LearnerSetup::earlier) and seeded as a live run's next episode (walked order only).
+  int episodes = 1;
 };
 
 // What a replayed learner is told about the fault (docs/learning.md "What a learner is told"):
@@ -44,14 +50,18 @@ enum class Told { failed_legs, nothing };
 // One learning run replayed on one scenario.
 struct ReplayRun {
   bool deviated = false;  // the start (all 4) deviated in the window it walked, so learning ran
-  int trials = 0;
+  int trials = 0;         // over every episode
+  int episodes = 0;       // learning episodes walked (0: no deviation)
   StopReason reason = StopReason::running;
   Periods answer;                 // the combination the learner ended with
   bool answer_holds = false;      // in truth: every window of the landscape under the threshold
   double answer_worst_deg = 0.0;  // its worst window in the landscape
-  // The trial at which the learner stopped, held, on a combination that holds in truth.
+  // The trial, counted over every episode, at which the learner stopped, held, on a combination
+  // that holds in truth.
   std::optional<int> held_at;
-  bool false_stop = false;  // it stopped, held, on a combination that does not hold in truth
+  // The run ended on a stop, held, on a combination that does not hold in truth (with more
+  // episodes allowed: its last episode's).
+  bool false_stop = false;
   // The first trial whose combination holds in truth, whether or not the learner saw it.
   std::optional<int> first_holding_tried;
   std::vector<TrialRecord> trace;
@@ -66,8 +76,9 @@ struct ReplayRun {
 // it never sees the scenario it replays. `search` bounds the search (period set and threshold must
 // be the dataset's). Throws BadInput when the choice or the bounds do not fit the dataset.
 // `learner_seed`, when given, seeds the learner instead (as `learn --seed` seeds a live run's
-// first episode), so a walked replay can retrace a live run trial by trial. `told`: what the
-// learner is told of the fault; told nothing it still never sees the scenario it replays.
+// first episode, and + k its episode k + 1), so a walked replay can retrace a live run trial by
+// trial. `told`: what the learner is told of the fault; told nothing it still never sees the
+// scenario it replays.
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
                      const LearnerChoice& choice, const LearnerData& data,
                      const SearchBounds& search, const TrialProtocol& protocol, std::uint64_t seed,

@@ -47,7 +47,7 @@ inline void to_json(nlohmann::json& nlohmann_json_j, const CompensationOptions& 
   nlohmann_json_j["annealing"] = annealing_params(
       nlohmann_json_t.search, annealing_beta(nlohmann_json_t.learner).value_or(kDefaultBeta));
   LearnerChoice without_beta = nlohmann_json_t.learner;
-  if (without_beta.name == kDefaultLearner) without_beta.options.erase("beta");
+  if (without_beta.name == kPaperLearner) without_beta.options.erase("beta");
   if (without_beta != LearnerChoice{}) nlohmann_json_j["learner"] = nlohmann_json_t.learner;
 }
 // Throws OptionError ("annealing.beta") when the record gives a beta to a learner other than the
@@ -61,13 +61,13 @@ inline void from_json(const nlohmann::json& nlohmann_json_j, CompensationOptions
   nlohmann_json_t.search = {annealing.period_set, annealing.threshold_deg, annealing.max_trials};
   nlohmann_json_t.learner = nlohmann_json_j.value("learner", LearnerChoice{});
   LearnerChoice& learner = nlohmann_json_t.learner;
-  if (learner.name == kDefaultLearner && learner.options.is_object()) {
+  if (learner.name == kPaperLearner && learner.options.is_object()) {
     if (!learner.options.contains("beta")) {
       learner.options["beta"] = annealing.beta;
     } else if (annealing.beta != kDefaultBeta && learner.options.at("beta") != annealing.beta) {
       throw OptionError("annealing.beta", "and learner.options.beta give the annealing two betas");
     }
-  } else if (learner.name != kDefaultLearner && annealing.beta != kDefaultBeta) {
+  } else if (learner.name != kPaperLearner && annealing.beta != kDefaultBeta) {
     throw OptionError("annealing.beta",
                       "is the annealing's option; the learner '" + learner.name + "' has none");
   }

@@ -134,7 +134,7 @@ bool forecasts(std::string_view learner) {
 }
 
 std::optional<double> annealing_beta(const LearnerChoice& choice) {
-  if (choice.name != kDefaultLearner) return std::nullopt;
+  if (choice.name != kPaperLearner) return std::nullopt;
   if (!choice.options.is_object()) return kDefaultBeta;
   const nlohmann::json beta = choice.options.value("beta", nlohmann::json(kDefaultBeta));
   return beta.is_number() ? beta.get<double>() : kDefaultBeta;

@@ -16,8 +16,9 @@
 
 namespace multicpg::learning {
 
-// The paper's simulated annealing (paper §3, Table 2).
-inline constexpr std::string_view kDefaultLearner = "annealing";
+// The paper's simulated annealing (paper §3, Table 2): paper mode's learner, and the one a record
+// that names none ran. A run that names none gets learning/default_learner.h's.
+inline constexpr std::string_view kPaperLearner = "annealing";
 
 // Which learner a run uses and its own options, every default filled in once resolved. A run
 // records it (learning/json.h) beside the search's bounds (CompensationOptions::annealing), so
@@ -25,7 +26,7 @@ inline constexpr std::string_view kDefaultLearner = "annealing";
 // here and the learner's own file, where they are read into the learner's typed struct: that
 // keeps adding a learner to one file and one table row.
 struct LearnerChoice {
-  std::string name = std::string(kDefaultLearner);
+  std::string name = std::string(kPaperLearner);
   nlohmann::json options = nlohmann::json::object();
   bool operator==(const LearnerChoice&) const = default;
 };

@@ -12,6 +12,7 @@
 
 #include "learning/ask_tell.h"
 #include "learning/compensation.h"
+#include "learning/default_learner.h"
 #include "neural/cpg.h"
 #include "python/args.h"
 #include "python/robots.h"
@@ -78,7 +79,6 @@ class Learner {
       : robot_(robot_arg(robot_value)) {
     const robot::Morphology& morph = robot_->morph();
     learning::AskTellSetup s;
-    s.learner.name = text(name, "learner");
     if (!options.is_none()) {
       if (!PyDict_Check(options.ptr())) {
         type_error("options", "a dict of the learner's options", options);
@@ -110,6 +110,12 @@ class Learner {
     s.search.max_trials = whole(max_trials, "max_trials", learning::kMaxTrialsLimits);
     run.search = s.search;
     s.criterion = learning::criterion(run);
+    // None: the default of the run it stands for (learning/default_learner.h), as learn()'s.
+    s.learner.name =
+        name.is_none()
+            ? learning::default_learner({run, morph.kind, robot_->spec.file != nullptr, false, {}})
+                  .name
+            : text(name, "learner");
     if (!windows.is_none()) s.start_windows = windows_of(windows, "windows");
     if (!deviation.is_none()) {
       if (!windows.is_none()) value_error("deviation_deg", "give C0's windows or its E, not both");
@@ -209,7 +215,8 @@ void register_ask_tell(py::module_& m) {
       "walks the trials (another simulator, a robot, a function of the periods; docs/python.md\n"
       "\"Ask and tell\"). learner: a learner's name (" +
       learning::learner_names() +
-      "), options: a dict of its own\n"
+      ") or None: the\n"
+      "default of the run it stands for, as learn()'s; options: a dict of its own\n"
       "options (as learn()'s learner_options), seed: as learn()'s. robot: its leg layout (a\n"
       "Robot, 'hexapod', 'quadruped' or a robot file). failed: the legs it is told failed\n"
       "(never picked), or None: told nothing, it searches every leg's period. periods: C0,\n"
@@ -218,18 +225,18 @@ void register_ask_tell(py::module_& m) {
       "(None: PERIOD_SET), threshold (deg) and max_trials bound the search. With the same\n"
       "seed and the windows our own simulation walks it gives the trials of learn().";
   py::class_<Learner>(m, "Learner", doc.c_str())
-      .def(py::init([](StrArg learner, AnyArg options, IntArg seed, RobotArg robot, LegsArg failed,
-                       PeriodsArg periods, AnyArg windows, OptionalFloatArg deviation_deg,
-                       StrArg mode, StrArg steering, AnyArg period_set, FloatArg threshold,
-                       IntArg max_trials) {
+      .def(py::init([](OptionalStrArg learner, AnyArg options, IntArg seed, RobotArg robot,
+                       LegsArg failed, PeriodsArg periods, AnyArg windows,
+                       OptionalFloatArg deviation_deg, StrArg mode, StrArg steering,
+                       AnyArg period_set, FloatArg threshold, IntArg max_trials) {
              return std::make_unique<Learner>(learner, options, seed, robot, failed, periods,
                                               windows, deviation_deg, mode, steering, period_set,
                                               threshold, max_trials);
            }),
-           arg("learner") = std::string(learning::kDefaultLearner), py::kw_only(),
-           arg("options") = py::none(), arg("seed") = 1, arg("robot") = "hexapod",
-           arg("failed") = py::none(), arg("periods") = learning::kStartPeriod,
-           arg("windows") = py::none(), arg("deviation_deg") = py::none(),
+           arg("learner") = py::none(), py::kw_only(), arg("options") = py::none(), arg("seed") = 1,
+           arg("robot") = "hexapod", arg("failed") = py::none(),
+           arg("periods") = learning::kStartPeriod, arg("windows") = py::none(),
+           arg("deviation_deg") = py::none(),
            arg("mode") = std::string(learning::to_string(learning::Mode::robust)),
            arg("steering") = std::string(learning::to_string(learning::Steering::reflex)),
            arg("period_set") = py::none(), arg("threshold") = learning::kDefaultThresholdDeg,

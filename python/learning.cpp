@@ -151,7 +151,8 @@ py::dict learn(const Keywords& k) {
   const std::shared_ptr<Robot> robot = with_terrain(robot_arg(k["robot"]), k["terrain"]);
   const robot::Morphology& morph = robot->morph();
   const body::FaultTimeline timeline = fault_timeline(morph, k);
-  experiments::RunSpec spec = run_spec(*robot, {}, timeline, learning_options(k));
+  experiments::RunSpec spec =
+      run_spec(*robot, {}, timeline, learning_options(k, &robot->spec, timeline));
   spec.record.steps = flag(k["record"], "record");
   const std::optional<experiments::HardwareSetup> setup = hardware_setup(k, spec);
   if (setup && spec.record.steps) {
@@ -184,10 +185,11 @@ const Signature& learning_signature() {
 }
 
 py::dict checked_learning_options(const Keywords& k) {
-  const learning::CompensationOptions o = learning_options(k);
+  const learning::CompensationOptions o = learning_options(k, nullptr);
   py::dict out;
   out["mode"] = std::string(learning::to_string(o.mode));
-  out["learner"] = o.learner.name;
+  // None: the run's default, which depends on the robot (learning/default_learner.h).
+  out["learner"] = k["learner"].is_none() ? py::object(py::none()) : py::str(o.learner.name);
   out["learner_options"] = to_python(o.learner.options);
   out["steering"] = std::string(learning::to_string(o.steering));
   add_number_options(out, o);
@@ -242,9 +244,10 @@ py::dict tunnel(const Keywords& k) {
   }
   body::StartSpec start;
   if (!k["periods"].is_none()) start.periods = periods(morph, k["periods"], "periods");
+  const body::FaultTimeline faults = fault_timeline(morph, k);
   std::optional<learning::CompensationOptions> options;
-  if (learns) options = learning_options(k);
-  experiments::RunSpec spec = run_spec(*robot, start, fault_timeline(morph, k), options);
+  if (learns) options = learning_options(k, &robot->spec, faults);
+  experiments::RunSpec spec = run_spec(*robot, start, faults, options);
   const std::optional<experiments::HardwareSetup> setup = hardware_setup(k, spec);
   if (setup && !video.empty()) {
     value_error("video", "films the simulated tunnel; a real robot's run has none");
@@ -447,7 +450,9 @@ void register_learning(py::module_& m) {
       "monitor_windows and period_learning are robust-mode arguments. learner: which learner\n"
       "searches (" +
       learning::learner_names() +
-      "; docs/learning.md \"Learners\"), with\n"
+      "; None: the prior in robust mode where the\n"
+      "robot's dataset is, else the annealing; docs/learning.md \"Which learner a run uses\"), "
+      "with\n"
       "learner_options, a dict of its own options (`--learner-option KEY=VALUE`). beta\n"
       "(0..100), threshold (deg, 0.001..180), window (steps), settle (steps; None: the mode's),\n"
       "max_trials (1..100000), seed (0..4294967295). Returns the dict of `learn --json`, plus\n"

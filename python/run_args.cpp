@@ -9,6 +9,7 @@
 
 #include "common/errors.h"
 #include "learning/annealing.h"
+#include "learning/default_learner.h"
 #include "learning/learners.h"
 #include "learning/number_options.h"
 #include "learning/steering.h"
@@ -96,7 +97,7 @@ Params robust_params() {
 
 Params learning_params() {
   return join({{{"mode", py::str(std::string(learning::to_string(learning::Mode::robust)))},
-                {"learner", py::str(std::string(learning::kDefaultLearner))},
+                {"learner", py::none()},
                 {"learner_options", py::none()}},
                robust_params(),
                {{"beta", py::float_(learning::kDefaultBeta)}},
@@ -104,7 +105,9 @@ Params learning_params() {
                {{"seed", py::int_(1)}}});
 }
 
-learning::CompensationOptions learning_options(const Keywords& k) {
+learning::CompensationOptions learning_options(const Keywords& k,
+                                               const experiments::RobotSpec* robot,
+                                               const body::FaultTimeline& faults) {
   learning::CompensationOptions o;
   const std::string mode = text(k["mode"], "mode");
   o.mode = named("mode", [&] { return learning::parse_mode(mode); });
@@ -144,7 +147,7 @@ learning::CompensationOptions learning_options(const Keywords& k) {
         option);
   }
   o.learn_periods = flag(k["period_learning"], "period_learning");
-  o.learner.name = text(k["learner"], "learner");
+  if (!k["learner"].is_none()) o.learner.name = text(k["learner"], "learner");
   const py::object options = k["learner_options"];
   if (!options.is_none()) {
     if (!PyDict_Check(options.ptr())) {
@@ -154,8 +157,13 @@ learning::CompensationOptions learning_options(const Keywords& k) {
   }
   // beta is the annealing's option (learning/learners.h), given as its own keyword as on the CLI.
   const double beta = real(k["beta"], "beta", learning::kBetaLimits);
+  if (k["learner"].is_none() && robot) {
+    o.learner.name =
+        learning::default_learner({o, robot->kind, robot->file != nullptr, k.given("beta"), faults})
+            .name;
+  }
   if (k.given("beta")) {
-    if (o.learner.name != learning::kDefaultLearner) {
+    if (o.learner.name != learning::kPaperLearner) {
       value_error("beta",
                   "is the annealing's option; the learner '" + o.learner.name + "' has none");
     }

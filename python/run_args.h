@@ -30,7 +30,12 @@ body::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keyword
 Params learning_params();
 // The robust-mode ones among them: given with mode='paper', they are refused.
 Params robust_params();
-learning::CompensationOptions learning_options(const Keywords& k);
+// The learning options of `k` for a run of `robot` under `faults`; learner=None is the run's
+// default (learning::default_learner), left the paper's annealing when `robot` is null (options
+// checked apart from any run).
+learning::CompensationOptions learning_options(const Keywords& k,
+                                               const experiments::RobotSpec* robot,
+                                               const body::FaultTimeline& faults = {});
 // Adds the numeric learning options of `o` (learning/number_options.h) to `out` under their
 // keywords; settle is None when the run works it out.
 void add_number_options(py::dict& out, const learning::CompensationOptions& o);

@@ -80,6 +80,60 @@ TEST_F(Dataset, AWalkedReplayMeasuresTheLandscapesWindowsInTheirOrder) {
   EXPECT_EQ(learning::to_string(learning::WindowOrder::drawn), "drawn");
 }
 
+// More episodes replay robust mode's monitoring: a stop on a combination that drifts over the
+// threshold in a later window starts another episode from it, as a live run does, its learner
+// seeded as a live run's next episode and told what the first walked (random search walks none
+// of it again); the run's first episode is the one-episode replay's.
+TEST_F(Dataset, MoreEpisodesReplayRobustModesMonitoring) {
+  const ScenarioLandscape& s = *data_.find({kL2});
+  TrialProtocol one;
+  one.window_order = learning::WindowOrder::walked;
+  one.hold_windows = 1;  // a yaw of 8 deg holds its first window (7.5) and drifts in the next
+  TrialProtocol monitored = one;
+  monitored.episodes = 10;
+  const LearnerChoice random = learning::resolve_learner(choice("random"));
+  int false_stops = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const ReplayRun first = learning::replay_run(data_, s, random, {}, search(60), one, seed);
+    const ReplayRun run = learning::replay_run(data_, s, random, {}, search(60), monitored, seed);
+    ASSERT_LE(first.trace.size(), run.trace.size()) << seed;
+    for (std::size_t t = 0; t < first.trace.size(); ++t) {
+      EXPECT_EQ(run.trace[t].periods, first.trace[t].periods) << "seed " << seed << " trial " << t;
+    }
+    if (!first.false_stop) {
+      EXPECT_EQ(run.trials, first.trials) << seed;
+      EXPECT_EQ(run.episodes, first.episodes) << seed;
+      continue;
+    }
+    ++false_stops;
+    EXPECT_GE(run.episodes, 2) << seed;
+    EXPECT_GT(run.trials, first.trials) << seed;
+    std::set<Periods> walked;
+    for (const learning::TrialRecord& t : run.trace) {
+      EXPECT_TRUE(walked.insert(t.periods).second) << "seed " << seed << " walks again";
+    }
+    if (run.held_at) {
+      EXPECT_TRUE(run.answer_holds) << seed;
+      EXPECT_EQ(*run.held_at, run.trials) << seed;
+    }
+  }
+  EXPECT_GT(false_stops, 0) << "no one-episode run stopped falsely: the test shows nothing";
+  // Drawn windows have no order to walk on in: refused, by the replay and by the command.
+  TrialProtocol drawn = monitored;
+  drawn.window_order = learning::WindowOrder::drawn;
+  EXPECT_THROW(learning::replay_run(data_, s, random, {}, search(60), drawn, 1), BadInput);
+  const CliResult r = run_cli("learner-benchmark --dataset " + stem() +
+                              " --learners random --seeds 2 --episodes 3 --out " + dir_ + "/e");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--episodes"), std::string::npos) << r.err;
+  const CliResult walked = run_cli("learner-benchmark --dataset " + stem() +
+                                   " --learners random --seeds 2 --episodes 3 --window-order "
+                                   "walked --out " +
+                                   dir_ + "/w");
+  ASSERT_EQ(walked.exit_code, 0) << walked.err;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir_ + "/w/summary.json")).at("episodes"), 3);
+}
+
 // With windows walked in order the run seed draws nothing, so a learner seed given as a live run
 // gives it (learn --seed) decides the replay alone, as it decides that live run.
 TEST_F(Dataset, AWalkedReplayWithALearnerSeedIsThatSeedsRun) {

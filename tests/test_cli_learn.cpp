@@ -46,7 +46,11 @@ TEST(CliLearn, JsonHasTheDocumentedFields) {
     EXPECT_TRUE(t.at("deviation_deg").is_number());
     EXPECT_TRUE(t.at("accepted").is_boolean());
   }
-  EXPECT_FALSE(j.contains("learned_from")) << "the annealing learns from its trials alone";
+  EXPECT_TRUE(j.contains("learned_from")) << "robust mode's default learner is the prior";
+  const auto annealing = run_cli("learn --disable R1,R3,L2 --seed 2 --learner annealing --json");
+  ASSERT_EQ(annealing.exit_code, 0) << annealing.err;
+  EXPECT_FALSE(nlohmann::json::parse(annealing.out).contains("learned_from"))
+      << "the annealing learns from its trials alone";
   // Same seed, same run.
   EXPECT_EQ(run_cli("learn --disable R1,R3,L2 --seed 2 --json").out, r.out);
 }
@@ -69,9 +73,42 @@ TEST(CliLearn, APriorRunSaysWhichDatasetItLearnedFrom) {
       << text.out;
 }
 
+// The learner a run gets when it names none (docs/learning.md "Which learner a run uses"): the
+// prior where the robot's dataset walked as the run walks is, the annealing elsewhere; recorded.
+TEST(CliLearn, TheDefaultLearnerIsThePriorWhereTheRobotsDatasetIsElseTheAnnealing) {
+  const auto learner = [](const std::string& args) {
+    const bool paper = args.find("--mode paper") != std::string::npos;  // one episode anyway
+    const auto r =
+        run_cli("learn " + args + " --max-trials 1 --json" + (paper ? "" : " --max-episodes 1"));
+    // 3: not converged within the one trial, which is all this test needs of the run.
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << args << "\n" << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    return j.at("options").value("learner", nlohmann::json{{"name", "annealing"}}).at("name");
+  };
+  EXPECT_EQ(learner("--disable R1,R3"), "prior");
+  EXPECT_EQ(learner("--disable R1,R3 --steering off"), "prior");
+  EXPECT_EQ(learner("--robot quadruped --disable R2"), "prior");
+  EXPECT_EQ(learner("--mode paper --disable R1,R3"), "annealing");
+  EXPECT_EQ(learner("--disable R1,R3 --beta 2"), "annealing");  // a beta asks for the annealing
+  EXPECT_EQ(learner("--robot octopod --disable R1,R3"), "annealing");  // no dataset
+  EXPECT_EQ(learner("--fault R2.CTr:passive@0"), "annealing");  // a body no dataset describes
+  EXPECT_EQ(learner("--disable R1,R3 --learner annealing"), "annealing");
+  const std::string robot_file =
+      std::string(MULTICPG_SOURCE_DIR) + "/examples/robots/hobby_hexapod.toml";
+  EXPECT_EQ(learner("--robot " + robot_file + " --disable R1,R3 --learner prior"), "prior");
+  EXPECT_EQ(learner("--robot " + robot_file + " --disable R1,R3"), "annealing");  // another body
+  const auto text = run_cli("learn --disable R1,R3 --max-trials 1 --max-episodes 1");
+  ASSERT_TRUE(text.exit_code == 0 || text.exit_code == 3) << text.err;
+  EXPECT_NE(text.out.find("robust mode (steering reflex, 3 windows to hold), faults R1+R3 fail@0, "
+                          "learner prior,"),
+            std::string::npos)
+      << text.out;
+}
+
 TEST(CliLearn, OutKeepsTraceAndPerStepRecord) {
   const std::string dir = make_temp_dir("learn-");
-  const auto r = run_cli("learn --robot quadruped --disable L2 --seed 1 --out " + dir + "/run");
+  const auto r = run_cli(
+      "learn --robot quadruped --disable L2 --learner annealing --seed 1 --out " + dir + "/run");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(read_file(fs::path(dir) / "run/learning.json"));
   const std::string trace = read_file(fs::path(dir) / "run/trace.csv");

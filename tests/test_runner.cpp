@@ -107,6 +107,37 @@ TEST(Scenarios, HexapodHas24UpToMirror) {
   EXPECT_EQ(s.back().disabled.size(), 3u);
 }
 
+// A document without a learner gives each run the default a CLI run of its options gets
+// (docs/learning.md "Which learner a run uses"): the prior for robust mode's leg losses, the
+// annealing for a joint fault, in paper mode and where the document gives the annealing's beta
+// (kept as given); every run records it.
+TEST(Scenarios, ADocumentWithoutALearnerGivesEachRunItsDefault) {
+  const auto learners = [](const nlohmann::json& doc) {
+    std::vector<std::string> out;
+    for (const Task& t : tasks_of(resolve_sweep(doc))) {
+      out.push_back(t.params.at("learning")
+                        .value("learner", nlohmann::json{{"name", "annealing"}})
+                        .at("name")
+                        .get<std::string>());
+    }
+    return out;
+  };
+  const nlohmann::json scenarios = {"R1+R3", "R2.CTr:locked"};
+  EXPECT_EQ(learners({{"scenarios", scenarios}, {"runs", 1}}),
+            (std::vector<std::string>{"prior", "annealing"}));
+  EXPECT_EQ(learners({{"scenarios", scenarios}, {"runs", 1}, {"learning", {{"mode", "paper"}}}}),
+            (std::vector<std::string>{"annealing", "annealing"}));
+  const nlohmann::json beta = {
+      {"scenarios", {"R1+R3"}}, {"runs", 1}, {"learning", {{"annealing", {{"beta", 2}}}}}};
+  EXPECT_EQ(learners(beta), (std::vector<std::string>{"annealing"}));
+  EXPECT_EQ(tasks_of(resolve_sweep(beta)).front().params.at("learning").at("annealing").at("beta"),
+            2);
+  EXPECT_EQ(learners({{"scenarios", {"R1+R3"}},
+                      {"runs", 1},
+                      {"learning", {{"learner", {{"name", "bayes"}}}}}}),
+            (std::vector<std::string>{"bayes"}));
+}
+
 TEST(Scenarios, QuadrupedAndBetaStudy) {
   std::vector<std::string> names;
   for (const Scenario& s : paper_scenarios(RobotKind::quadruped)) names.push_back(s.name);

@@ -239,7 +239,7 @@ def measure_window(start: Pose, end: Pose) -> Dict[str, float]:
 
 def learn(robot: Union[Robot, str] = "hexapod", *, terrain: Union[None, "Terrain", str] = None,
           disable: Legs = None, disable_at: int = 0, faults: Faults = None,
-          recoveries: Faults = None, mode: str = "robust", learner: str = "annealing",
+          recoveries: Faults = None, mode: str = "robust", learner: Optional[str] = None,
           learner_options: Optional[Mapping[str, Any]] = None, steering: str = "reflex",
           hold_windows: int = 3, monitor_windows: int = 6, max_episodes: int = 10,
           period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
@@ -254,7 +254,7 @@ def learn(robot: Union[Robot, str] = "hexapod", *, terrain: Union[None, "Terrain
 
 def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disable_at: int = 0,
            faults: Faults = None, recoveries: Faults = None, periods: Optional[Periods] = None, learn: bool = False, max_steps: int = 12000,
-           video: Optional[PathLike] = None, mode: str = "robust", learner: str = "annealing",
+           video: Optional[PathLike] = None, mode: str = "robust", learner: Optional[str] = None,
            learner_options: Optional[Mapping[str, Any]] = None, steering: str = "reflex",
            hold_windows: int = 3, monitor_windows: int = 6, max_episodes: int = 10,
            period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
@@ -305,7 +305,7 @@ class Annealer:
 class Learner:
     """A learner asked for the next periods and told what each trial measured (ask/tell)."""
 
-    def __init__(self, learner: str = "annealing", *, options: Any = None, seed: int = 1,
+    def __init__(self, learner: Optional[str] = None, *, options: Any = None, seed: int = 1,
                  robot: Union[Robot, str] = "hexapod", failed: Legs = None, periods: Periods = 4,
                  windows: Any = None, deviation_deg: Optional[float] = None,
                  mode: str = "robust", steering: str = "reflex", period_set: Any = None,
@@ -343,7 +343,7 @@ class Learner:
     def dataset(self) -> Optional[str]:
         """The dataset it learned from (the prior's), or None."""
 
-def _learning_options(*, mode: str = "robust", learner: str = "annealing",
+def _learning_options(*, mode: str = "robust", learner: Optional[str] = None,
                       learner_options: Optional[Mapping[str, Any]] = None,
                       steering: str = "reflex", hold_windows: int = 3, monitor_windows: int = 6,
                       max_episodes: int = 10, period_learning: bool = True, beta: float = 0.5,

@@ -414,3 +414,19 @@ def test_a_robot_carries_its_body():
     sim = multicpg.Simulation(real, disable="R1")
     sim.step(400)
     assert sim.measure(settle=0, window=400)["distance_m"] == cli["distance_m"]
+
+
+def test_the_default_learner_is_the_prior_where_the_robots_dataset_is():
+    """learner=None is robust mode's default (docs/learning.md "Which learner a run uses"): the
+    prior on the AMOSII hexapod's leg losses, the annealing in paper mode and with a beta, as the
+    CLI's; Learner() stands for such a run."""
+    run = multicpg.learn("hexapod", disable="R1,R3", max_trials=1, max_episodes=1)
+    assert run["options"]["learner"]["name"] == "prior"
+    assert run["learned_from"]["walked"] == "the steering reflex"
+    paper = multicpg.learn("hexapod", disable="R1,R3", mode="paper", max_trials=1)
+    assert "learner" not in paper["options"]
+    beta = multicpg.learn("hexapod", disable="R1,R3", beta=2, max_trials=1, max_episodes=1)
+    assert "learner" not in beta["options"] and beta["options"]["annealing"]["beta"] == 2
+    assert multicpg.Learner(failed="R1,R3", periods=4, windows=[(-20.0, -10.0, 0.5)]).name == "prior"
+    assert multicpg.Learner(failed="R1,R3", periods=4, windows=[(-20.0, -10.0)],
+                            mode="paper").name == "annealing"
