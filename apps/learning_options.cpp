@@ -3,26 +3,37 @@
 #include <fmt/format.h>
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
 
 #include "apps/flag_checks.h"
 #include "common/errors.h"
+#include "learning/choice_options.h"
 #include "learning/default_learner.h"
 #include "learning/learners.h"
 #include "learning/number_options.h"
 
 namespace multicpg::apps {
 
+namespace {
+
+const learning::NameOption& name_option(std::string_view flag) {
+  for (const learning::NameOption& option : learning::kLearningNames) {
+    if (option.flag == flag) return option;
+  }
+  throw std::logic_error("no learning option --" + std::string(flag));
+}
+
+}  // namespace
+
 std::vector<std::string> mode_names() {
-  return {std::string(learning::to_string(learning::Mode::robust)),
-          std::string(learning::to_string(learning::Mode::paper))};
+  return name_option("mode").names();
 }
 
 std::vector<std::string> steering_names() {
-  return {std::string(learning::to_string(learning::Steering::reflex)),
-          std::string(learning::to_string(learning::Steering::off))};
+  return name_option("steering").names();
 }
 
 std::vector<std::string> learner_name_list() {
@@ -52,7 +63,10 @@ void add_number_flag(CLI::App& cmd, LearningFlags& f, const learning::LearningNu
 
 // "--steering, --hold-windows, ... and --no-period-learning": the flags of robust mode alone.
 std::string robust_flags() {
-  std::vector<std::string> flags{"--steering"};
+  std::vector<std::string> flags;
+  for (const learning::NameOption& option : learning::kLearningNames) {
+    if (option.robust_only) flags.push_back("--" + std::string(option.flag));
+  }
   for (const learning::LearningNumber& option : learning::kLearningNumbers) {
     std::visit(
         [&](const auto& n) {
@@ -60,7 +74,9 @@ std::string robust_flags() {
         },
         option);
   }
-  flags.emplace_back("--no-period-learning");
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    if (option.robust_only) flags.push_back("--no-" + std::string(option.flag));
+  }
   std::string out;
   for (std::size_t i = 0; i < flags.size(); ++i) {
     out += (i == 0 ? "" : i + 1 == flags.size() ? " and " : ", ") + flags[i];
@@ -68,42 +84,50 @@ std::string robust_flags() {
   return out;
 }
 
+// One learning option set by a name, as learning/choice_options.h declares it.
+void add_name_flag(CLI::App& cmd, LearningFlags& f, const learning::NameOption& option) {
+  cmd.add_option_function<std::string>(
+         "--" + std::string(option.flag),
+         [&f, &option](const std::string& text) {
+           option.set(f.options, text);
+           if (option.robust_only) f.robust_only = true;
+         },
+         std::string(option.help))
+      ->check(one_of(option.names(), std::string(option.flag)))
+      ->default_str(std::string(option.get(f.options)));
+}
+
+// One switch, as --no-FLAG.
+void add_switch_flag(CLI::App& cmd, LearningFlags& f, const learning::SwitchOption& option) {
+  cmd.add_flag_callback(
+      "--no-" + std::string(option.flag),
+      [&f, &option] {
+        option.field(f.options) = false;
+        if (option.robust_only) f.robust_only = true;
+      },
+      std::string(option.help));
+}
+
 }  // namespace
 
 void add_learning_flags(CLI::App& cmd, LearningFlags& f, bool with_beta) {
   learning::CompensationOptions& o = f.options;
   o.seed = 1;
-  cmd.add_option_function<std::string>(
-         "--mode", [&o](const std::string& text) { o.mode = learning::parse_mode(text); },
-         "robust (yaw and path angle, several windows to accept, monitoring, steering) "
-         "or paper (paper §3 exactly: one window, yaw only)")
-      ->check(one_of(mode_names(), "mode"))
-      ->default_str(std::string(learning::to_string(o.mode)));
+  for (const learning::NameOption& option : learning::kLearningNames) {
+    add_name_flag(cmd, f, option);
+  }
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    add_switch_flag(cmd, f, option);
+  }
   cmd.add_option("--learner", o.learner.name,
                  "which learner searches: " + learning::learner_names() +
-                     " (docs/learning.md \"Which learner a run uses\")")
+                     " (default: the prior in robust mode where the robot's dataset is, else the "
+                     "annealing; docs/learning.md \"Which learner a run uses\")")
       ->check(one_of(learner_name_list(), "learner"))
-      ->each([&f](const std::string&) { f.learner_named = true; })
-      ->default_str("prior in robust mode where the robot's dataset is, else annealing");
+      ->each([&f](const std::string&) { f.learner_named = true; });
   cmd.add_option("--learner-option", f.learner_options,
                  "KEY=VALUE, one of the learner's options (repeatable; VALUE is read as JSON "
                  "when it is JSON, else as text), e.g. acquisition=ucb");
-  cmd.add_option_function<std::string>(
-         "--steering",
-         [&f](const std::string& text) {
-           f.options.steering = learning::parse_steering(text);
-           f.robust_only = true;
-         },
-         "robust mode: reflex (orientation reflex on the VRN steering inputs) or off")
-      ->check(one_of(steering_names(), "steering"))
-      ->default_str(std::string(learning::to_string(o.steering)));
-  cmd.add_flag_callback(
-      "--no-period-learning",
-      [&f] {
-        f.options.learn_periods = false;
-        f.robust_only = true;
-      },
-      "robust mode: keep the periods, compensate by steering alone");
   if (with_beta) {
     cmd.add_option("--beta", f.beta,
                    "the annealing's factor: 0 random search, 10 greedy (its learner option beta)")

@@ -29,9 +29,10 @@ std::vector<std::string> mode_names();
 std::vector<std::string> steering_names();
 std::vector<std::string> learner_name_list();
 
-// Adds --mode --learner --learner-option --steering --hold-windows --monitor-windows
-// --no-period-learning --beta --threshold --window --settle --max-trials --max-episodes
-// --step-budget --seed, each
+// Adds --mode --steering --no-period-learning (learning/choice_options.h) --learner
+// --learner-option --beta, the numeric options (learning/number_options.h: --hold-windows
+// --monitor-windows --threshold --window --settle --max-trials --max-episodes --step-budget) and
+// --seed, each
 // range shown in --help and checked at parse time (without --beta when `with_beta` is false: the
 // beta study sets it per run).
 void add_learning_flags(CLI::App& cmd, LearningFlags& flags, bool with_beta = true);

@@ -113,7 +113,7 @@ std::string param_type(std::string_view name) {
       {"model", "str"},
       {"body", "dict[str, Any] | None"},
       {"mode", "str"},
-      {"learner", "str"},
+      {"learner", "str | None"},
       {"learner_options", "dict[str, Any] | None"},
       {"steering", "str"},
       {"hold_windows", "int"},

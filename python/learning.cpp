@@ -27,6 +27,8 @@
 #include "experiments/sweep.h"
 #include "experiments/tunnel.h"
 #include "learning/annealing.h"
+#include "learning/choice_options.h"
+#include "learning/number_options.h"
 #include "learning/learners.h"
 #include "python/args.h"
 #include "python/run_args.h"
@@ -185,15 +187,18 @@ const Signature& learning_signature() {
 }
 
 py::dict checked_learning_options(const Keywords& k) {
-  const learning::CompensationOptions o = learning_options(k, nullptr);
+  learning::CompensationOptions o = learning_options(k, nullptr);  // read by the tables' fields
   py::dict out;
-  out["mode"] = std::string(learning::to_string(o.mode));
+  for (const learning::NameOption& option : learning::kLearningNames) {
+    out[py::str(learning::keyword(option.flag))] = std::string(option.get(o));
+  }
   // None: the run's default, which depends on the robot (learning/default_learner.h).
   out["learner"] = k["learner"].is_none() ? py::object(py::none()) : py::str(o.learner.name);
   out["learner_options"] = to_python(o.learner.options);
-  out["steering"] = std::string(learning::to_string(o.steering));
   add_number_options(out, o);
-  out["period_learning"] = o.learn_periods;
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    out[py::str(learning::keyword(option.flag))] = option.field(o);
+  }
   const std::optional<double> beta = learning::annealing_beta(o.learner);
   out["beta"] = beta ? py::object(py::float_(*beta)) : py::none();
   out["seed"] = o.seed;

@@ -9,6 +9,7 @@
 
 #include "common/errors.h"
 #include "learning/annealing.h"
+#include "learning/choice_options.h"
 #include "learning/default_learner.h"
 #include "learning/learners.h"
 #include "learning/number_options.h"
@@ -59,6 +60,30 @@ Params number_params(bool robust) {
   return out;
 }
 
+// The keywords of the learning options set by a name or a switch (learning/choice_options.h)
+// that are robust mode's alone (`robust`) or not, with their defaults.
+Params name_params(bool robust) {
+  const learning::CompensationOptions defaults;
+  Params out;
+  for (const learning::NameOption& option : learning::kLearningNames) {
+    if (option.robust_only == robust) {
+      out.push_back({learning::keyword(option.flag), py::str(std::string(option.get(defaults)))});
+    }
+  }
+  return out;
+}
+
+Params switch_params(bool robust) {
+  learning::CompensationOptions defaults;
+  Params out;
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    if (option.robust_only == robust) {
+      out.push_back({learning::keyword(option.flag), py::bool_(option.field(defaults))});
+    }
+  }
+  return out;
+}
+
 // What resolve_learner's keys are in Python.
 std::string learner_argument(const std::string& key) {
   const std::string options = "options.";
@@ -89,16 +114,12 @@ body::FaultTimeline fault_timeline(const robot::Morphology& morph, const Keyword
 }
 
 Params robust_params() {
-  return join(
-      {{{"steering", py::str(std::string(learning::to_string(learning::Steering::reflex)))}},
-       number_params(true),
-       {{"period_learning", py::bool_(true)}}});
+  return join({name_params(true), number_params(true), switch_params(true)});
 }
 
 Params learning_params() {
-  return join({{{"mode", py::str(std::string(learning::to_string(learning::Mode::robust)))},
-                {"learner", py::none()},
-                {"learner_options", py::none()}},
+  return join({name_params(false),
+               {{"learner", py::none()}, {"learner_options", py::none()}},
                robust_params(),
                {{"beta", py::float_(learning::kDefaultBeta)}},
                number_params(false),
@@ -109,8 +130,11 @@ learning::CompensationOptions learning_options(const Keywords& k,
                                                const experiments::RobotSpec* robot,
                                                const body::FaultTimeline& faults) {
   learning::CompensationOptions o;
-  const std::string mode = text(k["mode"], "mode");
-  o.mode = named("mode", [&] { return learning::parse_mode(mode); });
+  for (const learning::NameOption& option : learning::kLearningNames) {
+    const std::string name = learning::keyword(option.flag);
+    const std::string value = text(k[name], name);
+    named(name, [&] { option.set(o, value); });
+  }
   if (o.mode == learning::Mode::paper) {
     // Paper mode has none of these (the CLI refuses their flags the same way).
     std::string given;
@@ -124,10 +148,7 @@ learning::CompensationOptions learning_options(const Keywords& k,
                               " (given: " + given + ")");
     }
   }
-  const std::string steering = text(k["steering"], "steering");
-  const learning::Steering steer =
-      named("steering", [&] { return learning::parse_steering(steering); });
-  o.steering = o.mode == learning::Mode::paper ? learning::Steering::off : steer;
+  if (o.mode == learning::Mode::paper) o.steering = learning::Steering::off;  // as it runs
   for (const learning::LearningNumber& option : learning::kLearningNumbers) {
     std::visit(
         [&](const auto& n) {
@@ -146,7 +167,10 @@ learning::CompensationOptions learning_options(const Keywords& k,
         },
         option);
   }
-  o.learn_periods = flag(k["period_learning"], "period_learning");
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    const std::string name = learning::keyword(option.flag);
+    option.field(o) = flag(k[name], name);
+  }
   if (!k["learner"].is_none()) o.learner.name = text(k["learner"], "learner");
   const py::object options = k["learner_options"];
   if (!options.is_none()) {

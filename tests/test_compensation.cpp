@@ -9,6 +9,7 @@
 
 #include "common/angles.h"
 #include "common/errors.h"
+#include "learning/choice_options.h"
 #include "learning/compensation.h"
 #include "learning/json.h"
 #include "learning/number_options.h"
@@ -201,6 +202,34 @@ TEST(Compensation, EveryNumberOptionIsTheRecordKeyItNames) {
           }
         },
         option);
+  }
+}
+
+// The options set by a name or a switch (learning/choice_options.h) are the record keys they
+// name: each value they take is written under that key and reads back into the same member.
+TEST(Compensation, EveryNameAndSwitchOptionIsTheRecordKeyItNames) {
+  for (const NameOption& option : kLearningNames) {
+    SCOPED_TRACE(std::string(option.flag));
+    for (const std::string& name : option.names()) {
+      CompensationOptions o;
+      option.set(o, name);
+      const nlohmann::json j = o;
+      EXPECT_EQ(j.at(std::string(option.key)), name);
+      EXPECT_EQ(option.get(j.get<CompensationOptions>()), name);
+    }
+    EXPECT_EQ(option.get(CompensationOptions{}), option.names().front()) << "default first";
+    CompensationOptions o;
+    EXPECT_THROW(option.set(o, "sideways"), BadInput);
+  }
+  for (const SwitchOption& option : kLearningSwitches) {
+    SCOPED_TRACE(std::string(option.flag));
+    CompensationOptions o;
+    EXPECT_TRUE(option.field(o)) << "on by default";
+    option.field(o) = false;
+    const nlohmann::json j = o;
+    EXPECT_EQ(j.at(std::string(option.key)), false);
+    CompensationOptions back = j.get<CompensationOptions>();
+    EXPECT_FALSE(option.field(back));
   }
 }
 
