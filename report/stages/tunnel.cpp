@@ -13,6 +13,7 @@
 #include "experiments/learning_run.h"
 #include "experiments/paper.h"
 #include "experiments/scenarios.h"
+#include "learning/default_learner.h"
 #include "report/film.h"
 #include "report/replay/page.h"
 #include "report/stages/stage.h"
@@ -116,6 +117,8 @@ experiments::TunnelOutcome learn_and_walk(const StageContext& ctx, const sim::Si
   }
   spec.start = experiments::learning_start(l.mode);
   spec.faults = body::fail_at(disabled, 0);
+  // The learner `tunnel --learn` takes (docs/learning.md "Which learner a run uses").
+  l.learner = learning::default_learner({l, spec.robot.kind, false, false, spec.faults});
   experiments::validate(spec);
   return experiments::run_tunnel(spec, corridor);
 }
