@@ -12,6 +12,9 @@ finished runs are kept in OUT/runs.
 
     /usr/bin/python3 scripts/tunnel_check.py --out tunnel-check --learners annealing,prior
 
+`--robot FILE.toml` runs a robot file of the hexapod layout instead, in a tunnel scaled to it
+(`tunnel --scale-tunnel`).
+
 `--scenarios` takes leg sets and faults ("R1+R3", "R1.TC:locked") or the groups `leg-losses`
 (all 41) and `faults` (the 12 below); `--seeds N` runs seeds 1..N (default 10).
 """
@@ -42,13 +45,15 @@ SEEDS = 10
 WITHIN = 10  # trials: the bound docs/learning.md "The default run in the tunnel" sets a first episode
 
 
-def run(exe, out, scenario, learner, seed):
+def run(exe, out, scenario, learner, seed, robot):
     path = out / f"{scenario}_{learner}_{seed}.json"
     if path.exists():
         return
     fault = ["--fault", f"{scenario}@0"] if ":" in scenario else ["--disable", scenario]
-    result = subprocess.run([exe, "tunnel", *fault, "--learn", "--learner", learner, "--seed",
-                             str(seed), "--json"], capture_output=True, text=True)
+    # A robot file walks the tunnel scaled to its size (docs/robots.md "Example robots").
+    body = ["--robot", robot, "--scale-tunnel"] if robot else []
+    result = subprocess.run([exe, "tunnel", *body, *fault, "--learn", "--learner", learner,
+                             "--seed", str(seed), "--json"], capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"tunnel_check: {scenario} {learner} {seed}: {result.stderr.strip()}")
     tmp = path.with_suffix(".tmp")
@@ -85,6 +90,9 @@ def main():
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--seeds", type=int, default=SEEDS, help="seeds 1..N of each pair")
     parser.add_argument("--multicpg", default=str(ROOT / "build" / "multicpg"))
+    parser.add_argument("--robot", default="",
+                        help="a robot file (FILE.toml; --scenarios then names its legs), its tunnel scaled "
+                             "(default: the AMOSII hexapod)")
     parser.add_argument("--learners", default="annealing,prior",
                         help="comma-separated, of " + ", ".join(KNOWN_LEARNERS))
     parser.add_argument("--scenarios", default="leg-losses,faults",
@@ -106,7 +114,7 @@ def main():
     runs_dir = out / "runs"
     runs_dir.mkdir(parents=True, exist_ok=True)
     with ThreadPoolExecutor(args.jobs) as pool:
-        for f in [pool.submit(run, args.multicpg, runs_dir, s, l, k)
+        for f in [pool.submit(run, args.multicpg, runs_dir, s, l, k, args.robot)
                   for s in scenarios for l in learners for k in range(1, args.seeds + 1)]:
             f.result()
 
