@@ -77,11 +77,10 @@ void run(const BenchmarkOptions& o) {
       o.window_order.empty()
           ? (probe.reflex ? learning::WindowOrder::walked : learning::WindowOrder::drawn)
           : learning::parse_window_order(o.window_order);
-  if (o.episodes > 1 && (mode == learning::Mode::paper ||
-                         spec.protocol.window_order != learning::WindowOrder::walked)) {
-    throw BadInput(
-        "--episodes: more than one replays robust mode's monitoring, which walks a "
-        "combination's windows on in the order walked (--window-order walked)");
+  try {
+    learning::check_episodes(spec.protocol);
+  } catch (const BadInput& e) {
+    throw BadInput(std::string("--episodes: ") + e.what());
   }
   if (o.hold_windows > probe.windows) {
     throw BadInput("--hold-windows: the dataset measured " + std::to_string(probe.windows) +

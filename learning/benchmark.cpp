@@ -47,6 +47,16 @@ WindowOrder parse_window_order(std::string_view text) {
   throw BadInput(unknown_name("window order", text, kWindowOrderNames.names()));
 }
 
+void check_episodes(const TrialProtocol& protocol) {
+  if (protocol.episodes < 1) throw BadInput("a run has at least one episode");
+  if (protocol.episodes > 1 &&
+      (protocol.yaw_only || protocol.window_order != WindowOrder::walked)) {
+    throw BadInput(
+        "more than one episode replays robust mode's monitoring, which walks a "
+        "combination's windows on in the order walked (--window-order walked)");
+  }
+}
+
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
                      const LearnerChoice& choice, const LearnerData& data,
                      const SearchBounds& search, const TrialProtocol& protocol, std::uint64_t seed,
@@ -66,13 +76,7 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
                    ", which paper mode does not use: replay paper mode on a dataset of periods "
                    "alone");
   }
-  if (protocol.episodes < 1) throw BadInput("a run has at least one episode");
-  if (protocol.episodes > 1 &&
-      (protocol.yaw_only || protocol.window_order != WindowOrder::walked)) {
-    throw BadInput(
-        "more than one episode replays robust mode's monitoring, which walks a "
-        "combination's windows on in the order walked (--window-order walked)");
-  }
+  check_episodes(protocol);
   if (dataset.reflex && protocol.window_order == WindowOrder::drawn) {
     throw BadInput("the dataset was walked with " + dataset.walked() +
                    " up to each combination's first window over the threshold, so its windows "

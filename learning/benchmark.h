@@ -43,6 +43,10 @@ struct TrialProtocol {
   int episodes = 1;
 };
 
+// Throws BadInput for episodes a replay cannot walk: fewer than one, or more than one where no
+// later window follows a trial in order (paper mode, drawn windows).
+void check_episodes(const TrialProtocol& protocol);
+
 // What a replayed learner is told about the fault (docs/learning.md "What a learner is told"):
 // the scenario's failed legs, as every run tells them, or nothing.
 enum class Told { failed_legs, nothing };
