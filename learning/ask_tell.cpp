@@ -39,7 +39,7 @@ LearnerSetup learner_setup(const AskTellSetup& s) {
 
 }  // namespace
 
-AskTell::AskTell(const AskTellSetup& setup) : setup_(learner_setup(setup)) {
+AskTell::AskTell(const AskTellSetup& setup) : asked_setup_(setup), setup_(learner_setup(setup)) {
   within("learner", [&] { choice_ = resolve_learner(setup.learner); });
   within("search", [&] { validate(setup_.search); });
   within("learner", [&] {
@@ -57,6 +57,35 @@ std::optional<Periods> AskTell::ask() {
   return next;
 }
 
+void AskTell::next_episode(const Periods& start, const std::vector<body::WindowMeasure>& windows) {
+  AskTellSetup next = asked_setup_;
+  next.start = start;
+  next.start_windows = windows;
+  next.start_deviation_deg.reset();
+  start_episode(std::move(next));
+}
+
+void AskTell::next_episode(const Periods& start, double deviation_deg) {
+  AskTellSetup next = asked_setup_;
+  next.start = start;
+  next.start_windows.clear();
+  next.start_deviation_deg = deviation_deg;
+  start_episode(std::move(next));
+}
+
+void AskTell::start_episode(AskTellSetup next) {
+  if (asked_) {
+    throw std::logic_error("next_episode(): the asked periods were not told yet (call tell)");
+  }
+  // Episode k + 1 draws from its own stream, as a run's (learning/compensation.cpp).
+  next.seed = asked_setup_.seed + static_cast<std::uint64_t>(episode_);
+  LearnerSetup s = learner_setup(next);
+  s.earlier = memory_;
+  learner_ = make_learner(choice_, s, data_);
+  setup_ = std::move(s);
+  ++episode_;
+}
+
 TrialRecord AskTell::tell(const std::vector<body::WindowMeasure>& windows) {
   return record({setup_.criterion.error(windows), windows});
 }
@@ -69,6 +98,7 @@ TrialRecord AskTell::record(const Measurement& m) {
   if (!asked_) throw std::logic_error("tell(): no periods were asked (call ask first)");
   asked_ = false;
   trace_.push_back(learner_->observe(m));
+  memory_.push_back({trace_.back().periods, m.windows});
   return trace_.back();
 }
 

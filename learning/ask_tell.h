@@ -50,6 +50,18 @@ class AskTell {
   TrialRecord tell(const std::vector<body::WindowMeasure>& windows);
   TrialRecord tell(double deviation_deg);
 
+  // Starts the next episode, as robust mode's monitoring does when the combination walked on
+  // deviates (docs/learning.md "Memory across episodes"): a new learner from C0 = `start` with
+  // what it measured, drawing from the seed + the episodes before it, and told every trial of
+  // the earlier episodes since the last forget(). Throws std::logic_error when the last asked
+  // periods were not told; OptionError("start") or ("start_windows") as the constructor.
+  void next_episode(const Periods& start, const std::vector<body::WindowMeasure>& windows);
+  void next_episode(const Periods& start, double deviation_deg);
+  // What the earlier trials measured no longer describes the body (a fault came, as the run
+  // forgets): the next episode is told none of them.
+  void forget() { memory_.clear(); }
+  int episode() const { return episode_; }
+
   bool done() const { return learner_->stop() != StopReason::running; }
   StopReason reason() const { return learner_->stop(); }
   Answer answer() const { return learner_->answer(); }
@@ -60,12 +72,16 @@ class AskTell {
 
  private:
   TrialRecord record(const Measurement& m);
+  void start_episode(AskTellSetup next);
 
+  AskTellSetup asked_setup_;  // as made, for the next episode's learner
   LearnerChoice choice_;
   LearnerSetup setup_;
   LearnerData data_;
   std::unique_ptr<Learner> learner_;
   bool asked_ = false;
+  int episode_ = 1;
+  std::vector<EarlierTrial> memory_;  // every trial told since the last forget()
   std::vector<TrialRecord> trace_;
 };
 

@@ -152,6 +152,25 @@ class Learner {
     }
   }
 
+  void next_episode(py::handle start, py::handle windows, py::handle deviation) {
+    if (windows.is_none() == deviation.is_none()) {
+      value_error("next_episode",
+                  "takes what C0 measured: windows=[...] or deviation_deg=E (one of them)");
+    }
+    const learning::Periods p = periods(robot_->morph(), start, "periods");
+    try {
+      if (windows.is_none()) {
+        learner_->next_episode(p, real(deviation, "deviation_deg", kDeviationLimits));
+      } else {
+        learner_->next_episode(p, windows_of(windows, "windows"));
+      }
+    } catch (const std::logic_error& e) {
+      throw py::value_error(e.what());
+    }
+  }
+  void forget() { learner_->forget(); }
+  int episode() const { return learner_->episode(); }
+
   bool done() const { return learner_->done(); }
   std::string reason() const { return std::string(learning::to_string(learner_->reason())); }
   py::dict answer() const {
@@ -253,6 +272,21 @@ void register_ask_tell(py::module_& m) {
           "steering_effort]), ...] (E is their worst, judged as the run judges), or its E\n"
           "(deviation_deg). Returns the trial's record: trial, periods, deviation_deg,\n"
           "accepted and the learner's details.")
+      .def(
+          "next_episode",
+          [](Learner& l, PeriodsArg periods, AnyArg windows, OptionalFloatArg deviation_deg) {
+            l.next_episode(periods, windows, deviation_deg);
+          },
+          py::kw_only(), arg("periods"), arg("windows") = py::none(),
+          arg("deviation_deg") = py::none(),
+          "Starts the next episode, as robust mode's monitoring does when the combination\n"
+          "walked on deviates: a new learner from C0 = periods, measured as windows=[...] or\n"
+          "deviation_deg=E, drawing from seed + the episodes before it and told every trial\n"
+          "since the last forget(); trials are numbered from 1 again, the trace goes on.")
+      .def("forget", &Learner::forget,
+           "The trials told so far no longer describe the robot (a fault came): the next\n"
+           "episode is told none of them, as a run forgets.")
+      .def_property_readonly("episode", &Learner::episode, "the episode asked now, from 1")
       .def_property_readonly("done", &Learner::done, "whether it wants no more trials")
       .def_property_readonly("reason", &Learner::reason,
                              "running, below threshold, trial cap or search space exhausted")

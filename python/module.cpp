@@ -102,6 +102,8 @@ PYBIND11_MODULE(_multicpg, m) {
   m.attr("DEFAULT_MAX_TRIALS") = learning::kDefaultMaxTrials;
   m.attr("DEFAULT_BETA") = learning::kDefaultBeta;
   m.attr("DEFAULT_HOLD_WINDOWS") = learning::kDefaultHoldWindows;
+  m.attr("DEFAULT_MONITOR_WINDOWS") = learning::kDefaultMonitorWindows;
+  m.attr("DEFAULT_MAX_EPISODES") = learning::kDefaultMaxEpisodes;
   m.attr("DETECTION_WINDOWS") = learning::kDefaultDetectionWindows;
   m.attr("STEERING_MAX_EFFORT") = learning::SteeringParams{}.max_effort;
   m.attr("PERIOD_SET") = py::tuple(py::cast(learning::AnnealingParams{}.period_set));

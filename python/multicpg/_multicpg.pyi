@@ -16,6 +16,8 @@ DEFAULT_WINDOW_STEPS: int
 DEFAULT_MAX_TRIALS: int
 DEFAULT_BETA: float
 DEFAULT_HOLD_WINDOWS: int
+DEFAULT_MONITOR_WINDOWS: int
+DEFAULT_MAX_EPISODES: int
 DETECTION_WINDOWS: int
 STEERING_MAX_EFFORT: float
 PERIOD_SET: Tuple[int, ...]
@@ -315,6 +317,14 @@ class Learner:
     def tell(self, *, windows: Any = None,
              deviation_deg: Optional[float] = None) -> Dict[str, Any]:
         """What the asked periods measured (windows or E); the trial's record."""
+    def next_episode(self, *, periods: Periods, windows: Any = None,
+                     deviation_deg: Optional[float] = None) -> None:
+        """Starts the next episode from C0 = periods, told every trial since forget()."""
+    def forget(self) -> None:
+        """The next episode is told none of the trials so far (a fault came)."""
+    @property
+    def episode(self) -> int:
+        """The episode asked now, from 1."""
     @property
     def done(self) -> bool:
         """Whether it wants no more trials."""

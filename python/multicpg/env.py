@@ -25,7 +25,8 @@ from ._multicpg import (DETECTION_WINDOWS, PERIOD_SET, STEERING_MAX_EFFORT, Anne
                         Simulation, _learning_options, render)
 # The defaults of the learning keywords, for code written against the environment.
 from ._multicpg import (DEFAULT_BETA, DEFAULT_HOLD_WINDOWS, DEFAULT_MAX_TRIALS,  # noqa: F401
-                        DEFAULT_THRESHOLD_DEG, DEFAULT_WINDOW_STEPS)
+                        DEFAULT_MAX_EPISODES, DEFAULT_MONITOR_WINDOWS, DEFAULT_THRESHOLD_DEG,
+                        DEFAULT_WINDOW_STEPS)
 
 try:  # gymnasium is not in Debian 12; its spaces and Env are used where it is installed
     import gymnasium as _gymnasium

@@ -1,5 +1,6 @@
 """Ask/tell (multicpg.Learner): driven by our own simulation it gives learn()'s trials for every
-learner, and both examples of docs/python.md run."""
+learner, in the default mode (episodes included) and in paper mode, and both examples of
+docs/python.md run."""
 
 import importlib.util
 import subprocess
@@ -22,11 +23,7 @@ def example(name):
     return module
 
 
-@pytest.mark.parametrize("learner", multicpg.LEARNERS)
-def test_ask_tell_from_a_users_loop_retraces_learn(learner):
-    learned = multicpg.learn("hexapod", disable="R1", mode="paper", learner=learner, seed=SEED,
-                             max_trials=MAX_TRIALS, progress=False)
-    agent = example("ask_tell_simulation").learn_in_my_loop(learner, "R1", SEED, MAX_TRIALS)
+def same_trials(agent, learned, learner):
     assert learned["trace"], learner
     assert len(agent.trace) == len(learned["trace"]), learner
     for mine, theirs in zip(agent.trace, learned["trace"]):
@@ -36,7 +33,28 @@ def test_ask_tell_from_a_users_loop_retraces_learn(learner):
         assert mine["accepted"] == theirs["accepted"], learner
     assert agent.reason == learned["reason"]
     assert agent.answer["periods"] == learned["periods"]
-    assert agent.done and agent.ask() is None
+
+
+@pytest.mark.parametrize("learner", multicpg.LEARNERS)
+def test_ask_tell_from_a_users_loop_retraces_learns_default_mode(learner):
+    # Robust mode with the reflex, as learn() runs by default: with a cap of 3 trials every
+    # learner needs more than one episode on R1+R3+L2, so the loop's monitoring and the memory
+    # next_episode() carries over are retraced too.
+    learned = multicpg.learn("hexapod", disable="R1,R3,L2", learner=learner, seed=SEED,
+                             max_trials=3, progress=False)
+    agent = example("ask_tell_simulation").learn_in_my_loop(learner, "R1,R3,L2", SEED, 3)
+    same_trials(agent, learned, learner)
+    assert agent.episode == len(learned["episodes"]) >= 2, learner
+
+
+@pytest.mark.parametrize("learner", multicpg.LEARNERS)
+def test_ask_tell_from_a_users_loop_retraces_learn_in_paper_mode(learner):
+    learned = multicpg.learn("hexapod", disable="R1", mode="paper", learner=learner, seed=SEED,
+                             max_trials=MAX_TRIALS, progress=False)
+    agent = example("ask_tell_simulation").learn_in_my_loop(learner, "R1", SEED, MAX_TRIALS,
+                                                            mode="paper")
+    same_trials(agent, learned, learner)
+    assert agent.done and agent.ask() is None and agent.episode == 1
 
 
 def test_tell_judges_windows_as_the_run_does_and_refuses_misuse():
@@ -61,6 +79,16 @@ def test_tell_judges_windows_as_the_run_does_and_refuses_misuse():
         multicpg.Learner("random", failed="R1")
     with pytest.raises(ValueError, match="learner"):
         multicpg.Learner("simplex", failed="R1", deviation_deg=20.0)
+    # A new episode only between a tell and the next ask; it numbers its trials from 1 again.
+    agent.ask()
+    with pytest.raises(ValueError, match="not told"):
+        agent.next_episode(periods=4, deviation_deg=12.0)
+    agent.tell(deviation_deg=30.0)
+    with pytest.raises(ValueError, match="one of them"):
+        agent.next_episode(periods=4)
+    agent.next_episode(periods=4, deviation_deg=12.0)
+    assert agent.episode == 2 and agent.ask() is not None
+    assert agent.tell(deviation_deg=30.0)["trial"] == 1 and agent.trials == 3
     prior = multicpg.Learner("prior", failed="R1", deviation_deg=20.0, steering="off")
     assert prior.dataset.endswith("hexapod")
 
