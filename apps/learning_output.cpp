@@ -125,6 +125,7 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
   // Robust mode's learner depends on the robot's data (learning/default_learner.h): always named.
   if (options.mode == learning::Mode::robust || options.learner.name != learning::kPaperLearner)
     out << ", learner " << options.learner.name;
+  if (!options.tell_fault) out << " told nothing of the fault";
   if (const std::optional<double> beta = learning::annealing_beta(options.learner))
     out << ", beta " << *beta;
   out << ", threshold " << degrees(options.search.threshold_deg) << ", window "

@@ -58,11 +58,12 @@ learning::LearnerData learner_data(const RunSpec& spec) {
   learning::LearnerData data;
   within("learning", [&] {
     within("learner", [&] {
-      // Told the legs that fail, as every episode's learner is (learning/compensation.cpp).
-      data = learning::check_learner(spec.learning->learner, spec.robot.kind,
-                                     learning::ToldFault::legs(body::failing_legs(spec.faults)),
-                                     learning::criterion(*spec.learning),
-                                     spec.learning->search.period_set);
+      // Told what every episode's learner is told (learning/compensation.cpp).
+      data = learning::check_learner(
+          spec.learning->learner, spec.robot.kind,
+          spec.learning->tell_fault ? learning::ToldFault::legs(body::failing_legs(spec.faults))
+                                    : learning::ToldFault::nothing(),
+          learning::criterion(*spec.learning), spec.learning->search.period_set);
     });
   });
   return data;

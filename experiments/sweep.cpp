@@ -11,6 +11,7 @@
 #include "experiments/learner_table.h"
 #include "experiments/run_json.h"
 #include "experiments/scenarios.h"
+#include "learning/choice_options.h"
 #include "learning/default_learner.h"
 #include "learning/json.h"
 #include "robot/body_models.h"
@@ -370,6 +371,18 @@ void canonical_annealing(json& learning_point) {
   if (learner == json(learning::LearnerChoice{})) learning_point.erase("learner");
 }
 
+// A switch its record writes only when off (learning/json.h) reads back as given only without
+// its key when on.
+void canonical_switches(json& learning_point) {
+  static const json record = learning::CompensationOptions{};
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    const std::string key(option.key);
+    if (!record.contains(key) && learning_point.value(key, json()) == json(true)) {
+      learning_point.erase(key);
+    }
+  }
+}
+
 }  // namespace
 
 Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
@@ -413,6 +426,10 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
 
   // Learning and sim: defaults, the document's values, the grid.
   json learning = learning_document(learning::CompensationOptions{}, 0);
+  // A switch a record writes only when off (learning/json.h) is a document's option all the same.
+  for (const learning::SwitchOption& option : learning::kLearningSwitches) {
+    learning.emplace(std::string(option.key), true);
+  }
   json learning_given = doc.value("learning", json::object());
   const std::optional<json> learner_given = take_learner(learning_given);
   // A document that sets the annealing's beta asks for the annealing (default_learner).
@@ -483,6 +500,7 @@ Sweep resolve_sweep(const json& doc, const SweepLimits& limits) {
     // annealing, no other option) is left out (learning/json.h): a point reads back as given only
     // in that form.
     canonical_annealing(learning_point);
+    canonical_switches(learning_point);
     check_interrupted();  // a large sweep takes seconds to resolve
     const auto base = options_from<learning::CompensationOptions>(learning_point, "learning");
     const auto sim_options = options_from<sim::SimOptions>(canonical_sim(sim_point), "sim");

@@ -61,10 +61,15 @@ struct SwitchOption {
   bool& (*field)(CompensationOptions&);
 };
 
-inline const std::array<SwitchOption, 1> kLearningSwitches{
+inline const std::array<SwitchOption, 2> kLearningSwitches{
     SwitchOption{"period-learning", "learn_periods",
                  "robust mode: keep the periods, compensate by steering alone", true,
                  [](CompensationOptions& o) -> bool& { return o.learn_periods; }},
+    SwitchOption{"tell-fault", "tell_fault",
+                 "tell the learner nothing about the fault: it searches every leg's period, the "
+                 "failed legs' too (the price of not knowing; docs/learning.md \"What a learner "
+                 "is told\")",
+                 false, [](CompensationOptions& o) -> bool& { return o.tell_fault; }},
 };
 
 }  // namespace multicpg::learning

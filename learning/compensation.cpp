@@ -205,7 +205,7 @@ LearnerSetup learner_setup(const body::Body& body, const CompensationOptions& op
   LearnerSetup setup;
   setup.robot = body.controller_model().morphology.kind;
   setup.start = start;
-  setup.told = ToldFault::legs(std::move(failed));
+  setup.told = options.tell_fault ? ToldFault::legs(std::move(failed)) : ToldFault::nothing();
   setup.start_deviation_deg = start_deviation_deg;
   setup.start_windows = std::move(start_windows);
   setup.criterion = criterion(options);

@@ -99,6 +99,10 @@ struct CompensationOptions {
   int max_episodes = kDefaultMaxEpisodes;             // robust mode
   long step_budget = kDefaultStepBudget;              // both modes (see above)
   bool learn_periods = true;                          // robust mode; false = steering alone
+  // Whether each episode's learner is told which legs failed (paper §3: a lost leg's period is
+  // never picked); false = told nothing, it searches every leg's period (docs/learning.md
+  // "What a learner is told").
+  bool tell_fault = true;
   Steering steering = Steering::reflex;               // robust mode
   SteeringParams steering_params;
   std::uint64_t seed = 0;

@@ -38,8 +38,9 @@ bool leg_losses_only(const body::FaultTimeline& faults) {
 LearnerChoice default_learner(const DefaultLearnerQuery& query) {
   const CompensationOptions& o = query.options;
   LearnerChoice choice;
-  if (o.mode == Mode::robust && o.learn_periods && !query.beta_given && !query.robot_file &&
-      leg_losses_only(query.faults) && repository_dataset_fits(query.robot, o)) {
+  if (o.mode == Mode::robust && o.learn_periods && o.tell_fault && !query.beta_given &&
+      !query.robot_file && leg_losses_only(query.faults) &&
+      repository_dataset_fits(query.robot, o)) {
     choice.name = std::string(kPriorLearner);
   }
   return resolve_learner(choice);

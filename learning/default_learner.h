@@ -28,7 +28,8 @@ bool leg_losses_only(const body::FaultTimeline& faults);
 // the reflex or without), in robust mode learning periods under leg losses: the learner the live
 // tunnel check shows fastest (docs/learning.md "The default run in the tunnel"). The paper's
 // annealing everywhere else: paper mode, a beta given, a robot file, the octopod, a fault other
-// than a lost leg, no dataset installed. Resolved, every default filled in (resolve_learner).
+// than a lost leg, a learner told nothing about the fault (the benchmark's price of not knowing
+// is highest for the prior), no dataset installed. Resolved, every default filled in (resolve_learner).
 LearnerChoice default_learner(const DefaultLearnerQuery& query);
 
 }  // namespace multicpg::learning

@@ -46,6 +46,8 @@ inline void to_json(nlohmann::json& nlohmann_json_j, const CompensationOptions& 
   NLOHMANN_JSON_EXPAND(NLOHMANN_JSON_PASTE(NLOHMANN_JSON_TO, MULTICPG_COMPENSATION_FIELDS))
   nlohmann_json_j["annealing"] = annealing_params(
       nlohmann_json_t.search, annealing_beta(nlohmann_json_t.learner).value_or(kDefaultBeta));
+  // Written only when off, so every run recorded before it existed reads back byte for byte.
+  if (!nlohmann_json_t.tell_fault) nlohmann_json_j["tell_fault"] = false;
   LearnerChoice without_beta = nlohmann_json_t.learner;
   if (without_beta.name == kPaperLearner) without_beta.options.erase("beta");
   if (without_beta != LearnerChoice{}) nlohmann_json_j["learner"] = nlohmann_json_t.learner;
@@ -59,6 +61,7 @@ inline void from_json(const nlohmann::json& nlohmann_json_j, CompensationOptions
   const AnnealingParams annealing = nlohmann_json_j.value(
       "annealing", annealing_params(nlohmann_json_default_obj.search, kDefaultBeta));
   nlohmann_json_t.search = {annealing.period_set, annealing.threshold_deg, annealing.max_trials};
+  nlohmann_json_t.tell_fault = nlohmann_json_j.value("tell_fault", true);
   nlohmann_json_t.learner = nlohmann_json_j.value("learner", LearnerChoice{});
   LearnerChoice& learner = nlohmann_json_t.learner;
   if (learner.name == kPaperLearner && learner.options.is_object()) {

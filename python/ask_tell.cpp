@@ -109,6 +109,7 @@ class Learner {
     s.search.threshold_deg = real(threshold, "threshold", learning::kThresholdLimits);
     s.search.max_trials = whole(max_trials, "max_trials", learning::kMaxTrialsLimits);
     run.search = s.search;
+    run.tell_fault = s.told.told();
     s.criterion = learning::criterion(run);
     // None: the default of the run it stands for (learning/default_learner.h), as learn()'s.
     s.learner.name =

@@ -119,6 +119,7 @@ std::string param_type(std::string_view name) {
       {"hold_windows", "int"},
       {"monitor_windows", "int"},
       {"period_learning", "bool"},
+      {"tell_fault", "bool"},
       {"beta", "float"},
       {"threshold", "float"},
       {"window", "int"},

@@ -123,6 +123,7 @@ Params learning_params() {
                robust_params(),
                {{"beta", py::float_(learning::kDefaultBeta)}},
                number_params(false),
+               switch_params(false),
                {{"seed", py::int_(1)}}});
 }
 

@@ -93,6 +93,7 @@ TEST(CliLearn, TheDefaultLearnerIsThePriorWhereTheRobotsDatasetIsElseTheAnnealin
   EXPECT_EQ(learner("--robot octopod --disable R1,R3"), "annealing");  // no dataset
   EXPECT_EQ(learner("--fault R2.CTr:passive@0"), "annealing");  // a body no dataset describes
   EXPECT_EQ(learner("--disable R1,R3 --learner annealing"), "annealing");
+  EXPECT_EQ(learner("--disable R1,R3 --no-tell-fault"), "annealing");  // docs/learning.md
   const std::string robot_file =
       std::string(MULTICPG_SOURCE_DIR) + "/examples/robots/hobby_hexapod.toml";
   EXPECT_EQ(learner("--robot " + robot_file + " --disable R1,R3 --learner prior"), "prior");
@@ -102,6 +103,38 @@ TEST(CliLearn, TheDefaultLearnerIsThePriorWhereTheRobotsDatasetIsElseTheAnnealin
   EXPECT_NE(text.out.find("robust mode (steering reflex, 3 windows to hold), faults R1+R3 fail@0, "
                           "learner prior,"),
             std::string::npos)
+      << text.out;
+}
+
+// --no-tell-fault: the learner is told nothing of the fault, so it may change a failed leg's
+// period (the prior does in its first trial here; told the legs it never does); the record keeps
+// the option, the header says it, and a record without it reads as told.
+TEST(CliLearn, ALearnerToldNothingSearchesTheFailedLegsToo) {
+  const auto trials = [](const std::string& args) {
+    const auto r = run_cli(
+        "learn --disable R1,R3,L2 --learner prior --max-trials 2 "
+        "--max-episodes 1 --json " +
+        args);
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << args << "\n" << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto failed_changed = [](const nlohmann::json& run) {
+    bool changed = false;
+    for (const nlohmann::json& t : run.at("trace")) {
+      for (const char* leg : {"R1", "R3", "L2"}) changed = changed || t.at("periods").at(leg) != 4;
+    }
+    return changed;
+  };
+  const nlohmann::json told = trials("");
+  const nlohmann::json blind = trials("--no-tell-fault");
+  EXPECT_FALSE(told.at("options").contains("tell_fault")) << "written only when off";
+  EXPECT_EQ(blind.at("options").at("tell_fault"), false);
+  EXPECT_FALSE(failed_changed(told));
+  EXPECT_TRUE(failed_changed(blind));
+  const auto text = run_cli(
+      "learn --disable R1,R3,L2 --no-tell-fault --learner prior "
+      "--max-trials 1 --max-episodes 1");
+  EXPECT_NE(text.out.find("learner prior told nothing of the fault,"), std::string::npos)
       << text.out;
 }
 

@@ -136,6 +136,16 @@ TEST(Scenarios, ADocumentWithoutALearnerGivesEachRunItsDefault) {
                       {"runs", 1},
                       {"learning", {{"learner", {{"name", "bayes"}}}}}}),
             (std::vector<std::string>{"bayes"}));
+  // tell_fault may be a grid axis; told nothing of the fault a run's default is the annealing,
+  // and its record says so (told, the record leaves the key out, as runs were recorded before).
+  const nlohmann::json told = {
+      {"scenarios", {"R1+R3"}}, {"runs", 1}, {"learning", {{"tell_fault", {true, false}}}}};
+  EXPECT_EQ(learners(told), (std::vector<std::string>{"prior", "annealing"}));
+  const std::vector<Task> tasks = tasks_of(resolve_sweep(told));
+  EXPECT_FALSE(tasks.front().params.at("learning").contains("tell_fault"));
+  EXPECT_EQ(tasks.back().params.at("learning").at("tell_fault"), false);
+  EXPECT_THROW(resolve_sweep({{"scenarios", {"R1"}}, {"learning", {{"tell_fault", "no"}}}}),
+               OptionError);
 }
 
 TEST(Scenarios, QuadrupedAndBetaStudy) {

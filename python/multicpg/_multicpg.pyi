@@ -246,7 +246,7 @@ def learn(robot: Union[Robot, str] = "hexapod", *, terrain: Union[None, "Terrain
           hold_windows: int = 3, monitor_windows: int = 6, max_episodes: int = 10,
           period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
           window: int = 400, settle: Optional[int] = None, max_trials: int = 200,
-          step_budget: int = 1000000, seed: int = 1,
+          step_budget: int = 1000000, tell_fault: bool = True, seed: int = 1,
           record: bool = False, hardware: Optional[PathLike] = None, lock_step: bool = False,
           observer: Observer = None, progress: Progress = True) -> Dict[str, Any]:
     """`multicpg learn`: the dict of `learn --json` plus trace_arrays (a model-based learner's
@@ -261,7 +261,7 @@ def tunnel(*, robot: Union[Robot, str] = "hexapod", disable: Legs = None, disabl
            hold_windows: int = 3, monitor_windows: int = 6, max_episodes: int = 10,
            period_learning: bool = True, beta: float = 0.5, threshold: float = 8.0,
            window: int = 400, settle: Optional[int] = None, max_trials: int = 200,
-           step_budget: int = 1000000, seed: int = 1,
+           step_budget: int = 1000000, tell_fault: bool = True, seed: int = 1,
            control_dt: float = 0.037, physics_dt: Optional[float] = None,
            servo_gain: Optional[float] = None, terrain: Union["Terrain", str] = "flat",
            model: str = "paper-sim", body: Optional[Mapping[str, Any]] = None,
@@ -359,7 +359,7 @@ def _learning_options(*, mode: str = "robust", learner: Optional[str] = None,
                       max_episodes: int = 10, period_learning: bool = True, beta: float = 0.5,
                       threshold: float = 8.0, window: int = 400, settle: Optional[int] = None,
                       max_trials: int = 200, step_budget: int = 1000000,
-                      seed: int = 1) -> Dict[str, Any]: ...
+                      tell_fault: bool = True, seed: int = 1) -> Dict[str, Any]: ...
 def _run_experiment(file_or_dict: Union[str, PathLike], is_document: bool, jobs: Optional[int],
                     out: PathLike) -> None: ...
 def _test_mujoco_error(message: str) -> None: ...
