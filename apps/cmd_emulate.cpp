@@ -1,5 +1,8 @@
 // multicpg emulate: a fake robot on pseudo-terminals that speaks a hardware file's protocol and
 // moves the simulated robot with what it receives (docs/hardware.md "Rehearse on the emulator").
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <iostream>
 
 #include "apps/commands.h"
@@ -84,11 +87,11 @@ void register_emulate(CLI::App& app) {
       "a fake robot on a pseudo-terminal: speaks the hardware file's protocol and moves the "
       "simulated robot with what it receives (docs/hardware.md)");
   cmd->add_option("--hardware", o->hardware, "the hardware file to emulate")->required();
+  const std::vector<std::string> protocols = hw::protocol_names();
   cmd->add_option("--protocol", o->protocol,
-                  "amosii or dynamixel: must be the file's (a check, not a choice)")
-      ->check(one_of({std::string(hw::to_string(hw::Protocol::amosii)),
-                      std::string(hw::to_string(hw::Protocol::dynamixel))},
-                     "protocol"));
+                  fmt::format("{}: must be the file's (a check, not a choice)",
+                              fmt::join(protocols, " or ")))
+      ->check(one_of(protocols, "protocol"));
   add_robot_flag(*cmd, o->run);
   cmd->add_option("--inject", o->injections,
                   "a fault from command frame STEP on, repeatable: drop=P@STEP, corrupt=P@STEP "

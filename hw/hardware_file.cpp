@@ -248,6 +248,10 @@ std::string_view to_string(Protocol protocol) {
   return kProtocolNames.name(protocol);
 }
 
+std::vector<std::string> protocol_names() {
+  return kProtocolNames.names();
+}
+
 Protocol parse_protocol(std::string_view text) {
   if (const std::optional<Protocol> protocol = kProtocolNames.find(text)) return *protocol;
   throw BadInput(unknown_name("protocol", text, kProtocolNames.names()));

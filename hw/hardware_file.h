@@ -20,6 +20,7 @@ namespace multicpg::hw {
 enum class Protocol { amosii, dynamixel };
 std::string_view to_string(Protocol protocol);
 Protocol parse_protocol(std::string_view text);  // throws BadInput naming the choices
+std::vector<std::string> protocol_names();       // every protocol's name, as files spell it
 
 // What a stop (the end of a run, a fault, a signal) commands (docs/hardware.md "Safety").
 enum class StopAction {
