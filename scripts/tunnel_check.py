@@ -12,11 +12,14 @@ finished runs are kept in OUT/runs.
 
     /usr/bin/python3 scripts/tunnel_check.py --out tunnel-check --learners annealing,prior
 
-`--robot FILE.toml` runs a robot file of the hexapod layout instead, in a tunnel scaled to it
-(`tunnel --scale-tunnel`).
+`--robot` runs another robot: a built-in one (`quadruped`, `octopod`) in the paper's tunnel, or a
+robot file (`FILE.toml`, its legs read from the file) in a tunnel scaled to it (`tunnel
+--scale-tunnel`).
 
 `--scenarios` takes leg sets and faults ("R1+R3", "R1.TC:locked") or the groups `leg-losses`
-(all 41) and `faults` (the 12 below); `--seeds N` runs seeds 1..N (default 10).
+(every loss of one leg up to half the legs, at most three: the hexapod's 41, the quadruped's 10,
+the octopod's 92) and `faults` (the 12 below, the hexapod's legs); `--seeds N` runs seeds 1..N
+(default 10).
 """
 
 import argparse
@@ -26,20 +29,42 @@ import pathlib
 import statistics
 import subprocess
 import sys
+import tomllib
 from concurrent.futures import ThreadPoolExecutor
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-LEGS = ["R1", "R2", "R3", "L1", "L2", "L3"]
-# Every loss of one to three legs (the landscape dataset's 41 scenarios).
-LEG_LOSSES = ["+".join(c) for n in (1, 2, 3) for c in itertools.combinations(LEGS, n)]
-# The two that lose a whole side: no combination of periods walks them straight.
-WHOLE_SIDE = {"R1+R2+R3", "L1+L2+L3"}
+# The built-in robots' legs (robot/morphology.h), right side first.
+ROBOT_LEGS = {"hexapod": ["R1", "R2", "R3", "L1", "L2", "L3"],
+              "quadruped": ["R1", "R2", "L1", "L2"],
+              "octopod": ["R1", "R2", "R3", "R4", "L1", "L2", "L3", "L4"]}
+MAX_LOST = 3  # legs lost at once: the hexapod landscape dataset's 41 scenarios
+
+
+def robot_legs(robot):
+    """The legs of a built-in robot or a robot file (its [[legs]] names)."""
+    if robot in ROBOT_LEGS:
+        return ROBOT_LEGS[robot]
+    with open(robot, "rb") as f:
+        return [leg["name"] for leg in tomllib.load(f)["legs"]]
+
+
+def leg_losses(legs):
+    """Every loss of one leg up to half the legs (at most MAX_LOST), in the CLI's leg order."""
+    most = min(MAX_LOST, len(legs) // 2)
+    return ["+".join(c) for n in range(1, most + 1) for c in itertools.combinations(legs, n)]
+
+
+def whole_side(scenario, legs):
+    """Whether a leg set loses every leg of one side (pooled apart: on the hexapod no periods walk
+    those straight)."""
+    lost = set(scenario.split("+"))
+    return any({l for l in legs if l[0] == side} <= lost for side in "RL")
+
 # Joint, motor and body faults (docs/faults.md "Fault kinds"): each kind at least once, front,
 # middle and hind legs on both sides, and the yaw sensor.
 FAULTS = ["R1.TC:locked", "R2.CTr:locked", "L3.TC:locked", "L1.CTr:passive", "R3.FTi:passive",
           "L2.CTr:weak=0.3", "R3:weak=0.3", "L2:short=0.5", "R1:short=0.5", "L1:slip=0.2",
           "imu:drift=0.5", "imu:noise=1"]
-GROUPS = {"leg-losses": LEG_LOSSES, "faults": FAULTS}
 KNOWN_LEARNERS = ["annealing", "random", "greedy", "bayes", "prior"]
 SEEDS = 10
 WITHIN = 10  # trials: the bound docs/learning.md "The default run in the tunnel" sets a first episode
@@ -50,8 +75,10 @@ def run(exe, out, scenario, learner, seed, robot):
     if path.exists():
         return
     fault = ["--fault", f"{scenario}@0"] if ":" in scenario else ["--disable", scenario]
-    # A robot file walks the tunnel scaled to its size (docs/robots.md "Example robots").
-    body = ["--robot", robot, "--scale-tunnel"] if robot else []
+    # A robot file walks the tunnel scaled to its size (docs/robots.md "Example robots"), a
+    # built-in robot the paper's.
+    body = (["--robot", robot] + ([] if robot in ROBOT_LEGS else ["--scale-tunnel"])
+            if robot else [])
     result = subprocess.run([exe, "tunnel", *body, *fault, "--learn", "--learner", learner,
                              "--seed", str(seed), "--json"], capture_output=True, text=True)
     if result.returncode != 0:
@@ -61,10 +88,11 @@ def run(exe, out, scenario, learner, seed, robot):
     tmp.replace(path)
 
 
-def scenarios_of(text):
+def scenarios_of(text, legs):
+    groups = {"leg-losses": leg_losses(legs), "faults": FAULTS}
     out = []
     for item in text.split(","):
-        out += GROUPS.get(item, [item])
+        out += groups.get(item, [item])
     return out
 
 
@@ -91,13 +119,13 @@ def main():
     parser.add_argument("--seeds", type=int, default=SEEDS, help="seeds 1..N of each pair")
     parser.add_argument("--multicpg", default=str(ROOT / "build" / "multicpg"))
     parser.add_argument("--robot", default="",
-                        help="a robot file (FILE.toml; --scenarios then names its legs), its tunnel scaled "
-                             "(default: the AMOSII hexapod)")
+                        help="quadruped or octopod (the paper's tunnel), or a robot file "
+                             "(FILE.toml, its tunnel scaled); default: the AMOSII hexapod")
     parser.add_argument("--learners", default="annealing,prior",
                         help="comma-separated, of " + ", ".join(KNOWN_LEARNERS))
     parser.add_argument("--scenarios", default="leg-losses,faults",
                         help="comma-separated leg sets and faults, or the groups "
-                             + " and ".join(GROUPS))
+                             "leg-losses and faults")
     args = parser.parse_args()
     if args.seeds < 1:
         parser.error(f"--seeds must be at least 1, got {args.seeds}")
@@ -105,11 +133,16 @@ def main():
     for name in learners:
         if name not in KNOWN_LEARNERS:
             parser.error(f"unknown learner '{name}' (known: {', '.join(KNOWN_LEARNERS)})")
-    scenarios = scenarios_of(args.scenarios)
+    try:
+        legs = robot_legs(args.robot or "hexapod")
+    except (OSError, tomllib.TOMLDecodeError, KeyError, TypeError) as e:
+        parser.error(f"--robot: not a built-in robot nor a readable robot file: {e}")
+    scenarios = scenarios_of(args.scenarios, legs)
     for s in scenarios:
-        if ":" not in s and s not in LEG_LOSSES:
-            parser.error(f"unknown scenario '{s}' (leg sets such as R1+R3, faults such as "
-                         "R1.TC:locked, or the groups " + " and ".join(GROUPS) + ")")
+        if ":" not in s and not all(leg in legs for leg in s.split("+")):
+            parser.error(f"unknown scenario '{s}' (leg sets of {', '.join(legs)} such as "
+                         f"{legs[0]}+{legs[-1]}, faults such as R1.TC:locked, or the groups "
+                         "leg-losses and faults)")
     out = pathlib.Path(args.out)
     runs_dir = out / "runs"
     runs_dir.mkdir(parents=True, exist_ok=True)
@@ -135,7 +168,8 @@ def main():
                          f"{'–' if c['median_total'] is None else c['median_total']} | "
                          f"{c['within_total']}/{c['learned']} | "
                          f"{'–' if c['median_episodes'] is None else c['median_episodes']} |")
-            group = "faults" if ":" in s else ("whole side" if s in WHOLE_SIDE else "leg losses")
+            group = ("faults" if ":" in s
+                     else "whole side" if whole_side(s, legs) else "leg losses")
             p = pooled.setdefault((group, l), {"runs": 0, "passed": 0, "trials": [], "total": [],
                                                "within": 0, "learned": 0})
             p["runs"] += c["runs"]
