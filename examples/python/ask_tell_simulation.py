@@ -32,15 +32,15 @@ def robust_error(window):
 
 
 def learn_in_my_loop(learner=None, disable="R1,R3", seed=1, max_trials=200, robot="hexapod",
-                     mode="robust"):
+                     mode="robust", max_episodes=DEFAULT_MAX_EPISODES):
     """Walks until a window deviates, then learns; returns the multicpg.Learner (None when no
-    window deviated)."""
+    window deviated). max_episodes: robust mode's, as learn()'s."""
     if mode == "paper":
         return _paper_loop(learner, disable, seed, max_trials, multicpg.Robot(robot))
-    return _robust_loop(learner, disable, seed, max_trials, multicpg.Robot(robot))
+    return _robust_loop(learner, disable, seed, max_trials, multicpg.Robot(robot), max_episodes)
 
 
-def _robust_loop(learner, disable, seed, max_trials, robot):
+def _robust_loop(learner, disable, seed, max_trials, robot, max_episodes):
     sim = multicpg.Simulation(robot, disable=disable, record=False)
     sim.steer(True)
     sim.walk_window(DEFAULT_WINDOW_STEPS)  # the window the legs failed in: their transient
@@ -53,7 +53,7 @@ def _robust_loop(learner, disable, seed, max_trials, robot):
     while held < DEFAULT_MONITOR_WINDOWS:
         window = sim.walk_window(DEFAULT_WINDOW_STEPS)
         episodes = agent.episode if agent is not None else 0
-        if not over(window) or episodes == DEFAULT_MAX_EPISODES:
+        if not over(window) or episodes == max_episodes:
             held += 1
             continue
         held = 0
