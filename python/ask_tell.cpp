@@ -70,6 +70,18 @@ std::vector<body::WindowMeasure> windows_of(py::handle value, const std::string&
   return out;
 }
 
+// The criterion of a run of `mode` and `steering` (as learn() takes them) with `threshold`
+// (learning/compensation.h): the one judge of a window, the learners' and the CLI's.
+learning::Criterion run_criterion(py::handle mode_value, py::handle steering_value,
+                                  py::handle threshold, learning::CompensationOptions& run) {
+  const std::string mode = text(mode_value, "mode");
+  run.mode = named("mode", [&] { return learning::parse_mode(mode); });
+  const std::string steering = text(steering_value, "steering");
+  run.steering = named("steering", [&] { return learning::parse_steering(steering); });
+  run.search.threshold_deg = real(threshold, "threshold", learning::kThresholdLimits);
+  return learning::criterion(run);
+}
+
 class Learner {
  public:
   Learner(py::handle name, py::handle options, py::handle seed_value, py::handle robot_value,
@@ -94,10 +106,7 @@ class Learner {
     // The criterion of the run it stands for (learning/compensation.h): mode and steering as
     // learn() takes them.
     learning::CompensationOptions run;
-    const std::string mode = text(mode_value, "mode");
-    run.mode = named("mode", [&] { return learning::parse_mode(mode); });
-    const std::string steering = text(steering_value, "steering");
-    run.steering = named("steering", [&] { return learning::parse_steering(steering); });
+    run_criterion(mode_value, steering_value, threshold, run);
     if (!period_set.is_none()) {
       s.search.period_set.clear();
       for (const py::handle p : py::iter(period_set)) {
@@ -106,7 +115,7 @@ class Learner {
             whole(p, "period_set", Limits<int>{neural::kMinPeriod, neural::kMaxPeriod}));
       }
     }
-    s.search.threshold_deg = real(threshold, "threshold", learning::kThresholdLimits);
+    s.search.threshold_deg = run.search.threshold_deg;
     s.search.max_trials = whole(max_trials, "max_trials", learning::kMaxTrialsLimits);
     run.search = s.search;
     run.tell_fault = s.told.told();
@@ -244,6 +253,21 @@ void register_ask_tell(py::module_& m) {
       "mode and steering: how the run it stands for judges a trial (as learn()'s); period_set\n"
       "(None: PERIOD_SET), threshold (deg) and max_trials bound the search. With the same\n"
       "seed and the windows our own simulation walks it gives the trials of learn().";
+  m.def(
+      "window_error",
+      [](AnyArg window, StrArg mode, StrArg steering, FloatArg threshold) {
+        learning::CompensationOptions run;
+        return run_criterion(mode, steering, threshold, run).error(window_of(window, "window"));
+      },
+      arg("window"), py::kw_only(),
+      arg("mode") = std::string(learning::to_string(learning::Mode::robust)),
+      arg("steering") = std::string(learning::to_string(learning::Steering::reflex)),
+      arg("threshold") = learning::kDefaultThresholdDeg,
+      "E of one window (deg) as a run of that mode and steering judges it (docs/learning.md\n"
+      "\"Deviation\"): paper mode |yaw change|; robust mode the worst of |yaw change|, |path\n"
+      "angle| and, with the reflex, its effort read so that the most it may ask reads as the\n"
+      "threshold. window: (yaw_deg, path_deg[, steering_effort]) or a dict of them (what\n"
+      "Simulation.walk_window returns).");
   py::class_<Learner>(m, "Learner", doc.c_str())
       .def(py::init([](OptionalStrArg learner, AnyArg options, IntArg seed, RobotArg robot,
                        LegsArg failed, PeriodsArg periods, AnyArg windows,

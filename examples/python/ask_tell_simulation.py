@@ -20,15 +20,7 @@ import argparse
 
 import multicpg
 from multicpg.env import (DEFAULT_HOLD_WINDOWS, DEFAULT_MAX_EPISODES, DEFAULT_MONITOR_WINDOWS,
-                          DEFAULT_THRESHOLD_DEG, DEFAULT_WINDOW_STEPS, DETECTION_WINDOWS,
-                          STEERING_MAX_EFFORT)
-
-
-def robust_error(window):
-    """E of one window as robust mode with the reflex judges it: the worst of the yaw change,
-    the path angle and the reflex's effort in degrees (docs/learning.md)."""
-    effort = DEFAULT_THRESHOLD_DEG * window["steering_effort"] / STEERING_MAX_EFFORT
-    return max(abs(window["yaw_deg"]), abs(window["path_deg"]), effort)
+                          DEFAULT_THRESHOLD_DEG, DEFAULT_WINDOW_STEPS, DETECTION_WINDOWS)
 
 
 def learn_in_my_loop(learner=None, disable="R1,R3", seed=1, max_trials=200, robot="hexapod",
@@ -46,7 +38,7 @@ def _robust_loop(learner, disable, seed, max_trials, robot, max_episodes):
     sim.walk_window(DEFAULT_WINDOW_STEPS)  # the window the legs failed in: their transient
 
     def over(window):
-        return robust_error(window) > DEFAULT_THRESHOLD_DEG
+        return multicpg.window_error(window) > DEFAULT_THRESHOLD_DEG
 
     agent = None
     held = 0  # windows walked on since the last episode, each under the threshold
@@ -84,7 +76,7 @@ def _paper_loop(learner, disable, seed, max_trials, robot):
     sim.step(settle, progress=False)
     for _ in range(DETECTION_WINDOWS):
         window = sim.walk_window(DEFAULT_WINDOW_STEPS)
-        if abs(window["yaw_deg"]) > DEFAULT_THRESHOLD_DEG:
+        if multicpg.window_error(window, mode="paper") > DEFAULT_THRESHOLD_DEG:
             break
     else:
         return None

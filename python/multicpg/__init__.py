@@ -26,7 +26,8 @@ leg periods that walk straight again. The classes and functions mirror the ``mul
 - ``landscape_dataset("hexapod")``: the landscape dataset the prior learns from by default, found
   in $MULTICPG_DATA, else in the data installed with this package, else in the source tree.
 - ``Learner(name, failed=..., windows=...)``: any learner driven from your own loop, ``ask()``
-  the next periods, ``tell(windows=...)`` what they measured (ask/tell; docs/python.md).
+  the next periods, ``tell(windows=...)`` what they measured (ask/tell; docs/python.md);
+  ``window_error(window, mode=..., steering=...)``: a window's E as such a run judges it.
 - ``Annealer``: the annealing search one step at a time; ``env.CompensationEnv``: the learning
   task as a Gymnasium environment (one step = one trial) with its action and observation spaces.
 
@@ -68,6 +69,7 @@ from ._multicpg import (
     measure_window,
     render,
     tunnel,
+    window_error,
 )
 from . import env, spaces
 from .replay import Replay, replay
@@ -95,6 +97,7 @@ __all__ = [
     "replay",
     "spaces",
     "tunnel",
+    "window_error",
 ]
 
 

@@ -304,6 +304,10 @@ class Annealer:
     def trace(self) -> List[Dict[str, Any]]:
         """One dict per decided trial."""
 
+def window_error(window: Union[Sequence[float], Dict[str, float]], *, mode: str = "robust",
+                 steering: str = "reflex", threshold: float = 8.0) -> float:
+    """E of one window (deg) as a run of that mode and steering judges it."""
+
 class Learner:
     """A learner asked for the next periods and told what each trial measured (ask/tell)."""
 

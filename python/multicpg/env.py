@@ -21,8 +21,8 @@ from typing import Any, Dict, List, Optional, Sequence, SupportsFloat, Tuple, Un
 
 import numpy as np
 
-from ._multicpg import (DETECTION_WINDOWS, PERIOD_SET, STEERING_MAX_EFFORT, Annealer, Robot,
-                        Simulation, _learning_options, render)
+from ._multicpg import (DETECTION_WINDOWS, PERIOD_SET, Annealer, Robot, Simulation,
+                        _learning_options, render, window_error)
 # The defaults of the learning keywords, for code written against the environment.
 from ._multicpg import (DEFAULT_BETA, DEFAULT_HOLD_WINDOWS, DEFAULT_MAX_TRIALS,  # noqa: F401
                         DEFAULT_MAX_EPISODES, DEFAULT_MONITOR_WINDOWS, DEFAULT_THRESHOLD_DEG,
@@ -240,16 +240,10 @@ class CompensationEnv(_EnvBase):
 
     def _window(self) -> Dict[str, float]:
         m = self.sim.walk_window(self.window)
-        m["deviation_deg"] = self._error(m)
+        m["deviation_deg"] = window_error(m, mode=self.mode,
+                                          steering="reflex" if self.sim.steering else "off",
+                                          threshold=self.threshold)
         return m
-
-    def _error(self, m: Dict[str, float]) -> float:
-        if self.mode == "paper":
-            return abs(m["yaw_deg"])
-        error = max(abs(m["yaw_deg"]), abs(m["path_deg"]))
-        if self.sim.steering:
-            error = max(error, self.threshold * m["steering_effort"] / STEERING_MAX_EFFORT)
-        return error
 
     def _observation(self, m: Dict[str, float]) -> np.ndarray:
         return np.array([m["yaw_deg"], m["path_deg"], m["steering_effort"], *self.sim.periods],

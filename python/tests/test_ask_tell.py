@@ -10,6 +10,7 @@ import pytest
 
 import multicpg
 from conftest import SOURCE_DIR
+from multicpg._multicpg import DEFAULT_THRESHOLD_DEG, STEERING_MAX_EFFORT
 
 EXAMPLES = SOURCE_DIR / "examples" / "python"
 SEED = 5
@@ -69,8 +70,10 @@ def test_tell_judges_windows_as_the_run_does_and_refuses_misuse():
     with pytest.raises(ValueError, match="not told"):
         agent.ask()
     # Robust mode without the reflex: E is the worst of |yaw| and |path| over the windows.
-    record = agent.tell(windows=[(3.0, -9.5), {"yaw_deg": 1.0, "path_deg": 2.0}])
+    windows = [(3.0, -9.5), {"yaw_deg": 1.0, "path_deg": 2.0}]
+    record = agent.tell(windows=windows)
     assert record["deviation_deg"] == 9.5 and record["trial"] == 1
+    assert [multicpg.window_error(w, steering="off") for w in windows] == [9.5, 2.0]
     with pytest.raises(ValueError, match="no periods were asked"):
         agent.tell(deviation_deg=1.0)
     with pytest.raises(ValueError, match="one of them"):
@@ -94,6 +97,25 @@ def test_tell_judges_windows_as_the_run_does_and_refuses_misuse():
     assert agent.tell(deviation_deg=30.0)["trial"] == 1 and agent.trials == 3
     prior = multicpg.Learner("prior", failed="R1", deviation_deg=20.0, steering="off")
     assert prior.dataset.endswith("hexapod")
+
+
+def test_window_error_judges_a_window_as_the_learner_and_each_mode_do():
+    # With the reflex its effort counts, read so that the most it may ask is the threshold.
+    window = {"yaw_deg": -2.0, "path_deg": 3.0, "steering_effort": STEERING_MAX_EFFORT / 2}
+    assert multicpg.window_error(window) == pytest.approx(DEFAULT_THRESHOLD_DEG / 2)
+    assert multicpg.window_error(window, threshold=12.0) == pytest.approx(6.0)
+    assert multicpg.window_error(window, steering="off") == 3.0
+    assert multicpg.window_error(window, mode="paper") == 2.0
+    # The learner told the same window judges it the same (the one criterion, C++'s).
+    agent = multicpg.Learner("random", failed="R1", deviation_deg=20.0, seed=3)
+    agent.ask()
+    assert agent.tell(windows=[window])["deviation_deg"] == multicpg.window_error(window)
+    with pytest.raises(ValueError, match="mode"):
+        multicpg.window_error(window, mode="fast")
+    with pytest.raises(ValueError, match="steering"):
+        multicpg.window_error(window, steering="")
+    with pytest.raises(ValueError, match="window"):
+        multicpg.window_error((1.0,))
 
 
 @pytest.mark.parametrize("script, args", [
