@@ -27,7 +27,9 @@ class AnnealingLearner final : public Learner {
   AnnealingLearner(const LearnerSetup& setup, double beta)
       : params_(annealing_params(setup.search, beta)),
         state_(start_annealing(params_, setup.start, setup.told.failed(), setup.start_deviation_deg,
-                               setup.seed)) {}
+                               setup.seed)) {
+    for (const EarlierTrial& t : setup.earlier) state_.tried.insert(t.periods);
+  }
 
   std::optional<Periods> propose() override {
     const std::optional<Candidate> candidate = learning::propose(params_, state_);

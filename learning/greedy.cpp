@@ -19,6 +19,9 @@ class Greedy final : public Learner {
   explicit Greedy(const LearnerSetup& setup)
       : space_(setup), tried_(space_.size(), false), best_(setup), at_(*space_.index(setup.start)) {
     tried_[at_] = true;
+    for (const EarlierTrial& t : setup.earlier) {
+      if (const std::optional<std::size_t> i = space_.index(t.periods)) tried_[*i] = true;
+    }
     rng_.seed(setup.seed);
   }
 

@@ -84,9 +84,9 @@ struct LearnerSetup {
   // options).
   SearchBounds search;
   std::uint64_t seed = 0;  // every random draw of the episode comes from it
-  // What the run's earlier episodes walked under the same faults, oldest first: the model-based
-  // learners and random search do not walk them again (their windows tell the model), the
-  // annealing and greedy search keep the paper's search from C0 (docs/learning.md).
+  // What the run's earlier episodes walked under the same faults, oldest first: no learner walks
+  // them again (the models are told their windows; the others count them as tried), docs/learning.md
+  // "Memory across episodes".
   std::vector<EarlierTrial> earlier;
 
   // The legs whose period may change, in morphology order: every leg but the ones it is told

@@ -75,9 +75,9 @@ TEST_F(Dataset, EveryLearnerTriesEachCombinationOnceWhenNoneHolds) {
   }
 }
 
-// What a run's earlier episodes walked (LearnerSetup::earlier) the learners that remember do not
-// walk again, and the models are told its windows (docs/learning.md "Memory across episodes").
-TEST_F(Dataset, TheLearnersThatRememberDoNotWalkAnEarlierEpisodesCombinationsAgain) {
+// What a run's earlier episodes walked (LearnerSetup::earlier) no learner walks again, and the
+// models are told its windows (docs/learning.md "Memory across episodes").
+TEST_F(Dataset, NoLearnerWalksAnEarlierEpisodesCombinationsAgain) {
   // R1+R2 lost: 25 combinations of L1 and L2, none holding; the start (4, 4) is walked already.
   const ScenarioLandscape& s = *data_.find({0, 1});
   const auto windows = [&](const Periods& p) { return s.points[*s.find(p)].windows; };
@@ -98,9 +98,9 @@ TEST_F(Dataset, TheLearnersThatRememberDoNotWalkAnEarlierEpisodesCombinationsAga
       earlier.insert(p);
     }
   }
-  for (const std::string name : {"random", "bayes", "prior"}) {
-    SCOPED_TRACE(name);
-    const LearnerChoice c = learning::resolve_learner(choice(name));
+  for (const learning::LearnerInfo& info : learning::learner_list()) {
+    SCOPED_TRACE(info.name);
+    const LearnerChoice c = learning::resolve_learner(choice(std::string(info.name)));
     const std::unique_ptr<learning::Learner> learner =
         learning::make_learner(c, setup, learning::learner_data(c, setup.robot, setup.criterion));
     std::set<Periods> tried;
