@@ -85,8 +85,8 @@ struct LearnerSetup {
   SearchBounds search;
   std::uint64_t seed = 0;  // every random draw of the episode comes from it
   // What the run's earlier episodes walked under the same faults, oldest first: no learner walks
-  // them again (the models are told their windows; the others count them as tried), docs/learning.md
-  // "Memory across episodes".
+  // them again (the models are told their windows; the others count them as tried;
+  // docs/learning.md "Memory across episodes").
   std::vector<EarlierTrial> earlier;
 
   // The legs whose period may change, in morphology order: every leg but the ones it is told
