@@ -3,6 +3,7 @@
 // one program's, a second one is refused before it writes a byte; the emulator serves run after
 // run, and a run after it ended is told so.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <regex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "learning/landscapes.h"
 #include "robot/morphology.h"
@@ -42,6 +44,32 @@ std::string bus_port(const Rehearsal& r) {
   EXPECT_TRUE(std::regex_search(text, m, std::regex("\nport = ['\"]([^'\"]+)['\"]")));
   return m.size() > 1 ? m[1].str() : "";
 }
+
+// Holds every pseudo-terminal a rehearsal file names open, so that its number stays taken after
+// its emulator dies: a walk that opens it only then must find it gone (ENOENT), not a
+// pseudo-terminal of the same number that the kernel gave another test's emulator meanwhile.
+class HeldPorts {
+ public:
+  explicit HeldPorts(const Rehearsal& r) {
+    const std::string text = read_file(r.file());
+    const std::regex port("\nport = ['\"](/dev/pts/[0-9]+)['\"]");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), port);
+         it != std::sregex_iterator(); ++it) {
+      const int fd = ::open((*it)[1].str().c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+      EXPECT_GE(fd, 0) << (*it)[1].str();
+      if (fd >= 0) fds_.push_back(fd);
+    }
+    EXPECT_FALSE(fds_.empty()) << text;
+  }
+  ~HeldPorts() {
+    for (const int fd : fds_) ::close(fd);
+  }
+  HeldPorts(const HeldPorts&) = delete;
+  HeldPorts& operator=(const HeldPorts&) = delete;
+
+ private:
+  std::vector<int> fds_;
+};
 
 // Whether process `pid` has `path` open.
 bool holds(pid_t pid, const std::string& path) {
@@ -103,6 +131,7 @@ TEST(HardwarePorts, AKilledEmulatorEndsTheWalkWithTheStopLine) {
   // Killed at several moments: while the walk loads, opens its ports, or walks.
   for (const int wait_ms : {0, 300, 1000, 2500, 5000}) {
     Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs);
+    const HeldPorts held(r);
     CliProcess host({"walk", "--steps", "1000000", "--hardware", r.file(), "--lock-step"});
     std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
     r.signal(SIGKILL);
