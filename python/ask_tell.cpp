@@ -70,16 +70,17 @@ std::vector<body::WindowMeasure> windows_of(py::handle value, const std::string&
   return out;
 }
 
-// The criterion of a run of `mode` and `steering` (as learn() takes them) with `threshold`
-// (learning/compensation.h): the one judge of a window, the learners' and the CLI's.
-learning::Criterion run_criterion(py::handle mode_value, py::handle steering_value,
-                                  py::handle threshold, learning::CompensationOptions& run) {
+// A run of `mode` and `steering` (as learn() takes them) with `threshold`: what its criterion
+// (learning::criterion, the one judge of a window, the learners' and the CLI's) is made from.
+learning::CompensationOptions judged_run(py::handle mode_value, py::handle steering_value,
+                                         py::handle threshold) {
+  learning::CompensationOptions run;
   const std::string mode = text(mode_value, "mode");
   run.mode = named("mode", [&] { return learning::parse_mode(mode); });
   const std::string steering = text(steering_value, "steering");
   run.steering = named("steering", [&] { return learning::parse_steering(steering); });
   run.search.threshold_deg = real(threshold, "threshold", learning::kThresholdLimits);
-  return learning::criterion(run);
+  return run;
 }
 
 class Learner {
@@ -105,8 +106,7 @@ class Learner {
     s.start = periods(morph, start, "periods");
     // The criterion of the run it stands for (learning/compensation.h): mode and steering as
     // learn() takes them.
-    learning::CompensationOptions run;
-    run_criterion(mode_value, steering_value, threshold, run);
+    learning::CompensationOptions run = judged_run(mode_value, steering_value, threshold);
     if (!period_set.is_none()) {
       s.search.period_set.clear();
       for (const py::handle p : py::iter(period_set)) {
@@ -256,8 +256,8 @@ void register_ask_tell(py::module_& m) {
   m.def(
       "window_error",
       [](AnyArg window, StrArg mode, StrArg steering, FloatArg threshold) {
-        learning::CompensationOptions run;
-        return run_criterion(mode, steering, threshold, run).error(window_of(window, "window"));
+        return learning::criterion(judged_run(mode, steering, threshold))
+            .error(window_of(window, "window"));
       },
       arg("window"), py::kw_only(),
       arg("mode") = std::string(learning::to_string(learning::Mode::robust)),

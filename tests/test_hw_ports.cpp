@@ -37,12 +37,22 @@ const std::regex kStopLine(
     "stop could not be sent: .+)|start-up check: .+; nothing has moved|cannot open port .+: no "
     "such pseudo-terminal: the emulator that served it has ended; .+)\n");
 
-// The bus port a rehearsal file names.
-std::string bus_port(const Rehearsal& r) {
-  std::smatch m;
+// The ports a rehearsal file names, the bus first.
+std::vector<std::string> ports(const Rehearsal& r) {
   const std::string text = read_file(r.file());
-  EXPECT_TRUE(std::regex_search(text, m, std::regex("\nport = ['\"]([^'\"]+)['\"]")));
-  return m.size() > 1 ? m[1].str() : "";
+  const std::regex port("\nport = ['\"]([^'\"]+)['\"]");
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), port); it != std::sregex_iterator();
+       ++it) {
+    out.push_back((*it)[1].str());
+  }
+  EXPECT_FALSE(out.empty()) << text;
+  return out;
+}
+
+std::string bus_port(const Rehearsal& r) {
+  const std::vector<std::string> all = ports(r);
+  return all.empty() ? "" : all.front();
 }
 
 // Holds every pseudo-terminal a rehearsal file names open, so that its number stays taken after
@@ -51,15 +61,11 @@ std::string bus_port(const Rehearsal& r) {
 class HeldPorts {
  public:
   explicit HeldPorts(const Rehearsal& r) {
-    const std::string text = read_file(r.file());
-    const std::regex port("\nport = ['\"](/dev/pts/[0-9]+)['\"]");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), port);
-         it != std::sregex_iterator(); ++it) {
-      const int fd = ::open((*it)[1].str().c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-      EXPECT_GE(fd, 0) << (*it)[1].str();
+    for (const std::string& port : ports(r)) {
+      const int fd = ::open(port.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+      EXPECT_GE(fd, 0) << port;
       if (fd >= 0) fds_.push_back(fd);
     }
-    EXPECT_FALSE(fds_.empty()) << text;
   }
   ~HeldPorts() {
     for (const int fd : fds_) ::close(fd);
