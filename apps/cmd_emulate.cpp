@@ -53,7 +53,8 @@ void run_emulate(const EmulateOptions& o) {
   const sim::SimModel model = experiments::make_model(spec.robot);
   emulator::Emulator emu(model, file, emulator);
   if (!o.rehearsal.empty()) {
-    write_file_atomic(o.rehearsal, hw::with_ports(file.path, emu.bus_path(), emu.yaw_path()));
+    write_file_atomic(o.rehearsal,
+                      hw::with_ports(file.path, emu.bus_path(), emu.yaw_path(), ::getpid()));
   }
   std::cout << "emulating " << file.name << " (" << hw::to_string(file.protocol) << ") on the "
             << experiments::morphology(spec.robot).name << "\nbus " << emu.bus_path() << "\n";

@@ -26,7 +26,8 @@ std::string ms_text(int ms) {
 // positions per control step.
 class DynamixelBus final : public Bus {
  public:
-  explicit DynamixelBus(const HardwareFile& file) : file_(file), port_(file.port, file.baud) {
+  explicit DynamixelBus(const HardwareFile& file)
+      : file_(file), port_(file.port, file.baud, file.emulator_pid) {
     for (const LegServos& leg : file.legs) {
       for (const ServoJoint& j : leg.joints) ids_.push_back(static_cast<std::uint8_t>(j.id));
     }
@@ -218,7 +219,8 @@ class DynamixelBus final : public Bus {
 // The AMOSII board (hw/amosii.h): a motor frame and a sensor request per control step.
 class AmosBus final : public Bus {
  public:
-  explicit AmosBus(const HardwareFile& file) : file_(file), port_(file.port, file.baud) {
+  explicit AmosBus(const HardwareFile& file)
+      : file_(file), port_(file.port, file.baud, file.emulator_pid) {
     positions_.fill(amosii::kIdlePosition);
   }
 
@@ -351,7 +353,8 @@ std::unique_ptr<Bus> open_bus(const HardwareFile& file) {
   return std::make_unique<DynamixelBus>(file);
 }
 
-YawLine::YawLine(const HardwareFile& file) : spec_(file.yaw), port_(file.yaw.port, file.yaw.baud) {}
+YawLine::YawLine(const HardwareFile& file)
+    : spec_(file.yaw), port_(file.yaw.port, file.yaw.baud, file.emulator_pid) {}
 
 std::optional<yaw_line::Reading> YawLine::poll(std::vector<StepError>& errors) {
   const auto fail = [&](LinkError kind, std::string what) {

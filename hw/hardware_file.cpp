@@ -52,6 +52,9 @@ class FileReader {
     }
     f_.timeout_ms = static_cast<int>(r_.integer_or(doc, "", "timeout_ms", 1, kMaxTimeoutMs, 20));
     f_.max_errors = static_cast<int>(r_.integer_or(doc, "", "max_errors", 1, kMaxErrorsLimit, 3));
+    if (doc.contains("emulator_pid")) {
+      f_.emulator_pid = static_cast<int>(r_.integer(doc, "", "emulator_pid", 1, kMaxPid));
+    }
     if (doc.contains("deg_per_count")) {
       deg_per_count_ = r_.positive(doc, "", "deg_per_count");
     } else if (f_.protocol == Protocol::dynamixel) {
@@ -303,7 +306,7 @@ HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::
   const toml::table doc = r.parse(source);
   r.only(doc, "",
          {"name", "protocol", "port", "baud", "timeout_ms", "max_errors", "deg_per_count", "yaw",
-          "stop", "legs", "backbone"});
+          "stop", "legs", "backbone", "emulator_pid"});
   HardwareFile file;
   file.path = path;
   file.checksum = checksum_text(source);
@@ -317,10 +320,11 @@ HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::
 }
 
 std::string with_ports(const std::filesystem::path& path, const std::string& port,
-                       const std::string& yaw_port) {
+                       const std::string& yaw_port, int emulator_pid) {
   const TomlReader r(path);
   toml::table doc = r.parse(read_text(r));
   doc.insert_or_assign("port", port);
+  doc.insert_or_assign("emulator_pid", emulator_pid);
   if (toml::table* yaw = doc["yaw"].as_table(); yaw != nullptr && !yaw_port.empty()) {
     yaw->insert_or_assign("port", yaw_port);
   }

@@ -101,6 +101,9 @@ struct HardwareFile {
   YawSpec yaw;
   StopAction stop = StopAction::posture;
   std::array<double, robot::kJointsPerLeg> safe_posture{};  // TC, CTr, FTi, rad, every leg
+  // A rehearsal file's (multicpg emulate): the emulator serving its pseudo-terminals, so that a
+  // port whose number the kernel gave another program after the emulator ended is not opened.
+  std::optional<int> emulator_pid;
 
   // Whether the robot senses its trunk's position (a POSE yaw line).
   bool senses_position() const { return yaw.source == YawSource::line && yaw.position; }
@@ -113,6 +116,8 @@ inline constexpr std::uintmax_t kMaxHardwareFileBytes = 1 << 20;
 // Documented ranges.
 inline constexpr int kMaxTimeoutMs = 10'000;
 inline constexpr int kMaxErrorsLimit = 100;
+// Largest process ID Linux hands out (PID_MAX_LIMIT on 64-bit machines, proc(5)).
+inline constexpr long kMaxPid = 4'194'304;
 
 // The hardware file at `path` for a robot with `morph`'s legs. Throws BadInput, one line
 // "FILE: KEY: what is wrong", for a missing or unknown key, a value of the wrong type, a leg or
@@ -120,8 +125,9 @@ inline constexpr int kMaxErrorsLimit = 100;
 // outside a joint's limits, or a choice the protocol does not have.
 HardwareFile load_hardware_file(const std::filesystem::path& path, const robot::Morphology& morph);
 
-// The file's TOML with the bus and yaw ports replaced (the emulator's rehearsal copy).
+// The file's TOML with the bus and yaw ports replaced and the emulator serving them named (the
+// emulator's rehearsal copy).
 std::string with_ports(const std::filesystem::path& path, const std::string& port,
-                       const std::string& yaw_port);
+                       const std::string& yaw_port, int emulator_pid);
 
 }  // namespace multicpg::hw

@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -73,6 +74,35 @@ std::string lock_holder(const std::string& path) {
   return "another program";
 }
 
+// Whether process `pid` holds the master of pseudo-terminal `path` ("/dev/pts/N"): one of its
+// descriptors' /proc fdinfo reads "tty-index: N" (a pty master's, proc(5); Debian 12's kernel
+// shows it). Where its descriptors cannot be read (another user's process) only that it runs is
+// known, and it is taken as serving: refusing there would stop rehearsals that work.
+bool serves_pty(int pid, const std::string& path) {
+  const std::string proc = "/proc/" + std::to_string(pid);
+  if (::access(proc.c_str(), F_OK) != 0) return false;
+  const std::string index = path.substr(std::string_view("/dev/pts/").size());
+  std::error_code error;
+  std::filesystem::directory_iterator fd(proc + "/fdinfo", error);
+  if (error) return true;
+  // Its descriptors may come and go meanwhile: the error codes' increment does not throw.
+  for (; !error && fd != std::filesystem::directory_iterator(); fd.increment(error)) {
+    std::ifstream info(fd->path());
+    for (std::string line; std::getline(info, line);) {
+      std::istringstream fields(line);
+      std::string key, value;
+      if (fields >> key >> value && key == "tty-index:" && value == index) return true;
+    }
+  }
+  return false;
+}
+
+std::string emulator_gone(const std::string& path) {
+  return "cannot open port " + path +
+         ": the emulator that served it has ended; start it again (multicpg emulate --hardware "
+         "FILE --rehearsal OUT.toml) and use the rehearsal file it writes";
+}
+
 std::string in_use(const std::string& path) {
   return "port " + path + " is in use by " + lock_holder(path) +
          ": one program drives a robot at a time (docs/hardware.md \"Safety\")";
@@ -98,17 +128,16 @@ void require_baud(int baud) {
                  ")");
 }
 
-SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
+SerialPort::SerialPort(const std::string& path, int baud, std::optional<int> emulator)
+    : path_(path) {
   const speed_t speed = baud_constant(baud);
+  const bool pty = path.starts_with("/dev/pts/");
+  // A rehearsal file's port whose emulator has ended (it serves until interrupted): the kernel
+  // may have given its number to another program since, a terminal even.
+  if (pty && emulator && !serves_pty(*emulator, path)) throw RuntimeFailure(emulator_gone(path));
   fd_ = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
   if (fd_ < 0 && errno == EBUSY) throw RuntimeFailure(in_use(path));  // another's TIOCEXCL
-  if (fd_ < 0 && errno == ENOENT && path.starts_with("/dev/pts/")) {
-    // A rehearsal file's port: its emulator has ended (it serves until interrupted).
-    throw RuntimeFailure("cannot open port " + path +
-                         ": no such pseudo-terminal: the emulator that served it has ended; "
-                         "start it again (multicpg emulate --hardware FILE --rehearsal OUT.toml) "
-                         "and use the rehearsal file it writes");
-  }
+  if (fd_ < 0 && errno == ENOENT && pty) throw RuntimeFailure(emulator_gone(path));
   if (fd_ < 0) throw RuntimeFailure(system_error("cannot open port " + path));
   // Exclusive before a byte is written or a setting changed: a lock every multicpg takes, and
   // TIOCEXCL against other programs (a terminal program opening the port is refused, EBUSY).

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -28,8 +29,9 @@ class SerialPort {
   // waiting in it. The port is ours alone (flock and TIOCEXCL, before anything is written or
   // set): another program holding it is refused with RuntimeFailure naming its pid where
   // /proc/locks tells it. Throws RuntimeFailure naming the path when it cannot (no such port, no
-  // permission, not a serial line, in use).
-  SerialPort(const std::string& path, int baud);
+  // permission, not a serial line, in use). `emulator`: the pid of the emulator a rehearsal file
+  // names; a pseudo-terminal it no longer serves is refused as gone, whatever holds the number now.
+  SerialPort(const std::string& path, int baud, std::optional<int> emulator = std::nullopt);
   SerialPort(const SerialPort&) = delete;
   SerialPort& operator=(const SerialPort&) = delete;
   ~SerialPort();

@@ -4,12 +4,15 @@
 // run, and a run after it ended is told so.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <poll.h>
+#include <pty.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <thread>
@@ -34,8 +37,8 @@ constexpr std::chrono::seconds kHang(120);
 // gone (the emulator ended before the walk opened it).
 const std::regex kStopLine(
     "multicpg: (hardware stop after step [0-9]+: .+; (robot commanded to its safe posture|the "
-    "stop could not be sent: .+)|start-up check: .+; nothing has moved|cannot open port .+: no "
-    "such pseudo-terminal: the emulator that served it has ended; .+)\n");
+    "stop could not be sent: .+)|start-up check: .+; nothing has moved|cannot open port .+: the "
+    "emulator that served it has ended; .+)\n");
 
 // The ports a rehearsal file names, the bus first.
 std::vector<std::string> ports(const Rehearsal& r) {
@@ -54,28 +57,6 @@ std::string bus_port(const Rehearsal& r) {
   const std::vector<std::string> all = ports(r);
   return all.empty() ? "" : all.front();
 }
-
-// Holds every pseudo-terminal a rehearsal file names open, so that its number stays taken after
-// its emulator dies: a walk that opens it only then must find it gone (ENOENT), not a
-// pseudo-terminal of the same number that the kernel gave another test's emulator meanwhile.
-class HeldPorts {
- public:
-  explicit HeldPorts(const Rehearsal& r) {
-    for (const std::string& port : ports(r)) {
-      const int fd = ::open(port.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
-      EXPECT_GE(fd, 0) << port;
-      if (fd >= 0) fds_.push_back(fd);
-    }
-  }
-  ~HeldPorts() {
-    for (const int fd : fds_) ::close(fd);
-  }
-  HeldPorts(const HeldPorts&) = delete;
-  HeldPorts& operator=(const HeldPorts&) = delete;
-
- private:
-  std::vector<int> fds_;
-};
 
 // Whether process `pid` has `path` open.
 bool holds(pid_t pid, const std::string& path) {
@@ -137,7 +118,6 @@ TEST(HardwarePorts, AKilledEmulatorEndsTheWalkWithTheStopLine) {
   // Killed at several moments: while the walk loads, opens its ports, or walks.
   for (const int wait_ms : {0, 300, 1000, 2500, 5000}) {
     Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs);
-    const HeldPorts held(r);
     CliProcess host({"walk", "--steps", "1000000", "--hardware", r.file(), "--lock-step"});
     std::this_thread::sleep_for(std::chrono::milliseconds(wait_ms));
     r.signal(SIGKILL);
@@ -186,6 +166,51 @@ TEST(HardwarePorts, TheEmulatorServesRunAfterRunAndAGoneOneIsNamed) {
   EXPECT_NE(gone.err.find("the emulator that served it has ended; start it again"),
             std::string::npos)
       << gone.err;
+}
+
+TEST(HardwarePorts, AGoneEmulatorsPortNumberHeldByAnotherProgramIsNotOpened) {
+  // The kernel gives a pseudo-terminal's number to the next program that asks once its emulator
+  // ended: here this test's own ptys stand at the ports of the ended emulator's rehearsal file.
+  std::string text;
+  std::vector<std::string> gone;
+  {
+    Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs);
+    text = read_file(r.file());
+    gone = ports(r);
+    r.signal(SIGTERM);
+    ASSERT_TRUE(r.finish());
+  }
+  struct Pty {
+    int master = -1;
+    int slave = -1;
+  };
+  std::vector<Pty> mine(gone.size());
+  for (std::size_t i = 0; i < gone.size(); ++i) {
+    ASSERT_EQ(::openpty(&mine[i].master, &mine[i].slave, nullptr, nullptr, nullptr), 0);
+    const std::string quoted = "'" + gone[i] + "'";
+    const std::size_t at = text.find(quoted);
+    ASSERT_NE(at, std::string::npos) << text;
+    text = text.substr(0, at) + "'" + ::ptsname(mine[i].master) + "'" +
+           text.substr(at + quoted.size());
+  }
+  const std::string bus = ::ptsname(mine.front().master);
+  const std::string dir = make_temp_dir("multicpg-gone-");
+  std::ofstream(dir + "/rehearsal.toml") << text;
+  const CliResult walk =
+      run_cli("walk --steps 20 --hardware " + dir + "/rehearsal.toml --lock-step");
+  EXPECT_EQ(walk.exit_code, 1) << walk.err;
+  EXPECT_EQ(count_lines(walk.err), 1) << walk.err;
+  EXPECT_NE(walk.err.find("cannot open port " + bus + ": the emulator that served it has ended"),
+            std::string::npos)
+      << walk.err;
+  // Not a byte reached the program that holds the numbers now.
+  for (const Pty& p : mine) {
+    pollfd ready{p.master, POLLIN, 0};
+    EXPECT_EQ(::poll(&ready, 1, 0), 0);
+    ::close(p.slave);
+    ::close(p.master);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(HardwarePorts, APriorOfAnotherPeriodSetIsRefusedBeforeTheRobotWalks) {
