@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -119,6 +120,7 @@ TEST(HardwareClosedLoop, ARunOnHardwareWritesItsReplayPictureAndRecords) {
     EXPECT_TRUE(t.at("yaw_change_deg").is_number());
     EXPECT_EQ(t.at("hardware").at("stop").at("cause"), "the tunnel walk ended");
   }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -285,7 +285,8 @@ TEST_F(LandscapeCli, MarksLearnedCombinations) {
 }
 
 TEST(LandscapeCliInput, BadInput) {
-  const std::string out = " --out " + make_temp_dir("multicpg-landscape-bad-");
+  const std::string dir = make_temp_dir("multicpg-landscape-bad-");
+  const std::string out = " --out " + dir;
   expect_bad_input("landscape --robot quadruped --disable R3" + out, "R3");
   expect_bad_input("landscape --robot quadruped --disable L2,L2" + out, "twice");
   expect_bad_input("landscape --robot quadruped --disable R1,R2,L1,L2" + out, "every leg");
@@ -296,6 +297,7 @@ TEST(LandscapeCliInput, BadInput) {
   expect_bad_input("landscape --robot quadruped --disable L2 --jobs 0" + out, "--jobs");
   expect_bad_input("landscape --robot spider --disable L2" + out, "spider");
   expect_bad_input("landscape --robot quadruped" + out, "--disable");
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
