@@ -7,7 +7,7 @@
 //   imu:KIND=VALUE@STEP          imu:drift=0.5@0 (deg/s), imu:noise=1@0 (deg)
 //
 // LEGS is a leg set (robot/leg_sets.h: "R1", "R1,R3", "R1+R3"), JOINT one of TC, CTr, FTi, KIND
-// one of sim/faults.h. A recovery names what it ends; its value may be left out.
+// one of body/faults.h. A recovery names what it ends; its value may be left out.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Walking the alternatives of a std::variant of kinds (fault kinds, sim/faults.h; terrain kinds,
+// Walking the alternatives of a std::variant of kinds (fault kinds, body/faults.h; terrain kinds,
 // robot/terrain.h), each kind's traits being static members of its type.
 #pragma once
 

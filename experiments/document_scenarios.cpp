@@ -41,7 +41,7 @@ robot::LegSet parse_legs(const robot::Morphology& morph, const json& legs,
 }
 
 // One fault of a timeline table: {step, legs, recover} and, for kinds other than a whole leg,
-// {kind, joint, value} (sim/faults.h; the yaw sensor's kinds name no legs).
+// {kind, joint, value} (body/faults.h; the yaw sensor's kinds name no legs).
 body::Fault timeline_fault(const robot::Morphology& morph, const json& f, const std::string& path) {
   if (!f.is_object()) throw OptionError(path, "must be a table {step, legs, recover, kind, ...}");
   const json defaults{{"step", 0},  {"legs", json::array()}, {"recover", false},
@@ -81,7 +81,7 @@ body::Fault timeline_fault(const robot::Morphology& morph, const json& f, const 
   return fault;
 }
 
-// A timeline fault as the resolved document records it: a fault's one shape (sim/course_json.h)
+// A timeline fault as the resolved document records it: a fault's one shape (body/course_json.h)
 // with its legs named, as the document names them.
 json timeline_fault_json(const robot::Morphology& morph, const body::Fault& fault) {
   json j = fault;
@@ -132,7 +132,7 @@ ScenarioSpec timeline_scenario(const robot::Morphology& morph, const json& s,
 }
 
 // A scenario written as one fault without its step ("R1+R3", "R2.CTr:locked", "L1:weak=0.3";
-// sim/fault_spec.h): it comes at the document's fail_step. A leg set is named as before; any
+// body/fault_spec.h): it comes at the document's fail_step. A leg set is named as before; any
 // other fault by its text with ':' as '_', so it names a run file.
 ScenarioSpec fault_scenario(const robot::Morphology& morph, const json& text,
                             const std::string& path) {

@@ -103,7 +103,7 @@ struct CompensationOptions {
   // never picked); false = told nothing, it searches every leg's period (docs/learning.md
   // "What a learner is told").
   bool tell_fault = true;
-  Steering steering = Steering::reflex;               // robust mode
+  Steering steering = Steering::reflex;  // robust mode
   SteeringParams steering_params;
   std::uint64_t seed = 0;
 };
@@ -207,7 +207,7 @@ struct LearningResult {
 LearningResult compensate(body::Body& body, const CompensationOptions& options,
                           const LearnerData& data);
 
-// The observer's events of a learning run (sim/events.h), as compensate emits them and as a
+// The observer's events of a learning run (body/events.h), as compensate emits them and as a
 // recorded result is replayed (its detections, decided trials and episode ends).
 body::Event detection_event(int episode, double deviation_deg, const Periods& periods);
 body::Event trial_end_event(int episode, const TrialRecord& trial);

@@ -29,7 +29,8 @@ bool leg_losses_only(const body::FaultTimeline& faults);
 // tunnel check shows fastest (docs/learning.md "The default run in the tunnel"). The paper's
 // annealing everywhere else: paper mode, a beta given, a robot file, the octopod, a fault other
 // than a lost leg, a learner told nothing about the fault (the benchmark's price of not knowing
-// is highest for the prior), no dataset installed. Resolved, every default filled in (resolve_learner).
+// is highest for the prior), no dataset installed. Resolved, every default filled in
+// (resolve_learner).
 LearnerChoice default_learner(const DefaultLearnerQuery& query);
 
 }  // namespace multicpg::learning

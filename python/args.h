@@ -68,7 +68,7 @@ std::vector<int> periods(const robot::Morphology& morph, py::handle value, std::
                          int fallback = robot::kDefaultPeriod);
 
 // A fault as Python writes it (multicpg.Fault, multicpg.Recovery): what breaks (kind, and for
-// a joint fault the joint, for a kind with a value its value, sim/faults.h), on which legs (none
+// a joint fault the joint, for a kind with a value its value, body/faults.h), on which legs (none
 // for the yaw sensor's kinds), before which step. Its legs are names, checked against a robot
 // when a run uses it; the kind, joint and value are checked when it is made.
 struct FaultArg {

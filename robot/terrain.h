@@ -14,7 +14,7 @@
 // on the terrain. Deviations are measured in the horizontal plane whatever the ground.
 //
 // A terrain kind is an alternative of TerrainKind with its traits in its own struct, as fault
-// kinds are (sim/faults.h): its name and an example, the parameters its text gives (kParams, with
+// kinds are (body/faults.h): its name and an example, the parameters its text gives (kParams, with
 // values() returning them in that order), whether it covers only kTerrainSide (kBounded) and
 // whether a robot file keeps its own ground under it (kOwnGround), and, where it has them, its tilt
 // (rotation), the height its bumps rise to (rise), its heightfield (heightfield_samples) and the

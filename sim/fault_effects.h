@@ -1,4 +1,4 @@
-// What each fault kind (sim/faults.h) does to the physics and the sensors, and how a recovery
+// What each fault kind (body/faults.h) does to the physics and the sensors, and how a recovery
 // undoes it exactly (docs/faults.md):
 // - leg: nothing here; the controller holds the leg's posture (neural::set_disabled);
 // - locked: the joint's servo gives no torque and the joint's limits close on its lock angle, so

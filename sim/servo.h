@@ -29,7 +29,7 @@ double commanded_velocity(const robot::ServoSpec& spec, double error, double dt)
 double torque_limit(const ServoModel& servo, double error);
 
 // Torque for one physics step of length dt (N m), within `limit_scale` times the torque bound (a
-// weak motor's share, sim/faults.h).
+// weak motor's share, body/faults.h).
 double servo_torque(const ServoModel& servo, double target, double angle, double velocity,
                     double dt, double limit_scale = 1.0);
 

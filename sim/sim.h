@@ -47,7 +47,7 @@ SimState copy_sim_state(const SimModel& model, const SimState& state);
 // any real robot or bodies deep inside each other).
 void sim_step(const SimModel& model, SimState& state);
 // The physics half of sim_step: model.substeps physics steps toward state.targets, without the
-// controller (the hardware emulator, hw/emulator.h, moves the robot to targets it received).
+// controller (the hardware emulator, emulator/emulator.h, moves the robot to targets it received).
 void physics_step(const SimModel& model, SimState& state);
 
 // Readings. Positions and joint angles are of the current state (a segment's angle: its servo's

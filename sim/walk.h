@@ -42,7 +42,7 @@ struct WalkResult {
   double speed_m_s = 0.0;   // distance / duration
   // wrap(yaw(end) - yaw(start)) of each complete window; positive = left turn.
   std::vector<double> window_deviations_deg;
-  // Yaw change and Table 1 path angle of each complete window (sim/deviation.h).
+  // Yaw change and Table 1 path angle of each complete window (body/deviation.h).
   std::vector<body::WindowMeasure> windows;
   double final_yaw_deg = 0.0;  // the yaw sensor's reading at the end; the robot starts at yaw 0
   SimState final_state;        // the robot at the end
