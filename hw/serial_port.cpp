@@ -75,9 +75,9 @@ std::string lock_holder(const std::string& path) {
 }
 
 // Whether process `pid` holds the master of pseudo-terminal `path` ("/dev/pts/N"): one of its
-// descriptors' /proc fdinfo reads "tty-index: N" (a pty master's, proc(5); Debian 12's kernel
-// shows it). Where its descriptors cannot be read (another user's process) only that it runs is
-// known, and it is taken as serving: refusing there would stop rehearsals that work.
+// descriptors' /proc fdinfo reads "tty-index: N" (what Linux's pty driver shows of a master).
+// Where its descriptors cannot be read (another user's process) only that it runs is known, and
+// it is taken as serving: refusing there would stop rehearsals that work.
 bool serves_pty(int pid, const std::string& path) {
   const std::string proc = "/proc/" + std::to_string(pid);
   if (::access(proc.c_str(), F_OK) != 0) return false;
