@@ -37,6 +37,9 @@ struct PriorOptions : ModelOptions {
   // and its mirror image, which it may never see.
   std::vector<std::string> scenarios;
   double ridge = 1.0;  // weight decay of the regression, in windows
+  // What a window of a loss of another number of legs than the one told counts for against one
+  // of as many (1: every window alike; docs/learning.md "The quadruped: a small dataset").
+  double other_size_weight = 1.0;
   PriorOptions() {
     intercept_deg = 8.0;
     effect_deg = 4.0;
@@ -45,12 +48,15 @@ struct PriorOptions : ModelOptions {
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PriorOptions, acquisition, kappa, noise_deg,
                                                 intercept_deg, effect_deg, pair_deg, dataset,
-                                                scenarios, ridge)
+                                                scenarios, ridge, other_size_weight)
 inline constexpr Limits<double> kRidgeLimits{1e-6, 1e6};
+// 0: losses of as many legs alone; above 1 the others count for more.
+inline constexpr Limits<double> kOtherSizeWeightLimits{0.0, 1e6};
 
 void validate(const PriorOptions& o) {
   validate(static_cast<const ModelOptions&>(o));
   require_in("ridge", o.ridge, kRidgeLimits);
+  require_in("other_size_weight", o.other_size_weight, kOtherSizeWeightLimits);
 }
 
 // The regression's features of one combination of one scenario: the constant, each lost leg,
@@ -148,11 +154,13 @@ std::vector<std::vector<double>> prior_mean(const LearnerData& data, const Learn
   Eigen::MatrixXd xty = Eigen::MatrixXd::Zero(n, outputs);
   const auto add = [&](const std::vector<std::size_t>& failed, const Periods& periods,
                        const WindowOutputs& y) {
+    // Told nothing, every scenario is of another size than the none told.
+    const double w = failed.size() == lost.size() ? 1.0 : o.other_size_weight;
     const std::vector<std::size_t> a = f.active(failed, digits(periods, d.period_set));
     for (std::size_t i : a) {
       const auto ii = static_cast<Eigen::Index>(i);
-      for (std::size_t j : a) xtx(ii, static_cast<Eigen::Index>(j)) += 1.0;
-      for (Eigen::Index k = 0; k < outputs; ++k) xty(ii, k) += y[static_cast<std::size_t>(k)];
+      for (std::size_t j : a) xtx(ii, static_cast<Eigen::Index>(j)) += w;
+      for (Eigen::Index k = 0; k < outputs; ++k) xty(ii, k) += w * y[static_cast<std::size_t>(k)];
     }
   };
   for (const ScenarioLandscape* scenario : prior_scenarios(d, o, setup.told, data.withheld)) {
@@ -221,14 +229,14 @@ void check_period_set(const LandscapeDataset& d, const fs::path& path,
 
 // What decides a prior mean besides its data, compared exactly.
 using PriorKey = std::tuple<bool, std::vector<std::size_t>, std::vector<std::vector<std::size_t>>,
-                            std::vector<std::string>, double, bool, double, double>;
+                            std::vector<std::string>, double, double, bool, double, double>;
 
 PriorKey prior_key(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o) {
   std::vector<std::size_t> lost = setup.told.failed();
   std::sort(lost.begin(), lost.end());
   const Criterion& c = setup.criterion;
-  return {setup.told.told(), lost,   data.withheld,   o.scenarios,
-          o.ridge,           c.path, c.threshold_deg, c.max_effort};
+  return {setup.told.told(),   lost,   data.withheld,   o.scenarios, o.ridge,
+          o.other_size_weight, c.path, c.threshold_deg, c.max_effort};
 }
 
 }  // namespace

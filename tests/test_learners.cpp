@@ -186,6 +186,30 @@ TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
       BadInput);
 }
 
+// The windows of losses of another number of legs count as much as the prior is told
+// (docs/learning.md "The quadruped: a small dataset"): weighed 0, nothing, exactly as naming only
+// the losses of as many legs; by default as much as any.
+TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
+  LearnerChoice alone = choice("prior");
+  alone.options["other_size_weight"] = 0.0;
+  LearnerChoice named = choice("prior");
+  named.options["scenarios"] = {"R1", "L1"};  // L2 told: R2, its mirror image, is never seen
+  const ReplayRun a = replay(data_, {kL2}, alone, 7);
+  const ReplayRun b = replay(data_, {kL2}, named, 7);
+  ASSERT_FALSE(a.trace.empty());
+  ASSERT_EQ(a.trace.size(), b.trace.size());
+  for (std::size_t i = 0; i < a.trace.size(); ++i) {
+    EXPECT_EQ(a.trace[i].periods, b.trace[i].periods) << i;
+    EXPECT_EQ(a.trace[i].details, b.trace[i].details) << i;
+  }
+  // R1+R2 (nothing holds there) is in the default prior's mean, so it forecasts otherwise.
+  const ReplayRun every = replay(data_, {kL2}, choice("prior"), 7);
+  EXPECT_NE(every.trace.front().details, a.trace.front().details);
+  LearnerChoice negative = choice("prior");
+  negative.options["other_size_weight"] = -1.0;
+  EXPECT_THROW(learning::resolve_learner(negative), OptionError);
+}
+
 // Told nothing about the fault, a learner searches every leg's period, the lost leg's too
 // (docs/learning.md "What a learner is told"); the prior then cannot leave a scenario out.
 TEST_F(Dataset, ALearnerToldNothingSearchesEveryLegsPeriod) {
