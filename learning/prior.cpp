@@ -154,7 +154,7 @@ std::vector<std::vector<double>> prior_mean(const LearnerData& data, const Learn
   Eigen::MatrixXd xty = Eigen::MatrixXd::Zero(n, outputs);
   const auto add = [&](const std::vector<std::size_t>& failed, const Periods& periods,
                        const WindowOutputs& y) {
-    // Told nothing, every scenario is of another size than the none told.
+    // Told nothing, no scenario loses as many legs as it knows of (none): all weigh alike.
     const double w = failed.size() == lost.size() ? 1.0 : o.other_size_weight;
     const std::vector<std::size_t> a = f.active(failed, digits(periods, d.period_set));
     for (std::size_t i : a) {

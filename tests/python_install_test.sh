@@ -65,8 +65,8 @@ cp "$scratch/hexapod.json" "$manifest"
 # the scratch folder rather than the user's Jupyter directory (ipykernel warns that the folder is
 # not on Jupyter's path: JUPYTER_PATH puts it there). TMPDIR: ipykernel leaves the empty folder
 # it writes the spec in behind.
-TMPDIR="$scratch" "$venv/bin/python" -m ipykernel install --prefix "$scratch/jupyter" --name multicpg-venv \
-  >"$scratch/kernel.log" 2>&1 || { cat "$scratch/kernel.log" >&2; exit 1; }
+TMPDIR="$scratch" "$venv/bin/python" -m ipykernel install --prefix "$scratch/jupyter" \
+  --name multicpg-venv >"$scratch/kernel.log" 2>&1 || { cat "$scratch/kernel.log" >&2; exit 1; }
 (cd "$elsewhere" && JUPYTER_PATH="$scratch/jupyter/share/jupyter" \
   MULTICPG_NOTEBOOK_KERNEL=multicpg-venv MULTICPG_SOURCE_DIR="$src" \
   "$venv/bin/python" -m pytest -q -p no:cacheprovider "$src/python/tests/test_notebook.py")
