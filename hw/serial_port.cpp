@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 #include "common/errors.h"
@@ -74,6 +75,9 @@ std::string lock_holder(const std::string& path) {
   return "another program";
 }
 
+// Where Linux puts pseudo-terminals (devpts): the emulator's ports.
+constexpr std::string_view kPtyDir = "/dev/pts/";
+
 // Whether process `pid` holds the master of pseudo-terminal `path` ("/dev/pts/N"): one of its
 // descriptors' /proc fdinfo reads "tty-index: N" (what Linux's pty driver shows of a master).
 // Where its descriptors cannot be read (another user's process) only that it runs is known, and
@@ -81,7 +85,7 @@ std::string lock_holder(const std::string& path) {
 bool serves_pty(int pid, const std::string& path) {
   const std::string proc = "/proc/" + std::to_string(pid);
   if (::access(proc.c_str(), F_OK) != 0) return false;
-  const std::string index = path.substr(std::string_view("/dev/pts/").size());
+  const std::string index = path.substr(kPtyDir.size());
   std::error_code error;
   std::filesystem::directory_iterator fd(proc + "/fdinfo", error);
   if (error) return true;
@@ -131,7 +135,7 @@ void require_baud(int baud) {
 SerialPort::SerialPort(const std::string& path, int baud, std::optional<int> emulator)
     : path_(path) {
   const speed_t speed = baud_constant(baud);
-  const bool pty = path.starts_with("/dev/pts/");
+  const bool pty = path.starts_with(kPtyDir);
   // A rehearsal file's port whose emulator has ended (it serves until interrupted): the kernel
   // may have given its number to another program since, a terminal even.
   if (pty && emulator && !serves_pty(*emulator, path)) throw RuntimeFailure(emulator_gone(path));

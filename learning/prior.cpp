@@ -153,9 +153,7 @@ std::vector<std::vector<double>> prior_mean(const LearnerData& data, const Learn
   Eigen::MatrixXd xtx = Eigen::MatrixXd::Identity(n, n) * ridge;
   Eigen::MatrixXd xty = Eigen::MatrixXd::Zero(n, outputs);
   const auto add = [&](const std::vector<std::size_t>& failed, const Periods& periods,
-                       const WindowOutputs& y) {
-    // Told nothing, no scenario loses as many legs as it knows of (none): all weigh alike.
-    const double w = failed.size() == lost.size() ? 1.0 : o.other_size_weight;
+                       const WindowOutputs& y, double w) {
     const std::vector<std::size_t> a = f.active(failed, digits(periods, d.period_set));
     for (std::size_t i : a) {
       const auto ii = static_cast<Eigen::Index>(i);
@@ -166,6 +164,9 @@ std::vector<std::vector<double>> prior_mean(const LearnerData& data, const Learn
   for (const ScenarioLandscape* scenario : prior_scenarios(d, o, setup.told, data.withheld)) {
     const ScenarioLandscape& s = *scenario;
     const std::vector<std::size_t> image = robot::mirror(morph, s.failed);
+    // What its windows count for, its mirror image's too. Told nothing, no scenario loses as many
+    // legs as it knows of (none): all weigh alike.
+    const double w = s.failed.size() == lost.size() ? 1.0 : o.other_size_weight;
     for (const LandscapePoint& p : s.points) {
       WindowOutputs mean{};
       for (const body::WindowMeasure& w : p.windows) {
@@ -174,11 +175,11 @@ std::vector<std::vector<double>> prior_mean(const LearnerData& data, const Learn
         mean[kEffort] += setup.criterion.effort_deg(w.steering_effort);
       }
       for (double& m : mean) m /= static_cast<double>(p.windows.size());
-      add(s.failed, p.periods, mean);
+      add(s.failed, p.periods, mean, w);
       // Its mirror image turns the other way, with the same effort. It is never the scenario
       // the prior is told: that one's mirror is not among the scenarios.
       add(image, robot::mirror_periods(morph, p.periods),
-          {-mean[kYaw], -mean[kPath], mean[kEffort]});
+          {-mean[kYaw], -mean[kPath], mean[kEffort]}, w);
     }
   }
   const Eigen::MatrixXd beta = xtx.ldlt().solve(xty);

@@ -2,7 +2,6 @@
 // emulator that ends at any moment of a walk ends it with the one stop line and exit 1; a port is
 // one program's, a second one is refused before it writes a byte; the emulator serves run after
 // run, and a run after it ended is told so.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <poll.h>
 #include <pty.h>
