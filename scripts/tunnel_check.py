@@ -18,7 +18,7 @@ robot file (`FILE.toml`, its legs read from the file) in a tunnel scaled to it (
 
 `--scenarios` takes leg sets and faults ("R1+R3", "R1.TC:locked") or the groups `leg-losses`
 (every loss of one leg up to half the legs, at most three: the hexapod's 41, the quadruped's 10,
-the octopod's 92) and `faults` (the 12 below, the hexapod's legs); `--seeds N` runs seeds 1..N
+the octopod's 92) and `faults` (the 16 below, the hexapod's legs); `--seeds N` runs seeds 1..N
 (default 10).
 """
 
@@ -60,10 +60,11 @@ def whole_side(scenario, legs):
     lost = set(scenario.split("+"))
     return any({l for l in legs if l[0] == side} <= lost for side in "RL")
 
-# Joint, motor and body faults (docs/faults.md "Fault kinds"): each kind at least once, front,
-# middle and hind legs on both sides, and the yaw sensor.
-FAULTS = ["R1.TC:locked", "R2.CTr:locked", "L3.TC:locked", "L1.CTr:passive", "R3.FTi:passive",
-          "L2.CTr:weak=0.3", "R3:weak=0.3", "L2:short=0.5", "R1:short=0.5", "L1:slip=0.2",
+# Fourteen joint, motor and body faults (docs/faults.md "Fault kinds"): each kind at least once,
+# each joint locked and passive, front, middle and hind legs on both sides; then the yaw sensor.
+FAULTS = ["R1.TC:locked", "R2.CTr:locked", "L3.TC:locked", "R3.CTr:locked", "L2.FTi:locked",
+          "L1.CTr:passive", "R3.FTi:passive", "R2.TC:passive", "L2.CTr:weak=0.3", "R3:weak=0.3",
+          "R2:weak=0.2", "L2:short=0.5", "R1:short=0.5", "L1:slip=0.2",
           "imu:drift=0.5", "imu:noise=1"]
 KNOWN_LEARNERS = ["annealing", "random", "greedy", "bayes", "prior"]
 SEEDS = 10
