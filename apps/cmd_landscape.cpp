@@ -10,6 +10,7 @@
 #include "apps/commands.h"
 #include "apps/flag_checks.h"
 #include "apps/learning_options.h"
+#include "apps/learning_output.h"
 #include "apps/options.h"
 #include "apps/sim_flags.h"
 #include "common/atomic_file.h"
@@ -163,7 +164,7 @@ void run_landscapes_and_report(const std::vector<experiments::LandscapeSpec>& sp
     report::draw_landscape(l, {}, experiments::landscape_set_dir(out, l.spec));
   }
   const robot::Morphology& morph = experiments::morphology(specs.front().robot);
-  std::cout << morph.name << ", " << specs.size()
+  std::cout << robot_text(specs.front().robot) << ", " << specs.size()
             << " scenarios (share of combinations that hold):\n";
   std::cout << std::fixed << std::setprecision(1);
   for (const experiments::Landscape& l : landscapes) {

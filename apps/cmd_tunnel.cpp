@@ -113,7 +113,7 @@ void run_tunnel(const TunnelOptions& o, bool periods_given) {
                              : run.touched_wall ? "touched a wall"
                                                 : "did not reach the end";
   if (stream) std::cout << "\n";
-  std::cout << std::fixed << std::setprecision(2) << robot_text(spec) << ", tunnel "
+  std::cout << std::fixed << std::setprecision(2) << robot_text(spec.robot) << ", tunnel "
             << corridor.scene.tunnel_length << " m x " << corridor.scene.tunnel_width
             << " m, disabled "
             << (out.disabled.empty() ? "none" : robot::leg_set_name(morph, out.disabled));

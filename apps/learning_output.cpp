@@ -96,11 +96,10 @@ std::string counted(long n, const std::string& noun) {
   return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
-std::string robot_text(const experiments::RunSpec& spec) {
-  const std::string layout = experiments::morphology(spec.robot).name;
-  if (!spec.robot.file) return layout;
-  return layout + " from " + spec.robot.file->record.path + " (" + spec.robot.file->record.name +
-         ")";
+std::string robot_text(const experiments::RobotSpec& robot) {
+  const std::string layout = experiments::morphology(robot).name;
+  if (!robot.file) return layout;
+  return layout + " from " + robot.file->record.path + " (" + robot.file->record.name + ")";
 }
 
 std::string world_text(const experiments::RunSpec& spec) {
@@ -112,7 +111,7 @@ std::string world_text(const experiments::RunSpec& spec) {
 void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, long settle_steps) {
   const robot::Morphology& morph = experiments::morphology(spec.robot);
   const learning::CompensationOptions& options = *spec.learning;
-  out << robot_text(spec) << ", " << learning::to_string(options.mode) << " mode";
+  out << robot_text(spec.robot) << ", " << learning::to_string(options.mode) << " mode";
   if (options.mode == learning::Mode::robust) {
     out << " (steering " << learning::to_string(options.steering) << ", "
         << counted(options.hold_windows, "window") << " to hold)";

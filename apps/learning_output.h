@@ -29,7 +29,7 @@ std::string counted(long n, const std::string& noun);
 // What the run walks on, where its robot file and terrain and body model apply:
 // "hexapod", "quadruped from examples/robots/dog12.toml (dog12)"; "terrain slope:10:0, body model
 // real".
-std::string robot_text(const experiments::RunSpec& spec);
+std::string robot_text(const experiments::RobotSpec& robot);
 std::string world_text(const experiments::RunSpec& spec);
 
 // The learning run's header: robot, mode, faults, learner and search, then the world, and the

@@ -368,6 +368,7 @@ learning::LandscapeDataset landscape_dataset(const std::vector<Landscape>& lands
   d.window_steps = first.window_steps;
   d.threshold_deg = first.threshold_deg;
   d.sim = first.robot.sim;
+  if (first.robot.file) d.robot_file = first.robot.file->record;
   if (first.steering == learning::Steering::reflex) {
     const learning::CompensationOptions o = landscape_options(first);
     d.reflex = o.steering_params;

@@ -336,6 +336,7 @@ void write_landscape_dataset(const LandscapeDataset& d, const fs::path& path) {
                           {"steering", reflex ? "reflex" : "off"},
                           {"scenarios", scenarios},
                           {"checksum", checksum_text(text)}};
+  if (!d.robot_file.is_null()) manifest["robot_file"] = d.robot_file;
   if (reflex) {
     manifest["steering_params"] = *d.reflex;
     manifest["monitor_windows"] = d.monitor_windows;
@@ -404,6 +405,13 @@ LandscapeDataset parse_dataset(const fs::path& path, const std::string& manifest
   }
   d.sim = f.at("sim");
   if (!d.sim.is_object()) throw f.bad("sim", "must be a table of simulation options");
+  if (const auto file = m.find("robot_file"); file != m.end()) {
+    const auto name = file->is_object() ? file->find("name") : file->end();
+    if (name == file->end() || !name->is_string()) {
+      throw f.bad("robot_file", "must be the record of a robot file, with its name");
+    }
+    d.robot_file = *file;
+  }
   const std::string steering = version == kFirstFormatVersion ? "off" : f.text("steering");
   if (steering == "reflex") {
     try {

@@ -20,6 +20,12 @@ TEST_F(Dataset, AWrittenDatasetReadsBackAndAnEditedOneIsRefused) {
   }
   EXPECT_GT(data_.find({kL2})->holding(), 0u);
   EXPECT_EQ(data_.find({0, 1})->holding(), 0u);
+  // Walked by the built-in robot: no robot file recorded; by a robot file: its record kept.
+  EXPECT_TRUE(back.robot_file.is_null());
+  LandscapeDataset by_file = data_;
+  by_file.robot_file = {{"path", "robots/spider.toml"}, {"name", "spider"}};
+  learning::write_landscape_dataset(by_file, stem() + "-by-file");
+  EXPECT_EQ(learning::read_landscape_dataset(stem() + "-by-file").robot_file, by_file.robot_file);
 
   // One byte changed in the compressed table: the manifest's checksum no longer matches.
   const fs::path csv = stem() + ".csv.gz";
@@ -90,6 +96,10 @@ TEST_F(Dataset, ADamagedManifestIsRefusedNamingTheFileAndTheField) {
           [](nlohmann::json& m) { m["scenarios"][0]["combinations"] = 125.5; });
   refused("no checksum", "checksum", [](nlohmann::json& m) { m.erase("checksum"); });
   refused("a numeric checksum", "checksum", [](nlohmann::json& m) { m["checksum"] = 7; });
+  refused("a robot file without its name", "robot_file", [](nlohmann::json& m) {
+    m["robot_file"] = {{"path", "robots/spider.toml"}};
+  });
+  refused("a robot file of a number", "robot_file", [](nlohmann::json& m) { m["robot_file"] = 3; });
   std::ofstream(manifest) << "";
   EXPECT_THROW(learning::read_landscape_dataset(stem()), BadInput);
   std::ofstream(manifest) << good;

@@ -137,6 +137,19 @@ TEST_F(RobotFileRuns, LandscapeWalksItAsTheBuiltInRobot) {
                    "robot_file.checksum_toml");
 }
 
+// A dataset of every loss walked by a robot file names it, as each of its landscapes does
+// (docs/learning.md "The landscape dataset"). One period: each loss is one combination, the
+// smallest such dataset, and each map is drawn for its one combination.
+TEST_F(RobotFileRuns, ADatasetOfEveryLossNamesTheRobotFileThatWalkedIt) {
+  ok("landscape --robot " + robot_ + " --every-loss --periods-set 4 --windows 1 --out " + dir_ +
+     "/set");
+  const json manifest = read_json(dir_ + "/set/landscapes.json");
+  EXPECT_EQ(manifest.at("robot_file"), read_json(dir_ + "/set/R1/summary.json").at("robot_file"));
+  EXPECT_EQ(manifest.at("robot_file").at("name"), "quadruped");
+  EXPECT_EQ(manifest.at("scenarios").size(), 14U);
+  EXPECT_GT(std::filesystem::file_size(dir_ + "/set/R1+R2/landscape-map.png"), 0U);
+}
+
 TEST_F(RobotFileRuns, TheTunnelScaledToTheRobotIsRecorded) {
   const std::string walk = "tunnel --disable R1 --max-steps 300 --json --robot " + robot_;
   const CliResult plain = run_cli(walk);

@@ -60,6 +60,17 @@ TEST(Sweep, EachExampleFileValidates) {
     EXPECT_EQ(r.exit_code, 0) << file << "\n" << r.err;
     EXPECT_NE(r.out.find(count), std::string::npos) << file << "\n" << r.out;
   }
+  // Every other experiment file of examples/ too (robot and hardware files are not experiments).
+  int checked = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(kExamples)) {
+    const std::filesystem::path& path = entry.path();
+    const std::string folder = path.parent_path().filename().string();
+    if (path.extension() != ".toml" || folder == "robots" || folder == "hardware") continue;
+    const CliResult r = run_cli("run " + path.string() + " --check");
+    EXPECT_EQ(r.exit_code, 0) << path << "\n" << r.err;
+    ++checked;
+  }
+  EXPECT_GT(checked, static_cast<int>(files.size()));
 }
 
 TEST(Sweep, ListsFormAGridOfEveryCombination) {

@@ -7,6 +7,8 @@
 # Variables: data (rank, worst_deg, holds, first_window_passes, best, learned, label, then one
 # w<n>_worst_deg column per window), title, subtitle, threshold (degrees), windows, count and
 # learned (how many learned answers are marked).
+# The best one's label is an empty text at every other point, never an undefined y: gnuplot 5.4
+# crashes on labels whose every y is undefined when the data has one row (one combination).
 load dir.'common.gp'
 first_window_column = 8
 floor_deg = 0.01
@@ -29,5 +31,5 @@ plot for [w=1:windows] data using 'rank':(clamp(column(first_window_column + w -
        with points pt 6 ps 2 lw 2 lc rgb red title (learned > 0 ? 'learned' : ''), \
      data using 'rank':(column('best') == 1 ? clamp(column('worst_deg')) : NaN) \
        with points pt 13 ps 2.5 lc rgb green title 'best holding', \
-     data using 'rank':(column('best') == 1 ? clamp(column('worst_deg')) : NaN):'label' \
+     data using 'rank':(clamp(column('worst_deg'))):(column('best') == 1 ? strcol('label') : '') \
        with labels left offset 1.5, -1 font ',10' noenhanced notitle
