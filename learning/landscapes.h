@@ -69,8 +69,8 @@ struct LandscapeDataset {
   double threshold_deg = 0.0;
   nlohmann::json sim;  // the simulation options the combinations were walked with (record)
   // The robot file whose body walked them (its record: path, name, checksums); null: the
-  // built-in robot of `robot`'s layout. A record: a prior of that layout learns from it on any
-  // body (docs/learning.md "The prior on other bodies").
+  // built-in robot of `robot`'s layout. A record only: a prior learns from the dataset on any
+  // body of that layout (docs/learning.md "The prior on other bodies").
   nlohmann::json robot_file;
   // How it was walked: empty = periods alone, every window; else with the steering reflex of
   // these parameters, each combination until its first window over the threshold.
