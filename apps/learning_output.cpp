@@ -84,7 +84,7 @@ void print_best_trial(std::ostream& out, const experiments::RunSpec& spec,
   const auto best = std::min_element(
       r.trace.begin(), r.trace.end(),
       [](const auto& a, const auto& b) { return a.deviation_deg < b.deviation_deg; });
-  out << "best trial measured: " << (best - r.trace.begin()) + 1 << ", "
+  out << "best trial measured: trial " << (best - r.trace.begin()) + 1 << ", "
       << robot::period_map_text(experiments::morphology(spec.robot), best->periods,
                                 body::failing_legs(spec.faults))
       << ", E " << degrees(best->deviation_deg) << "\n";

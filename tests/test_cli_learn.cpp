@@ -227,7 +227,7 @@ TEST(CliLearn, StepBudgetEndsARunThatCannotConverge) {
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("--step-budget"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("best trial measured: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("best trial measured: trial "), std::string::npos) << r.out;
   std::ostringstream last_row;
   last_row << "\n" << std::setw(5) << trials << "  4x";
   EXPECT_NE(r.out.find(last_row.str()), std::string::npos)
