@@ -405,12 +405,11 @@ LandscapeDataset parse_dataset(const fs::path& path, const std::string& manifest
   }
   d.sim = f.at("sim");
   if (!d.sim.is_object()) throw f.bad("sim", "must be a table of simulation options");
-  if (const auto file = m.find("robot_file"); file != m.end()) {
-    const auto name = file->is_object() ? file->find("name") : file->end();
-    if (name == file->end() || !name->is_string()) {
-      throw f.bad("robot_file", "must be the record of a robot file, with its name");
-    }
-    d.robot_file = *file;
+  if (m.contains("robot_file")) {
+    const nlohmann::json& file = f.at("robot_file");
+    if (!file.is_object()) throw f.bad("robot_file", "must be the record of a robot file");
+    Manifest(file, mname + ": robot_file").text("name");  // a record names its file at least
+    d.robot_file = file;
   }
   const std::string steering = version == kFirstFormatVersion ? "off" : f.text("steering");
   if (steering == "reflex") {
