@@ -124,9 +124,9 @@ void run(const BenchmarkOptions& o) {
   const std::size_t holding = experiments::holding_scenarios(b);
   std::cout << morph.name << ", "
             << counted(static_cast<long>(experiments::benchmark_scenarios(b)), "scenario") << " x "
-            << counted(spec.seeds, "seed") << ", " << o.mode << " trials, held within "
-            << spec.budget << " trials, pooled over the "
-            << counted(static_cast<long>(holding), "scenario")
+            << counted(spec.seeds, "seed") << " of " << path.string() << " (walked with "
+            << probe.walked() << "), " << o.mode << " trials, held within " << spec.budget
+            << " trials, pooled over the " << counted(static_cast<long>(holding), "scenario")
             << " where a combination holds (share held with its 95% interval):\n";
   if (holding > 0) {
     std::cout << std::fixed << std::setprecision(1);
@@ -167,7 +167,9 @@ void register_learner_benchmark(CLI::App& app) {
       "truth (docs/learning.md \"Learner benchmark\")");
   cmd->add_option("--dataset", o->dataset,
                   "the landscape dataset (learning/landscapes.h): DIR/NAME of NAME.csv.gz and "
-                  "NAME.json (default: the repository's data/landscapes/hexapod)");
+                  "NAME.json (default: the repository's hexapod dataset walked as --steering "
+                  "says, data/landscapes/hexapod-reflex in robust mode, data/landscapes/hexapod "
+                  "in paper mode)");
   cmd->add_option("--learners", o->learners, "learners to replay, e.g. annealing,bayes")
       ->delimiter(',')
       ->check(one_of(learner_name_list(), "learner"))

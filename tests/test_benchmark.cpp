@@ -266,7 +266,10 @@ TEST_F(Dataset, TheBenchmarkLabelsItsIntervalAndPoolsItsScenarios) {
   const CliResult r = run_cli("learner-benchmark --dataset " + stem() +
                               " --learners random --seeds 4 --out " + dir_ + "/b");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("5 scenarios x 4 seeds"), std::string::npos) << r.out;
+  // It names the dataset it replayed and how that was walked.
+  EXPECT_NE(r.out.find("5 scenarios x 4 seeds of " + stem() + " (walked with periods alone)"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("pooled over the 4 scenarios where a combination holds"), std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("% (95% interval "), std::string::npos) << r.out;
