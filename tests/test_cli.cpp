@@ -2,9 +2,13 @@
 // the CLI's own manners (--help, --version, suggestions, messages, failed writes and tools).
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "common/user_text.h"
 #include "tests/cli_runner.h"
@@ -112,6 +116,58 @@ TEST(Cli, HelpShowsNoValidatorNoise) {
     EXPECT_EQ(r.out.find(":not empty"), std::string::npos) << command << ":\n" << r.out;
   }
   EXPECT_NE(run_cli("walk --help").out.find("--periods TEXT=4"), std::string::npos);
+}
+
+// docs/cli.md lists every command and every flag its --help lists: a flag added without a word
+// there fails here.
+TEST(Cli, DocsListEveryCommandAndFlag) {
+  const std::string docs = read_file(std::string(MULTICPG_SOURCE_DIR) + "/docs/cli.md");
+  const auto documented = [&](const std::string& word) {
+    for (std::size_t at = docs.find(word); at != std::string::npos; at = docs.find(word, at + 1)) {
+      const std::size_t end = at + word.size();
+      if (end == docs.size() || (!std::isalnum(static_cast<unsigned char>(docs[end])) &&
+                                 docs[end] != '-' && docs[end] != '_')) {
+        return true;
+      }
+    }
+    return false;
+  };
+  // The names an --help lists under "Subcommands:", and the long flags under "Options:".
+  const auto listed = [](const std::string& help, const std::regex& line) {
+    std::vector<std::string> out;
+    std::istringstream in(help);
+    for (std::string l; std::getline(in, l);) {
+      std::smatch m;
+      if (std::regex_search(l, m, line)) out.push_back(m[1]);
+    }
+    return out;
+  };
+  const std::regex subcommand("^  ([a-z][a-z-]*) ");
+  const std::regex flag("^  (?:-[A-Za-z],)?(--[a-z][a-z-]*)");
+  const auto subcommands = [&](const std::string& help) {
+    const std::size_t at = help.find("Subcommands:");
+    return at == std::string::npos ? std::vector<std::string>{}
+                                   : listed(help.substr(at), subcommand);
+  };
+  const CliResult top = run_cli("--help");
+  ASSERT_EQ(top.exit_code, 0) << top.err;
+  std::vector<std::string> commands;
+  for (const std::string& c : subcommands(top.out)) {
+    const CliResult help = run_cli(c + " --help");
+    ASSERT_EQ(help.exit_code, 0) << c << ": " << help.err;
+    const std::vector<std::string> inner = subcommands(help.out);
+    if (inner.empty()) commands.push_back(c);
+    for (const std::string& i : inner) commands.push_back(c + " " + i);
+  }
+  ASSERT_GE(commands.size(), 20u) << "the command list was not read";
+  for (const std::string& c : commands) {
+    EXPECT_TRUE(documented("multicpg " + c)) << "docs/cli.md has no row for `multicpg " << c << "`";
+    const CliResult help = run_cli(c + " --help");
+    for (const std::string& f : listed(help.out, flag)) {
+      if (f == "--help") continue;
+      EXPECT_TRUE(documented(f)) << "docs/cli.md does not name " << f << " of `" << c << "`";
+    }
+  }
 }
 
 TEST(Cli, MistypedNamesGetASuggestion) {
