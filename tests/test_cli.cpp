@@ -5,6 +5,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -151,19 +152,22 @@ TEST(Cli, DocsListEveryCommandAndFlag) {
   };
   const CliResult top = run_cli("--help");
   ASSERT_EQ(top.exit_code, 0) << top.err;
-  std::vector<std::string> commands;
+  std::map<std::string, std::string> helps;  // of each command that has no subcommands
   for (const std::string& c : subcommands(top.out)) {
     const CliResult help = run_cli(c + " --help");
     ASSERT_EQ(help.exit_code, 0) << c << ": " << help.err;
     const std::vector<std::string> inner = subcommands(help.out);
-    if (inner.empty()) commands.push_back(c);
-    for (const std::string& i : inner) commands.push_back(c + " " + i);
+    if (inner.empty()) helps[c] = help.out;
+    for (const std::string& i : inner) {
+      const CliResult inner_help = run_cli(c + " " + i + " --help");
+      ASSERT_EQ(inner_help.exit_code, 0) << c << " " << i << ": " << inner_help.err;
+      helps[c + " " + i] = inner_help.out;
+    }
   }
-  ASSERT_GE(commands.size(), 20u) << "the command list was not read";
-  for (const std::string& c : commands) {
+  ASSERT_GE(helps.size(), 20u) << "the command list was not read";
+  for (const auto& [c, help] : helps) {
     EXPECT_TRUE(documented("multicpg " + c)) << "docs/cli.md has no row for `multicpg " << c << "`";
-    const CliResult help = run_cli(c + " --help");
-    for (const std::string& f : listed(help.out, flag)) {
+    for (const std::string& f : listed(help, flag)) {
       if (f == "--help") continue;
       EXPECT_TRUE(documented(f)) << "docs/cli.md does not name " << f << " of `" << c << "`";
     }
