@@ -109,6 +109,13 @@ void report_landscape(const experiments::Landscape& landscape,
     const experiments::CombinationMeasure& m = landscape.combinations[*best];
     std::cout << "best: " << robot::period_map_text(morph, m.periods, spec.disabled)
               << ", worst deviation " << std::setprecision(2) << m.worst_deg << " deg\n";
+  } else if (const std::vector<std::size_t> ranked = experiments::ranked_combinations(landscape);
+             !ranked.empty()) {
+    // What came closest is what a user tries next (another period set, more legs working).
+    const experiments::CombinationMeasure& m = landscape.combinations[ranked.front()];
+    std::cout << "best: no combination holds; the closest, "
+              << robot::period_map_text(morph, m.periods, spec.disabled) << ", worst deviation "
+              << std::setprecision(2) << m.worst_deg << " deg\n";
   } else {
     std::cout << "best: no combination holds\n";
   }
