@@ -460,9 +460,13 @@ void register_learning(py::module_& m) {
       "with\n"
       "learner_options, a dict of its own options (`--learner-option KEY=VALUE`). beta\n"
       "(0..100), threshold (deg, 0.001..180), window (steps), settle (steps; None: the mode's),\n"
-      "max_trials (1..100000), tell_fault (False: the learner is told nothing of the fault and\n"
-      "searches every leg's period, the CLI's --no-tell-fault), seed (0..4294967295). Returns the "
-      "dict of `learn --json`, plus\n"
+      "max_trials (1..100000), max_episodes (robust mode's episodes, 1..1000), step_budget\n"
+      "(controller steps its trials may spend over all episodes, 1..100000000), tell_fault\n"
+      "(False: the learner is told nothing of the fault and searches every leg's period, the\n"
+      "CLI's --no-tell-fault), seed (0..4294967295). hardware: a hardware file (FILE.toml,\n"
+      "docs/hardware.md): the run drives that robot over its serial bus in real time;\n"
+      "lock_step=True: no pacing, for a rehearsal against `multicpg emulate` (never on a real\n"
+      "robot). Returns the dict of `learn --json`, plus\n"
       "trace_arrays (trial from 0, periods [trials,legs], deviation_deg, accepted, the\n"
       "learner's details: a model-based learner's forecast of each trial, predicted_e_deg ...),\n"
       "for a model-based learner model_arrays (its map after the last trial: periods\n"
@@ -483,9 +487,9 @@ void register_learning(py::module_& m) {
       "the open field (learning arguments as for learn(), refused without learn=True).\n"
       "max_steps: 1..100000000. Returns the dict of `tunnel --json` plus path (time, x, y,\n"
       "yaw_deg) and, after learning, trace_arrays (and model_arrays, as learn's). video='run.mp4'\n"
-      "films the tunnel walk;\n"
-      "observer and progress as for learn(). scale_tunnel=True scales the tunnel to the\n"
-      "robot's width (`tunnel --scale-tunnel`).";
+      "films the tunnel walk; control_dt, physics_dt and servo_gain as for Robot; hardware,\n"
+      "lock_step, observer and progress as for learn(). scale_tunnel=True scales the tunnel to\n"
+      "the robot's width (`tunnel --scale-tunnel`).";
   static const std::string options_doc =
       learning_signature().text("_learning_options", "dict") +
       "\n\nThe learning arguments of learn() checked as learn() checks them (multicpg.env).";
@@ -520,7 +524,8 @@ void register_learning(py::module_& m) {
       "The simulated annealing of paper §3 (Table 2), one call per step, with the draws of\n"
       "`multicpg learn --mode paper`: start from C0 = periods (as for Simulation; each working\n"
       "leg's in PERIOD_SET) measured at e_ref (deg, 0..180) with the `disabled` legs kept, then\n"
-      "propose() a combination, walk it, decide(deviation).")
+      "propose() a combination, walk it, decide(deviation). robot: a Robot, a robot name or a\n"
+      "robot file; seed, beta, threshold and max_trials as for learn().")
       .def(py::init([](mp::RobotArg robot, mp::PeriodsArg periods, mp::LegsArg disabled,
                        mp::FloatArg e_ref, mp::IntArg seed, mp::FloatArg beta,
                        mp::FloatArg threshold, mp::IntArg max_trials) {

@@ -304,9 +304,12 @@ void register_robots(py::module_& m) {
       "Simulation of it. tunnel=True adds the 3.0 m x 1.2 m corridor of paper §5. control_dt\n"
       "(s per controller step), physics_dt (MuJoCo's step; None: the largest <= 5 ms that divides\n"
       "control_dt) and servo_gain (1/s; None: lpzrobots', scaled to control_dt) are the\n"
-      "CLI's --control-dt, --physics-dt, --servo-gain. Robots are equal (and hash equal) when "
-      "made\n"
-      "of the same name and options; a State of one restores into a Simulation of any equal one.");
+      "CLI's --control-dt, --physics-dt, --servo-gain; terrain (a Terrain or the CLI's text), "
+      "model\n"
+      "('paper-sim' or 'real') and body (a dict of body parameters, {'slip': 0.02}) are its\n"
+      "--terrain, --model and Body flags (docs/cli.md \"The body\"). Robots are equal (and hash\n"
+      "equal) when made of the same name and options; a State of one restores into a Simulation\n"
+      "of any equal one.");
   {
     const OwnSignatures own;
     robot_class.def(py::init([](const py::args& args, const py::kwargs& kwargs) {

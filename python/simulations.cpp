@@ -563,7 +563,8 @@ void register_simulations(py::module_& m) {
       arg("sim"), arg("width") = report::kDefaultFrameWidth,
       arg("height") = report::kDefaultFrameHeight, arg("caption") = "",
       "The simulation now as an H x W x 3 uint8 RGB array, drawn as films are (camera following\n"
-      "the trunk, failed legs red, step and periods in the corner); sides 16..4096 px. Headless:\n"
+      "the trunk, failed legs red, step and periods in the corner, and `caption` under them);\n"
+      "width and height 16..4096 px. Headless:\n"
       "EGL or OSMesa (MUJOCO_GL=egl|osmesa).");
   m.def(
       "film",
