@@ -339,7 +339,12 @@ void print_learning_end(std::ostream& out, const experiments::RunSpec& spec,
            "again.\n";
     print_best_trial(out, spec, r);
   } else if (r.outcome == learning::Outcome::not_converged && r.reason) {
-    out << "Learning gave up: " << stop_text(*r.reason) << ".\n";
+    out << "Learning gave up: " << stop_text(*r.reason);
+    if (robust && *r.reason == learning::StopReason::space_exhausted && !r.episodes.empty() &&
+        r.episodes.back().trials == 0) {
+      out << " and none held; a later episode could try nothing new, so none started";
+    }
+    out << ".\n";
     print_best_trial(out, spec, r);
   }
   if (robust && !options.learn_periods) {

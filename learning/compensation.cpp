@@ -317,7 +317,7 @@ class RobustRun {
       const int faults = walk_.take_fault_count();
       if (walk_.take_full_recovery()) {
         resynchronise();
-        memory_.clear();
+        forget();
         monitored = 0;
         result_.final_windows.clear();
         continue;
@@ -326,13 +326,14 @@ class RobustRun {
         // The window a fault came in measures the transient, not the controller that walks on:
         // neither a trigger for learning nor one of the windows after the last fault. What
         // earlier episodes measured was another body's.
-        memory_.clear();
+        forget();
         monitored = 0;
         result_.final_windows.clear();
         continue;
       }
       if (!body::holds(error(m), params_.threshold_deg) && options_.learn_periods &&
-          static_cast<int>(result_.episodes.size()) < options_.max_episodes && !budget_.used_up()) {
+          !nothing_left_ && static_cast<int>(result_.episodes.size()) < options_.max_episodes &&
+          !budget_.used_up()) {
         episode(m);
         monitored = 0;
         result_.final_windows.clear();
@@ -363,6 +364,12 @@ class RobustRun {
   void set(const Periods& p) {
     neural::set_periods(model_, body_.controller(), p);
     walk_.steps(settle_for(p));
+  }
+
+  // The trials walked so far describe another body (a fault came or went).
+  void forget() {
+    memory_.clear();
+    nothing_left_ = false;
   }
 
   // Paper §2.3: every leg works again: all legs at the master's period, clients synchronised.
@@ -411,9 +418,12 @@ class RobustRun {
     EpisodeEnd end = run_episode(*learner, hooks);
     // A fault that came during the episode makes what it walked another body's.
     if (ep.interrupted) {
-      memory_.clear();
+      forget();
     } else {
       memory_.insert(memory_.end(), walked.begin(), walked.end());
+      // Nothing was left to try: the next episode would start here, told the same trials, and
+      // try nothing either, so none starts until a fault makes the run forget them.
+      nothing_left_ = end.reason == StopReason::space_exhausted && end.trials == 0;
     }
     result_.forecasts = learner->best_forecasts(kBestForecasts);
     if (periods() != end.answer.periods) set(end.answer.periods);
@@ -469,6 +479,8 @@ class RobustRun {
   LearningResult result_;
   // What this run's episodes walked since the faults last changed (LearnerSetup::earlier).
   std::vector<EarlierTrial> memory_;
+  // An episode tried nothing, every combination in memory_: no later one can try another.
+  bool nothing_left_ = false;
 };
 
 }  // namespace

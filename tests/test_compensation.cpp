@@ -365,6 +365,25 @@ TEST(RobustCompensation, EpisodeCapEndsTheRunAndIsItsReason) {
   EXPECT_EQ(parse_stop_reason(to_string(StopReason::episode_cap)), StopReason::episode_cap);
 }
 
+// Every combination turns the fake walker, and only L2 of the quadruped works (5 periods): the
+// first episode tries the 4 other than the start, the second the start's (it walks on from
+// another), the third nothing. No episode starts after that one: the next would start where it
+// did, told the same trials, and try nothing either (before: seven more such, to the cap).
+TEST(RobustCompensation, NoEpisodeStartsOnceOneFoundNothingLeftToTry) {
+  CompensationOptions o = robust_options(4);
+  o.settle_steps = 0;
+  FakeBody walker(RobotKind::quadruped, failing({0, 1, 2}), 0.2);
+  const LearningResult r = compensate(walker, o, {});
+  ASSERT_EQ(r.episodes.size(), 3u);
+  EXPECT_EQ(r.episodes[0].trials, 4);
+  EXPECT_EQ(r.episodes[1].trials, 1);
+  EXPECT_EQ(r.episodes[2].trials, 0);
+  EXPECT_EQ(r.trials, 5);
+  EXPECT_EQ(r.outcome, Outcome::not_converged);
+  EXPECT_EQ(r.reason, StopReason::space_exhausted);
+  EXPECT_EQ(r.final_windows.size(), static_cast<std::size_t>(o.monitor_windows));
+}
+
 TEST(RobustCompensation, RecoveryResynchronisesAtTheMastersPeriod) {
   const CompensationOptions o = robust_options(3);
   FakeBody walker(RobotKind::hexapod, {{0, {0}, false}, {30000, {0}, true}});

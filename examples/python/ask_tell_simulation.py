@@ -9,7 +9,8 @@ with the same seed it gives learn()'s trials:
   the threshold starts an episode; a trial walks up to DEFAULT_HOLD_WINDOWS windows after the
   settle, stopping at the first over; after an episode the answer walks on, and a window over
   the threshold starts the next episode (the learner told what the earlier ones walked), until
-  DEFAULT_MONITOR_WINDOWS windows hold (docs/learning.md "Compensation that holds").
+  DEFAULT_MONITOR_WINDOWS windows hold (docs/learning.md "Compensation that holds"); once an
+  episode has found nothing left to try, none starts again.
 - paper mode (paper §3): a cold start, one window of 400 steps a trial after the settle.
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python/ask_tell_simulation.py \\
@@ -42,10 +43,11 @@ def _robust_loop(learner, disable, seed, max_trials, robot, max_episodes):
 
     agent = None
     held = 0  # windows walked on since the last episode, each under the threshold
+    nothing_left = False  # an episode tried nothing: every combination was told
     while held < DEFAULT_MONITOR_WINDOWS:
         window = sim.walk_window(DEFAULT_WINDOW_STEPS)
         episodes = agent.episode if agent is not None else 0
-        if not over(window) or episodes == max_episodes:
+        if not over(window) or episodes == max_episodes or nothing_left:
             held += 1
             continue
         held = 0
@@ -56,6 +58,7 @@ def _robust_loop(learner, disable, seed, max_trials, robot, max_episodes):
                                      max_trials=max_trials)
         else:
             agent.next_episode(periods=sim.periods, windows=[window])
+        told = agent.trials
         while (periods := agent.ask()) is not None:
             sim.set_periods(periods)
             sim.step(robot.settle_steps(sim.periods), progress=False)
@@ -63,6 +66,7 @@ def _robust_loop(learner, disable, seed, max_trials, robot, max_episodes):
             while len(windows) < DEFAULT_HOLD_WINDOWS and not (windows and over(windows[-1])):
                 windows.append(sim.walk_window(DEFAULT_WINDOW_STEPS))
             agent.tell(windows=windows)
+        nothing_left = agent.trials == told and agent.reason == "search space exhausted"
         answer = list(agent.answer["periods"].values())  # leg order, as sim.periods
         if answer != sim.periods:
             sim.set_periods(answer)
