@@ -266,7 +266,9 @@ void register_robots(py::module_& m) {
             t.depth_m = mp::real(depth, "depth_m", multicpg::robot::kStepDepthLimits);
             return multicpg::robot::Terrain{t};
           },
-          arg("height_m"), arg("depth_m"), "stairs of `height_m` rises and `depth_m` treads")
+          arg("height_m"), arg("depth_m"),
+          "past a 0.5 m flat start the floor steps up `height_m` (0.001..0.05 m) for `depth_m` "
+          "(0.05..1 m), down for `depth_m`, and so on")
       .def_property_readonly(
           "kind",
           [](const multicpg::robot::Terrain& t) {

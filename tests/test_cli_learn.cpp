@@ -445,7 +445,9 @@ std::map<std::string, std::string> saved_runs(const fs::path& dir) {
 
 TEST(CliExperiment, JobsDoNotChangeTheTableAndAKilledRunResumes) {
   const std::string dir = make_temp_dir("exp-");
-  const std::string args = "experiment table --robot quadruped --runs 1 --seed 7 ";
+  // Runs of at most 10 trials: each still walks for about a second, so that the kill below
+  // lands between the second saved run and the last.
+  const std::string args = "experiment table --robot quadruped --runs 1 --seed 7 --max-trials 10 ";
   ASSERT_EQ(run_cli(args + "--jobs 1 --out " + dir + "/one").exit_code, 0);
   ASSERT_EQ(run_cli(args + "--jobs 2 --out " + dir + "/two").exit_code, 0);
   const std::string table = read_file(fs::path(dir) / "one/table.csv");
@@ -485,9 +487,7 @@ TEST(CliExperiment, JobsDoNotChangeTheTableAndAKilledRunResumes) {
             read_file(fs::path(dir) / "one/experiment.json"));
 
   // Resuming with other arguments is refused, naming what differs.
-  const auto other =
-      run_cli("experiment table --robot quadruped --runs 1 --seed 7 --servo-gain 20 --out " +
-              killed.string());
+  const auto other = run_cli(args + "--servo-gain 20 --out " + killed.string());
   EXPECT_EQ(other.exit_code, 2);
   EXPECT_NE(other.err.find("arguments.sim.servo_gain"), std::string::npos) << other.err;
   fs::remove_all(dir);

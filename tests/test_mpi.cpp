@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <thread>
 
@@ -117,10 +118,15 @@ TEST_F(Mpi, ThreadsInsideProcessesGiveTheFilesOfOneThread) {
 }
 
 // `run FILE.toml` goes through the same runner: an experiment file under two processes gives the
-// files of one thread, its tidy CSVs included.
+// files of one thread, its tidy CSVs included. A sweep as small as kExperiment (two grid points of
+// β, two scenarios, two runs of at most 2 trials), so that the runner, not the learning, is tested.
 TEST_F(Mpi, AnExperimentFileUnderTwoProcessesGivesTheFilesOfOneThread) {
 #ifdef MULTICPG_MPI
-  const std::string file = std::string(MULTICPG_SOURCE_DIR) + "/examples/quick.toml";
+  const std::string file = dir_ + "/sweep.toml";
+  std::ofstream(file)
+      << "robot = \"quadruped\"\nscenarios = [\"R1\", \"L2\"]\nruns = 2\nseed = 3\n"
+         "[learning]\nmode = \"paper\"\nsteering = \"off\"\n"
+         "[learning.annealing]\nbeta = [0.5, 10]\nmax_trials = 2\n[record]\ntrace = true\n";
   ASSERT_EQ(run_cli("run " + file + " --jobs 1 --out " + dir_ + "/one").exit_code, 0);
   const CliResult r = run_shell(mpirun(2) + "run " + file + " --jobs 1 --out " + dir_ + "/two");
   ASSERT_EQ(r.exit_code, 0) << r.err;

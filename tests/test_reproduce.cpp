@@ -1,7 +1,6 @@
 // `multicpg reproduce --quick` end to end: every figure and video, the report
-// opened in headless Chromium, and a second start that redoes nothing. Its own executable so
-// ctest can give it both cores (PROCESSORS 2, tests/CMakeLists.txt): it runs experiments on
-// every core, and beside another test it would take twice as long.
+// opened in headless Chromium, and a second start that redoes nothing. It runs experiments on
+// every core; ctest gives it one slot (tests/CMakeLists.txt says why).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -76,7 +75,8 @@ TEST(CliReproduce, QuickReportOpensInChromiumWithEveryImageAndVideo) {
         << section;
   }
   EXPECT_NE(index.find("hit the right wall, ≈-42°"), std::string::npos);
-  // Fig. 14's claim holds in the quick study too (fewer β values, one run each, seed 1).
+  // Fig. 14's claim, β = 0 (random search) needs the most trials, holds in the quick study (fewer
+  // β values, one run each, seed 1): the suite's one test of it (report/stages/beta.cpp).
   const nlohmann::json beta =
       nlohmann::json::parse(read_file((root / "sections" / "beta.json").string()));
   EXPECT_EQ(beta.at("verdicts").at(0).at("reproduced"), "yes") << beta.at("measured");
