@@ -77,9 +77,10 @@ TEST(CliLearn, APriorRunSaysWhichDatasetItLearnedFrom) {
 // prior where the robot's dataset walked as the run walks is, the annealing elsewhere; recorded.
 TEST(CliLearn, TheDefaultLearnerIsThePriorWhereTheRobotsDatasetIsElseTheAnnealing) {
   const auto learner = [](const std::string& args) {
+    // One trial, one episode and one window after it: the learner is chosen before the walk.
     const bool paper = args.find("--mode paper") != std::string::npos;  // one episode anyway
-    const auto r =
-        run_cli("learn " + args + " --max-trials 1 --json" + (paper ? "" : " --max-episodes 1"));
+    const auto r = run_cli("learn " + args + " --max-trials 1 --json" +
+                           (paper ? "" : " --max-episodes 1 --monitor-windows 1"));
     // 3: not converged within the one trial, which is all this test needs of the run.
     EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << args << "\n" << r.err;
     const auto j = nlohmann::json::parse(r.out);

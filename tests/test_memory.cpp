@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // When the peak is read: after the start-up (model, first rows), and three times as late.
-constexpr std::chrono::seconds kEarly{5};
-constexpr std::chrono::seconds kLate{15};
+constexpr std::chrono::seconds kEarly{4};
+constexpr std::chrono::seconds kLate{12};
 // Flat: the later peak within 10 % of the earlier (the bound), plus 1 MB for the
 // allocator's slack on a small process.
 constexpr double kGrowth = 0.10;

@@ -419,24 +419,28 @@ def test_a_robot_carries_its_body():
 def test_the_default_learner_is_the_prior_where_the_robots_dataset_is():
     """learner=None is robust mode's default (docs/learning.md "Which learner a run uses"): the
     prior on the AMOSII hexapod's leg losses, the annealing in paper mode and with a beta, as the
-    CLI's; Learner() stands for such a run."""
-    run = multicpg.learn("hexapod", disable="R1,R3", max_trials=1, max_episodes=1)
+    CLI's; Learner() stands for such a run. One window after the trials: the learner is chosen
+    before the walk."""
+    run = multicpg.learn("hexapod", disable="R1,R3", max_trials=1, max_episodes=1,
+                         monitor_windows=1)
     assert run["options"]["learner"]["name"] == "prior"
     assert run["learned_from"]["walked"] == "the steering reflex"
     paper = multicpg.learn("hexapod", disable="R1,R3", mode="paper", max_trials=1)
     assert "learner" not in paper["options"]
-    beta = multicpg.learn("hexapod", disable="R1,R3", beta=2, max_trials=1, max_episodes=1)
+    beta = multicpg.learn("hexapod", disable="R1,R3", beta=2, max_trials=1, max_episodes=1,
+                          monitor_windows=1)
     assert "learner" not in beta["options"] and beta["options"]["annealing"]["beta"] == 2
     assert multicpg.Learner(failed="R1,R3", periods=4, windows=[(-20.0, -10.0, 0.5)]).name == "prior"
     # Told nothing of the fault (the CLI's --no-tell-fault), the default is the annealing; the
     # run records it, and its learner may change a failed leg's period.
     blind = multicpg.learn("hexapod", disable="R1,R3,L2", tell_fault=False, learner="prior",
-                           max_trials=2, max_episodes=1)
+                           max_trials=2, max_episodes=1, monitor_windows=1)
     assert blind["options"]["tell_fault"] is False
     assert any(t["periods"][leg] != 4 for t in blind["trace"] for leg in ("R1", "R3", "L2"))
     assert "tell_fault" not in run["options"]
-    assert "learner" not in multicpg.learn("hexapod", disable="R1,R3", tell_fault=False,
-                                           max_trials=1, max_episodes=1)["options"]
+    told_nothing = multicpg.learn("hexapod", disable="R1,R3", tell_fault=False, max_trials=1,
+                                  max_episodes=1, monitor_windows=1)
+    assert "learner" not in told_nothing["options"]
     assert multicpg.Learner(periods=4, windows=[(-20.0, -10.0, 0.5)]).name == "annealing"
     assert multicpg.Learner(failed="R1,R3", periods=4, windows=[(-20.0, -10.0)],
                             mode="paper").name == "annealing"

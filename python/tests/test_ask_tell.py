@@ -39,13 +39,13 @@ def same_trials(agent, learned, learner):
 
 @pytest.mark.parametrize("learner", multicpg.LEARNERS)
 def test_ask_tell_from_a_users_loop_retraces_learns_default_mode(learner):
-    # Robust mode with the reflex, as learn() runs by default: with a cap of 3 trials every
+    # Robust mode with the reflex, as learn() runs by default: with a cap of 2 trials every
     # learner needs more than one episode on R1+R3+L2, so the loop's monitoring and the memory
     # next_episode() carries over are retraced too; two episodes at most keep it short, and the
     # windows after the last one are walked as the run walks them.
     learned = multicpg.learn("hexapod", disable="R1,R3,L2", learner=learner, seed=SEED,
-                             max_trials=3, max_episodes=2, progress=False)
-    agent = example("ask_tell_simulation").learn_in_my_loop(learner, "R1,R3,L2", SEED, 3,
+                             max_trials=2, max_episodes=2, progress=False)
+    agent = example("ask_tell_simulation").learn_in_my_loop(learner, "R1,R3,L2", SEED, 2,
                                                             max_episodes=2)
     same_trials(agent, learned, learner)
     assert agent.episode == len(learned["episodes"]) >= 2, learner
