@@ -3,17 +3,10 @@
 #include <algorithm>
 
 #include "body/fault_spec.h"
+#include "common/variants.h"
 
 namespace multicpg::report {
 namespace {
-
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-// Spelled out: clang 14 (the sanitizer job's) does not deduce an aggregate's template arguments.
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
 
 // The segments a fault strikes, found through the joints that move them (robot files name their
 // bodies as they like): a joint's segment is its body, the foot the foot geom's body. A whole leg

@@ -108,13 +108,11 @@ int wait_status(pid_t pid) {
   }
 }
 
-}  // namespace
-
-ProcessResult run_process(const std::vector<std::string>& argv) {
-  const int output_fd = make_output_file();
+// Waits for the child `pid` to end and reads what it wrote to `output_fd`, which it closes.
+ProcessResult collect(pid_t pid, int output_fd) {
   ProcessResult result;
   try {
-    set_ending(result, wait_status(spawn(argv, -1, output_fd)));
+    set_ending(result, wait_status(pid));
   } catch (...) {
     ::close(output_fd);
     throw;
@@ -122,6 +120,20 @@ ProcessResult run_process(const std::vector<std::string>& argv) {
   result.output = read_all(output_fd);
   ::close(output_fd);
   return result;
+}
+
+}  // namespace
+
+ProcessResult run_process(const std::vector<std::string>& argv) {
+  const int output_fd = make_output_file();
+  pid_t pid = -1;
+  try {
+    pid = spawn(argv, -1, output_fd);
+  } catch (...) {
+    ::close(output_fd);
+    throw;
+  }
+  return collect(pid, output_fd);
 }
 
 ChildWithInput::ChildWithInput(const std::vector<std::string>& argv) {
@@ -164,21 +176,10 @@ bool ChildWithInput::write(std::span<const unsigned char> bytes) {
 }
 
 ProcessResult ChildWithInput::finish() {
-  ProcessResult result;
-  if (pid_ <= 0) return result;
+  if (pid_ <= 0) return {};
   ::close(input_fd_);
   input_fd_ = -1;
-  const pid_t pid = std::exchange(pid_, -1);
-  const int output_fd = std::exchange(output_fd_, -1);
-  try {
-    set_ending(result, wait_status(pid));
-  } catch (...) {
-    ::close(output_fd);
-    throw;
-  }
-  result.output = read_all(output_fd);
-  ::close(output_fd);
-  return result;
+  return collect(std::exchange(pid_, -1), std::exchange(output_fd_, -1));
 }
 
 std::string tool_error(const ProcessResult& result) {

@@ -6,17 +6,10 @@
 
 #include "common/angles.h"
 #include "common/errors.h"
+#include "common/variants.h"
 
 namespace multicpg::sim {
 namespace {
-
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
-// Spelled out: clang 14 (the sanitizer job's) does not deduce an aggregate's template arguments.
-template <class... F>
-Overloaded(F...) -> Overloaded<F...>;
 
 // The kinds that give a run its own model.
 bool reshapes(const body::Fault& fault) {
