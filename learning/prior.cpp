@@ -8,10 +8,12 @@
 // the same GP as the bayes learner (learning/model_learner.h).
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -40,6 +42,10 @@ struct PriorOptions : ModelOptions {
   // What a window of a loss of another number of legs than the one told counts for against one
   // of as many (1: every window alike; docs/learning.md "The quadruped: a small dataset").
   double other_size_weight = 1.0;
+  // Where the GP's scales (noise_deg, intercept_deg, effect_deg, pair_deg) come from: "options"
+  // (as given) or "data" (what the regression misses on the scenarios it learns from, each left
+  // out in turn; docs/learning.md "The prior's scales from its data").
+  std::string scales = "options";
   PriorOptions() {
     intercept_deg = 8.0;
     effect_deg = 4.0;
@@ -48,7 +54,7 @@ struct PriorOptions : ModelOptions {
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PriorOptions, acquisition, kappa, noise_deg,
                                                 intercept_deg, effect_deg, pair_deg, dataset,
-                                                scenarios, ridge, other_size_weight)
+                                                scenarios, ridge, other_size_weight, scales)
 inline constexpr Limits<double> kRidgeLimits{1e-6, 1e6};
 // 0: losses of as many legs alone; above 1 the others count for more.
 inline constexpr Limits<double> kOtherSizeWeightLimits{0.0, 1e6};
@@ -57,6 +63,9 @@ void validate(const PriorOptions& o) {
   validate(static_cast<const ModelOptions&>(o));
   require_in("ridge", o.ridge, kRidgeLimits);
   require_in("other_size_weight", o.other_size_weight, kOtherSizeWeightLimits);
+  if (o.scales != "options" && o.scales != "data") {
+    throw OptionError("scales", "must be options or data, got '" + o.scales + "'");
+  }
 }
 
 // The regression's features of one combination of one scenario: the constant, each lost leg,
@@ -137,62 +146,247 @@ std::vector<const ScenarioLandscape*> prior_scenarios(
   return out;
 }
 
+// A combination's mean window (yaw, path, effort in degrees of E), as the regression learns it.
+WindowOutputs mean_window(const LandscapePoint& p, const Criterion& criterion) {
+  WindowOutputs mean{};
+  for (const body::WindowMeasure& w : p.windows) {
+    mean[kYaw] += w.yaw_deg;
+    mean[kPath] += w.path_deg;
+    mean[kEffort] += criterion.effort_deg(w.steering_effort);
+  }
+  for (double& m : mean) m /= static_cast<double>(p.windows.size());
+  return mean;
+}
+
+// The regression's normal equations X'WX and X'WY, of one scenario or summed over several.
+struct NormalEquations {
+  Eigen::MatrixXd xtx;
+  Eigen::MatrixXd xty;
+};
+
+// The regression over the scenarios a prior learns from (their windows and their mirror images',
+// weighed as `other_size_weight` says), its normal equations summed in the scenarios' order; with
+// `keep_parts`, each scenario's part kept apart too, so that the scales from the data can leave
+// one out.
+class Regression {
+ public:
+  Regression(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o,
+             bool keep_parts)
+      : d_(*data.landscapes),
+        morph_(robot::morphology(d_.robot)),
+        f_(morph_.size(), d_.period_set.size()),
+        scenarios_(prior_scenarios(d_, o, setup.told, data.withheld)) {
+    const std::size_t lost = setup.told.failed().size();
+    const auto n = static_cast<Eigen::Index>(f_.size());
+    total_ = {Eigen::MatrixXd::Identity(n, n) * o.ridge, Eigen::MatrixXd::Zero(n, kOutputs)};
+    for (const ScenarioLandscape* scenario : scenarios_) {
+      const ScenarioLandscape& s = *scenario;
+      // Told nothing, no scenario loses as many legs as it knows of (none): all weigh alike.
+      const double w = s.failed.size() == lost ? 1.0 : o.other_size_weight;
+      NormalEquations part{Eigen::MatrixXd::Zero(keep_parts ? n : 0, keep_parts ? n : 0),
+                           Eigen::MatrixXd::Zero(keep_parts ? n : 0, kOutputs)};
+      const std::vector<std::size_t> image = robot::mirror(morph_, s.failed);
+      for (const LandscapePoint& p : s.points) {
+        const WindowOutputs mean = mean_window(p, setup.criterion);
+        // Its mirror image turns the other way, with the same effort. It is never the scenario
+        // the prior is told: that one's mirror is not among the scenarios.
+        const WindowOutputs mirrored{-mean[kYaw], -mean[kPath], mean[kEffort]};
+        const Periods mirrored_periods = robot::mirror_periods(morph_, p.periods);
+        add(total_, s.failed, p.periods, mean, w);
+        add(total_, image, mirrored_periods, mirrored, w);
+        if (!keep_parts) continue;
+        add(part, s.failed, p.periods, mean, w);
+        add(part, image, mirrored_periods, mirrored, w);
+      }
+      if (keep_parts) parts_.push_back(std::move(part));
+    }
+  }
+
+  const std::vector<const ScenarioLandscape*>& scenarios() const { return scenarios_; }
+
+  // The weights learned from every scenario but those in `left_out`, each named once (which
+  // needs the parts).
+  Eigen::MatrixXd solve(const std::vector<std::size_t>& left_out = {}) const {
+    if (left_out.empty()) return total_.xtx.ldlt().solve(total_.xty);
+    NormalEquations e = total_;
+    for (std::size_t i : left_out) {
+      e.xtx -= parts_.at(i).xtx;
+      e.xty -= parts_.at(i).xty;
+    }
+    return e.xtx.ldlt().solve(e.xty);
+  }
+
+  // What weights `beta` predict for `periods` with `lost` legs lost.
+  WindowOutputs predict(const Eigen::MatrixXd& beta, const std::vector<std::size_t>& lost,
+                        const Periods& periods) const {
+    WindowOutputs out{};
+    for (std::size_t i : f_.active(lost, digits(periods, d_.period_set))) {
+      for (std::size_t k = 0; k < kOutputs; ++k) {
+        out[k] += beta(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+      }
+    }
+    return out;
+  }
+
+  // The position of scenario `i`'s mirror image among the scenarios (none: itself).
+  std::size_t mirror_of(std::size_t i) const {
+    const std::vector<std::size_t> image = robot::mirror(morph_, scenarios_[i]->failed);
+    for (std::size_t j = 0; j < scenarios_.size(); ++j) {
+      if (scenarios_[j]->failed == image) return j;
+    }
+    return i;
+  }
+
+  const std::vector<int>& period_set() const { return d_.period_set; }
+
+ private:
+  void add(NormalEquations& e, const std::vector<std::size_t>& failed, const Periods& periods,
+           const WindowOutputs& y, double w) const {
+    const std::vector<std::size_t> a = f_.active(failed, digits(periods, d_.period_set));
+    for (std::size_t i : a) {
+      const auto ii = static_cast<Eigen::Index>(i);
+      for (std::size_t j : a) e.xtx(ii, static_cast<Eigen::Index>(j)) += w;
+      for (std::size_t k = 0; k < kOutputs; ++k)
+        e.xty(ii, static_cast<Eigen::Index>(k)) += w * y[k];
+    }
+  }
+
+  const LandscapeDataset& d_;
+  const robot::Morphology& morph_;
+  Features f_;
+  std::vector<const ScenarioLandscape*> scenarios_;
+  NormalEquations total_;
+  std::vector<NormalEquations> parts_;
+};
+
 // What the scenarios it learns from predict for every combination of `space` (yaw, path,
 // effort): for the legs it is told failed, or, told nothing, for the features every scenario
 // shares (each leg's period), no leg lost.
-std::vector<std::vector<double>> prior_mean(const LearnerData& data, const LearnerSetup& setup,
-                                            const SearchSpace& space, const PriorOptions& o) {
-  const LandscapeDataset& d = *data.landscapes;
-  const robot::Morphology& morph = robot::morphology(d.robot);
+std::vector<std::vector<double>> prior_mean(const Regression& r, const LearnerSetup& setup,
+                                            const SearchSpace& space) {
   std::vector<std::size_t> lost = setup.told.failed();
   std::sort(lost.begin(), lost.end());
-  const double ridge = o.ridge;
-  const Features f(morph.size(), d.period_set.size());
-  const auto n = static_cast<Eigen::Index>(f.size());
-  constexpr auto outputs = static_cast<Eigen::Index>(kOutputs);
-  Eigen::MatrixXd xtx = Eigen::MatrixXd::Identity(n, n) * ridge;
-  Eigen::MatrixXd xty = Eigen::MatrixXd::Zero(n, outputs);
-  const auto add = [&](const std::vector<std::size_t>& failed, const Periods& periods,
-                       const WindowOutputs& y, double w) {
-    const std::vector<std::size_t> a = f.active(failed, digits(periods, d.period_set));
-    for (std::size_t i : a) {
-      const auto ii = static_cast<Eigen::Index>(i);
-      for (std::size_t j : a) xtx(ii, static_cast<Eigen::Index>(j)) += w;
-      for (Eigen::Index k = 0; k < outputs; ++k) xty(ii, k) += w * y[static_cast<std::size_t>(k)];
-    }
-  };
-  for (const ScenarioLandscape* scenario : prior_scenarios(d, o, setup.told, data.withheld)) {
-    const ScenarioLandscape& s = *scenario;
-    const std::vector<std::size_t> image = robot::mirror(morph, s.failed);
-    // What its windows count for, its mirror image's too. Told nothing, no scenario loses as many
-    // legs as it knows of (none): all weigh alike.
-    const double w = s.failed.size() == lost.size() ? 1.0 : o.other_size_weight;
-    for (const LandscapePoint& p : s.points) {
-      WindowOutputs mean{};
-      for (const body::WindowMeasure& w : p.windows) {
-        mean[kYaw] += w.yaw_deg;
-        mean[kPath] += w.path_deg;
-        mean[kEffort] += setup.criterion.effort_deg(w.steering_effort);
-      }
-      for (double& m : mean) m /= static_cast<double>(p.windows.size());
-      add(s.failed, p.periods, mean, w);
-      // Its mirror image turns the other way, with the same effort. It is never the scenario
-      // the prior is told: that one's mirror is not among the scenarios.
-      add(image, robot::mirror_periods(morph, p.periods),
-          {-mean[kYaw], -mean[kPath], mean[kEffort]}, w);
-    }
-  }
-  const Eigen::MatrixXd beta = xtx.ldlt().solve(xty);
+  const Eigen::MatrixXd beta = r.solve();
   std::vector<std::vector<double>> out(kOutputs, std::vector<double>(space.size()));
   for (std::size_t c = 0; c < space.size(); ++c) {
-    const std::vector<std::size_t> a = f.active(lost, digits(space.periods(c), d.period_set));
-    for (std::size_t i : a) {
-      for (std::size_t k = 0; k < kOutputs; ++k) {
-        out[k][c] += beta(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
-      }
-    }
+    const WindowOutputs y = r.predict(beta, lost, space.periods(c));
+    for (std::size_t k = 0; k < kOutputs; ++k) out[k][c] = y[k];
   }
   return out;
+}
+
+// The GP's scales from the data (scales = "data"): how far the regression misses each scenario it
+// learns from when that scenario and its mirror image are left out of it, as the scenario under
+// test is left out of the prior. A combination's miss is split as the GP splits a function (the
+// scenario's mean miss: the constant; each working leg's period's mean miss about it: an effect;
+// what each pair of legs' periods leaves: a pair), and a scale is the root mean square of its
+// part, over the scenarios and the parts of E the run judges (yaw; the path angle in robust mode;
+// the reflex's effort with the reflex). The noise: the windows' spread around their combination's
+// mean, where a combination walked two or more (in a dataset walked in order, those that held
+// their first window). Moments rather than a likelihood fit, as the
+// ANOVA of a balanced grid gives them in closed form.
+AdditiveModelParams data_scales(const Regression& r, const Criterion& criterion) {
+  std::vector<std::size_t> outputs{kYaw};
+  if (criterion.path) outputs.push_back(kPath);
+  if (criterion.steers()) outputs.push_back(kEffort);
+  const std::size_t q = r.period_set().size();
+  struct Moment {
+    double sum = 0.0;
+    double count = 0.0;
+    void add(double x) {
+      sum += x * x;
+      count += 1.0;
+    }
+    double rms() const { return count > 0.0 ? std::sqrt(sum / count) : 0.0; }
+  };
+  // Over the scenarios, each counting once: a scale describes the scenario a prior is asked
+  // about, one drawn from among them, whatever its number of combinations.
+  Moment intercept, effect, pair, noise;
+  for (std::size_t i = 0; i < r.scenarios().size(); ++i) {
+    const ScenarioLandscape& s = *r.scenarios()[i];
+    if (s.points.empty()) continue;
+    Moment s_intercept, s_effect, s_pair, s_noise;
+    const std::size_t image = r.mirror_of(i);
+    const Eigen::MatrixXd beta =
+        r.solve(image == i ? std::vector<std::size_t>{i} : std::vector<std::size_t>{i, image});
+    std::vector<std::size_t> working;
+    for (std::size_t leg = 0; leg < s.points.front().periods.size(); ++leg) {
+      if (!std::binary_search(s.failed.begin(), s.failed.end(), leg)) working.push_back(leg);
+    }
+    std::vector<WindowOutputs> miss;
+    std::vector<std::vector<std::size_t>> digit;
+    for (const LandscapePoint& p : s.points) {
+      const WindowOutputs mean = mean_window(p, criterion);
+      const WindowOutputs predicted = r.predict(beta, s.failed, p.periods);
+      WindowOutputs m{};
+      for (std::size_t k : outputs) m[k] = mean[k] - predicted[k];
+      miss.push_back(m);
+      digit.push_back(digits(p.periods, r.period_set()));
+      if (p.windows.size() < 2) continue;
+      for (std::size_t k : outputs) {
+        double sum = 0.0, sq = 0.0;
+        for (const body::WindowMeasure& w : p.windows) {
+          const double x = k == kYaw    ? w.yaw_deg
+                           : k == kPath ? w.path_deg
+                                        : criterion.effort_deg(w.steering_effort);
+          sum += x;
+          sq += x * x;
+        }
+        const auto n = static_cast<double>(p.windows.size());
+        s_noise.sum += (sq - sum * sum / n) / (n - 1.0);
+        s_noise.count += 1.0;
+      }
+    }
+    for (std::size_t k : outputs) {
+      // The mean of the misses over the combinations whose legs `legs` walk periods `at`.
+      const auto mean_over = [&](const std::vector<std::size_t>& legs,
+                                 const std::vector<std::size_t>& at) -> std::optional<double> {
+        double sum = 0.0;
+        double n = 0.0;
+        for (std::size_t c = 0; c < miss.size(); ++c) {
+          bool in = true;
+          for (std::size_t j = 0; j < legs.size(); ++j) in = in && digit[c][legs[j]] == at[j];
+          if (!in) continue;
+          sum += miss[c][k];
+          n += 1.0;
+        }
+        if (n == 0.0) return std::nullopt;
+        return sum / n;
+      };
+      const double constant = *mean_over({}, {});
+      s_intercept.add(constant);
+      std::vector<std::vector<std::optional<double>>> main(working.size(),
+                                                           std::vector<std::optional<double>>(q));
+      for (std::size_t a = 0; a < working.size(); ++a) {
+        for (std::size_t j = 0; j < q; ++j) {
+          main[a][j] = mean_over({working[a]}, {j});
+          if (main[a][j]) {
+            *main[a][j] -= constant;
+            s_effect.add(*main[a][j]);
+          }
+        }
+      }
+      for (std::size_t a = 0; a < working.size(); ++a) {
+        for (std::size_t b = a + 1; b < working.size(); ++b) {
+          for (std::size_t j = 0; j < q; ++j) {
+            for (std::size_t l = 0; l < q; ++l) {
+              const std::optional<double> both = mean_over({working[a], working[b]}, {j, l});
+              if (both) s_pair.add(*both - constant - *main[a][j] - *main[b][l]);
+            }
+          }
+        }
+      }
+    }
+    for (auto [all, one] : {std::pair{&intercept, &s_intercept}, std::pair{&effect, &s_effect},
+                            std::pair{&pair, &s_pair}, std::pair{&noise, &s_noise}}) {
+      if (one->count > 0.0) all->add(one->rms());
+    }
+  }
+  const auto scale = [](const Moment& m, const Limits<double>& limits) {
+    return std::clamp(m.rms(), limits.lo, limits.hi);
+  };
+  return {scale(noise, kModelScaleLimits), scale(intercept, kModelScaleLimits),
+          scale(effect, kModelScaleLimits), scale(pair, kPairScaleLimits)};
 }
 
 void check_dataset(const LandscapeDataset& d, const fs::path& path, robot::RobotKind robot,
@@ -229,39 +423,48 @@ void check_period_set(const LandscapeDataset& d, const fs::path& path,
 }
 
 // What decides a prior mean besides its data, compared exactly.
-using PriorKey = std::tuple<bool, std::vector<std::size_t>, std::vector<std::vector<std::size_t>>,
-                            std::vector<std::string>, double, double, bool, double, double>;
+using PriorKey =
+    std::tuple<bool, std::vector<std::size_t>, std::vector<std::vector<std::size_t>>,
+               std::vector<std::string>, double, double, bool, double, double, std::string>;
 
 PriorKey prior_key(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o) {
   std::vector<std::size_t> lost = setup.told.failed();
   std::sort(lost.begin(), lost.end());
   const Criterion& c = setup.criterion;
-  return {setup.told.told(),   lost,   data.withheld,   o.scenarios, o.ridge,
-          o.other_size_weight, c.path, c.threshold_deg, c.max_effort};
+  return {setup.told.told(),   lost,   data.withheld,   o.scenarios,  o.ridge,
+          o.other_size_weight, c.path, c.threshold_deg, c.max_effort, o.scales};
 }
 
 }  // namespace
 
-// Prior means computed once per scenario told, withheld scenarios, options and criterion (the
+// A prior's model before any trial: its mean, and its scales where they come from the data.
+struct PriorModel {
+  std::vector<std::vector<double>> mean;
+  std::optional<AdditiveModelParams> scales;
+};
+
+// Prior models computed once per scenario told, withheld scenarios, options and criterion (the
 // benchmark's seeds share them), for the data they belong to.
 class PriorMeans {
  public:
-  std::vector<std::vector<double>> get(const LearnerData& data, const LearnerSetup& setup,
-                                       const SearchSpace& space, const PriorOptions& o) {
+  PriorModel get(const LearnerData& data, const LearnerSetup& setup, const SearchSpace& space,
+                 const PriorOptions& o) {
     const PriorKey key = prior_key(data, setup, o);
     {
       const std::lock_guard<std::mutex> lock(mutex_);
-      const auto it = means_.find(key);
-      if (it != means_.end()) return it->second;
+      const auto it = models_.find(key);
+      if (it != models_.end()) return it->second;
     }
-    std::vector<std::vector<double>> mean = prior_mean(data, setup, space, o);
+    const Regression r(data, setup, o, o.scales == "data");
+    PriorModel model{prior_mean(r, setup, space), std::nullopt};
+    if (o.scales == "data") model.scales = data_scales(r, setup.criterion);
     const std::lock_guard<std::mutex> lock(mutex_);
-    return means_.emplace(key, std::move(mean)).first->second;
+    return models_.emplace(key, std::move(model)).first->second;
   }
 
  private:
   std::mutex mutex_;
-  std::map<PriorKey, std::vector<std::vector<double>>> means_;
+  std::map<PriorKey, PriorModel> models_;
 };
 
 namespace {
@@ -308,8 +511,10 @@ std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::j
   check_dataset(*data.landscapes, data.source, setup.robot, setup.criterion);
   check_period_set(*data.landscapes, data.source, setup.search.period_set);
   const SearchSpace space(setup);
-  return std::make_unique<ModelLearner>(setup, model_learner_params(o),
-                                        data.computed->get(data, setup, space, o));
+  PriorModel model = data.computed->get(data, setup, space, o);
+  ModelLearnerParams params = model_learner_params(o);
+  if (model.scales) params.model = *model.scales;
+  return std::make_unique<ModelLearner>(setup, params, std::move(model.mean));
 }
 
 }  // namespace multicpg::learning

@@ -210,6 +210,62 @@ TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
   EXPECT_THROW(learning::resolve_learner(negative), OptionError);
 }
 
+// With scales = "data" the prior's GP scales come from what its regression misses on the
+// scenarios it learns from (docs/learning.md "The prior's scales from its data"): never from the
+// scenario under test nor its mirror image, but from every other one.
+TEST_F(Dataset, APriorsScalesFromTheDataNeverSeeTheScenarioUnderTest) {
+  const auto altered = [&](const std::vector<std::size_t>& legs, const std::string& name) {
+    LandscapeDataset d = data_;
+    for (ScenarioLandscape& s : d.scenarios) {
+      if (s.failed != legs) continue;
+      // Each window's yaw moved by -6, 0, +6 degrees: the combination's mean stays, its spread
+      // grows. Its worst error and whether it holds follow.
+      for (learning::LandscapePoint& p : s.points) {
+        p.worst_deg = 0.0;
+        for (std::size_t i = 0; i < p.windows.size(); ++i) {
+          body::WindowMeasure& w = p.windows[i];
+          w.yaw_deg +=
+              6.0 * (static_cast<double>(i) - static_cast<double>(p.windows.size() - 1) / 2);
+          p.worst_deg = std::max({p.worst_deg, std::abs(w.yaw_deg), std::abs(w.path_deg)});
+        }
+        p.holds = p.worst_deg < learning::kDefaultThresholdDeg;
+      }
+    }
+    learning::write_landscape_dataset(d, fs::path(dir_) / name);
+    LearnerChoice c = choice("prior");
+    c.options["dataset"] = dir_ + "/" + name;
+    c.options["scales"] = "data";
+    return c;
+  };
+  LearnerChoice from_data = choice("prior");
+  from_data.options["scales"] = "data";
+  const ReplayRun a = replay(data_, {kL2}, from_data, 7);
+  ASSERT_FALSE(a.trace.empty());
+  // L2 is under test, R2 its mirror image: changing their windows changes nothing.
+  for (const std::size_t leg : {kL2, kR2}) {
+    const ReplayRun b = replay(data_, {kL2}, altered({leg}, "unseen" + std::to_string(leg)), 7);
+    ASSERT_EQ(a.trace.size(), b.trace.size()) << leg;
+    for (std::size_t i = 0; i < a.trace.size(); ++i) {
+      EXPECT_EQ(a.trace[i].periods, b.trace[i].periods) << leg << " " << i;
+      EXPECT_EQ(a.trace[i].details, b.trace[i].details) << leg << " " << i;
+    }
+  }
+  // The same spread in a scenario it learns from (R1, the scenario's mean unchanged) widens the
+  // window noise it takes from the data, and with it the forecast's band.
+  const ReplayRun seen = replay(data_, {kL2}, altered({0}, "seen"), 7);
+  ASSERT_FALSE(seen.trace.empty());
+  EXPECT_GT(seen.trace.front().details["predicted_e_high_deg"].get<double>() -
+                seen.trace.front().details["predicted_e_low_deg"].get<double>(),
+            a.trace.front().details["predicted_e_high_deg"].get<double>() -
+                a.trace.front().details["predicted_e_low_deg"].get<double>());
+  // The options' scales are not the data's.
+  const ReplayRun given = replay(data_, {kL2}, choice("prior"), 7);
+  EXPECT_NE(given.trace.front().details, a.trace.front().details);
+  LearnerChoice unknown = choice("prior");
+  unknown.options["scales"] = "both";
+  EXPECT_THROW(learning::resolve_learner(unknown), OptionError);
+}
+
 // Told nothing about the fault, a learner searches every leg's period, the lost leg's too
 // (docs/learning.md "What a learner is told"); the prior then cannot leave a scenario out.
 TEST_F(Dataset, ALearnerToldNothingSearchesEveryLegsPeriod) {
