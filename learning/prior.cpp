@@ -479,7 +479,11 @@ fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
 }  // namespace
 
 nlohmann::json prior_options(const nlohmann::json& asked) {
-  return read_learner_options<PriorOptions>(asked);
+  nlohmann::json resolved = read_learner_options<PriorOptions>(asked);
+  // The default, the given scales, is not written: a record without the key ran with them, so
+  // the runs and experiments recorded before there was a choice read back (and resume) unchanged.
+  if (resolved.at("scales") == "options") resolved.erase("scales");
+  return resolved;
 }
 
 LearnerData prior_data(const nlohmann::json& options, robot::RobotKind robot,
