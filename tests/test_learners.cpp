@@ -261,6 +261,9 @@ TEST_F(Dataset, APriorsScalesFromTheDataNeverSeeTheScenarioUnderTest) {
   // The options' scales are not the data's.
   const ReplayRun given = replay(data_, {kL2}, choice("prior"), 7);
   EXPECT_NE(given.trace.front().details, a.trace.front().details);
+  // The given scales, the default, are not written: records made before the choice read back.
+  EXPECT_FALSE(learning::resolve_learner(choice("prior")).options.contains("scales"));
+  EXPECT_EQ(learning::resolve_learner(from_data).options.at("scales"), "data");
   LearnerChoice unknown = choice("prior");
   unknown.options["scales"] = "both";
   EXPECT_THROW(learning::resolve_learner(unknown), OptionError);
