@@ -49,17 +49,19 @@ ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& 
       best_(setup) {
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
-  for (const body::WindowMeasure& w : setup.start_windows) model_.observe(start, outputs(w));
+  for (const body::WindowMeasure& w : setup.start_windows)
+    model_.observe(start, window_outputs(w, setup_.criterion));
   for (const EarlierTrial& t : setup.earlier) {
     const std::optional<std::size_t> c = space_.index(t.periods);
     if (!c) continue;  // a combination outside this episode's space tells it nothing
     tried_[*c] = true;
-    for (const body::WindowMeasure& w : t.windows) model_.observe(*c, outputs(w));
+    for (const body::WindowMeasure& w : t.windows)
+      model_.observe(*c, window_outputs(w, setup_.criterion));
   }
 }
 
-WindowOutputs ModelLearner::outputs(const body::WindowMeasure& w) const {
-  return {w.yaw_deg, w.path_deg, setup_.criterion.effort_deg(w.steering_effort)};
+WindowOutputs window_outputs(const body::WindowMeasure& w, const Criterion& criterion) {
+  return {w.yaw_deg, w.path_deg, criterion.effort_deg(w.steering_effort)};
 }
 
 std::optional<ForecastE> forecast_e(const nlohmann::json& details) {
@@ -190,7 +192,8 @@ std::optional<Periods> ModelLearner::propose() {
 }
 
 TrialRecord ModelLearner::observe(const Measurement& m) {
-  for (const body::WindowMeasure& w : m.windows) model_.observe(pending_, outputs(w));
+  for (const body::WindowMeasure& w : m.windows)
+    model_.observe(pending_, window_outputs(w, setup_.criterion));
   const Periods periods = space_.periods(pending_);
   const bool accepted = best_.record(periods, m.deviation_deg);
   return {best_.trials(), periods, m.deviation_deg, accepted, pending_details_};

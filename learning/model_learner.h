@@ -54,6 +54,10 @@ inline constexpr Limits<double> kKappaLimits{0.0, 10.0};
 void validate(const ModelOptions& options);
 ModelLearnerParams model_learner_params(const ModelOptions& options);
 
+// What a model sees of a window: its yaw change, path angle and the reflex's effort scaled as
+// `criterion` scales it into degrees of E.
+WindowOutputs window_outputs(const body::WindowMeasure& w, const Criterion& criterion);
+
 // A trial's forecast E as its details (TrialRecord::details) record it (learning/forecast.h): the
 // median of a window's E and its band; nothing for a trial of a learner without a model.
 struct ForecastE {
@@ -86,9 +90,6 @@ class ModelLearner final : public Learner {
   double e_under(const std::array<Prediction, kOutputs>& p, double limit) const;
   // The forecast of combination `c` whose outputs the model predicts `p`.
   Forecast forecast(std::size_t c, const std::array<Prediction, kOutputs>& p) const;
-  // What the model sees of a window (its effort scaled as the criterion scales it).
-  WindowOutputs outputs(const body::WindowMeasure& w) const;
-
   LearnerSetup setup_;
   ModelLearnerParams params_;
   SearchSpace space_;

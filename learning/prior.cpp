@@ -150,9 +150,8 @@ std::vector<const ScenarioLandscape*> prior_scenarios(
 WindowOutputs mean_window(const LandscapePoint& p, const Criterion& criterion) {
   WindowOutputs mean{};
   for (const body::WindowMeasure& w : p.windows) {
-    mean[kYaw] += w.yaw_deg;
-    mean[kPath] += w.path_deg;
-    mean[kEffort] += criterion.effort_deg(w.steering_effort);
+    const WindowOutputs y = window_outputs(w, criterion);
+    for (std::size_t k = 0; k < kOutputs; ++k) mean[k] += y[k];
   }
   for (double& m : mean) m /= static_cast<double>(p.windows.size());
   return mean;
@@ -324,11 +323,10 @@ AdditiveModelParams data_scales(const Regression& r, const Criterion& criterion)
       digit.push_back(digits(p.periods, r.period_set()));
       if (p.windows.size() < 2) continue;
       for (std::size_t k : outputs) {
-        double sum = 0.0, sq = 0.0;
+        double sum = 0.0;
+        double sq = 0.0;
         for (const body::WindowMeasure& w : p.windows) {
-          const double x = k == kYaw    ? w.yaw_deg
-                           : k == kPath ? w.path_deg
-                                        : criterion.effort_deg(w.steering_effort);
+          const double x = window_outputs(w, criterion)[k];
           sum += x;
           sq += x * x;
         }
