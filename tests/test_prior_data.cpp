@@ -1,0 +1,130 @@
+// What the prior learns from (docs/learning.md "Learners", "A learner's data"): never the
+// scenario under test nor its mirror image, losses of another number of legs weighed as asked,
+// and its scales from the data without the scenario under test.
+#include "tests/synthetic_landscapes.h"
+
+namespace multicpg::testing {
+namespace {
+
+TEST_F(Dataset, APriorNeverSeesTheScenarioUnderTestNorItsMirrorImage) {
+  for (const char* seen : {"L2", "R2"}) {
+    LearnerChoice c = choice("prior");
+    c.options["scenarios"] = {"R1", seen};
+    EXPECT_THROW(
+        learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped,
+                                learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion),
+        BadInput)
+        << seen;
+  }
+  LearnerChoice fine = choice("prior");
+  fine.options["scenarios"] = {"R1", "L1"};
+  EXPECT_NO_THROW(
+      learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped,
+                              learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion));
+  // The run's period set is the dataset's, checked with the rest before anything walks.
+  try {
+    learning::check_learner(learning::resolve_learner(fine), robot::RobotKind::quadruped,
+                            learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion,
+                            {4, 5, 6, 8});
+    ADD_FAILURE() << "a prior of another period set was accepted";
+  } catch (const BadInput& e) {
+    EXPECT_NE(std::string(e.what()).find("has the period set 4,5,6,8,9, this run 4,5,6,8"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NO_THROW(learning::check_learner(
+      learning::resolve_learner(fine), robot::RobotKind::quadruped,
+      learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion, kPeriodSet));
+  LearnerChoice missing = choice("prior");
+  missing.options["dataset"] = dir_ + "/nothing-here";
+  EXPECT_THROW(
+      learning::check_learner(learning::resolve_learner(missing), robot::RobotKind::quadruped,
+                              learning::ToldFault::legs({kL2}), learning::kPeriodsAloneCriterion),
+      BadInput);
+}
+
+// The windows of losses of another number of legs count as much as the prior is told
+// (docs/learning.md "The quadruped: a small dataset"): weighed 0, nothing, exactly as naming only
+// the losses of as many legs; by default as much as any.
+TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
+  LearnerChoice alone = choice("prior");
+  alone.options["other_size_weight"] = 0.0;
+  LearnerChoice named = choice("prior");
+  named.options["scenarios"] = {"R1", "L1"};  // L2 told: R2, its mirror image, is never seen
+  const ReplayRun a = replay(data_, {kL2}, alone, 7);
+  const ReplayRun b = replay(data_, {kL2}, named, 7);
+  ASSERT_FALSE(a.trace.empty());
+  ASSERT_EQ(a.trace.size(), b.trace.size());
+  for (std::size_t i = 0; i < a.trace.size(); ++i) {
+    EXPECT_EQ(a.trace[i].periods, b.trace[i].periods) << i;
+    EXPECT_EQ(a.trace[i].details, b.trace[i].details) << i;
+  }
+  // R1+R2 (nothing holds there) is in the default prior's mean, so it forecasts otherwise.
+  const ReplayRun every = replay(data_, {kL2}, choice("prior"), 7);
+  EXPECT_NE(every.trace.front().details, a.trace.front().details);
+  LearnerChoice negative = choice("prior");
+  negative.options["other_size_weight"] = -1.0;
+  EXPECT_THROW(learning::resolve_learner(negative), OptionError);
+}
+
+// With scales = "data" the prior's GP scales come from what its regression misses on the
+// scenarios it learns from (docs/learning.md "The prior's scales from its data"): never from the
+// scenario under test nor its mirror image, but from every other one.
+TEST_F(Dataset, APriorsScalesFromTheDataNeverSeeTheScenarioUnderTest) {
+  const auto altered = [&](const std::vector<std::size_t>& legs, const std::string& name) {
+    LandscapeDataset d = data_;
+    for (ScenarioLandscape& s : d.scenarios) {
+      if (s.failed != legs) continue;
+      // Each window's yaw moved by -6, 0, +6 degrees: the combination's mean stays, its spread
+      // grows. Its worst error and whether it holds follow.
+      for (learning::LandscapePoint& p : s.points) {
+        p.worst_deg = 0.0;
+        for (std::size_t i = 0; i < p.windows.size(); ++i) {
+          body::WindowMeasure& w = p.windows[i];
+          w.yaw_deg +=
+              6.0 * (static_cast<double>(i) - static_cast<double>(p.windows.size() - 1) / 2);
+          p.worst_deg = std::max({p.worst_deg, std::abs(w.yaw_deg), std::abs(w.path_deg)});
+        }
+        p.holds = p.worst_deg < learning::kDefaultThresholdDeg;
+      }
+    }
+    learning::write_landscape_dataset(d, fs::path(dir_) / name);
+    LearnerChoice c = choice("prior");
+    c.options["dataset"] = dir_ + "/" + name;
+    c.options["scales"] = "data";
+    return c;
+  };
+  LearnerChoice from_data = choice("prior");
+  from_data.options["scales"] = "data";
+  const ReplayRun a = replay(data_, {kL2}, from_data, 7);
+  ASSERT_FALSE(a.trace.empty());
+  // L2 is under test, R2 its mirror image: changing their windows changes nothing.
+  for (const std::size_t leg : {kL2, kR2}) {
+    const ReplayRun b = replay(data_, {kL2}, altered({leg}, "unseen" + std::to_string(leg)), 7);
+    ASSERT_EQ(a.trace.size(), b.trace.size()) << leg;
+    for (std::size_t i = 0; i < a.trace.size(); ++i) {
+      EXPECT_EQ(a.trace[i].periods, b.trace[i].periods) << leg << " " << i;
+      EXPECT_EQ(a.trace[i].details, b.trace[i].details) << leg << " " << i;
+    }
+  }
+  // The same spread in a scenario it learns from (R1, the scenario's mean unchanged) widens the
+  // window noise it takes from the data, and with it the forecast's band.
+  const ReplayRun seen = replay(data_, {kL2}, altered({0}, "seen"), 7);
+  ASSERT_FALSE(seen.trace.empty());
+  EXPECT_GT(seen.trace.front().details["predicted_e_high_deg"].get<double>() -
+                seen.trace.front().details["predicted_e_low_deg"].get<double>(),
+            a.trace.front().details["predicted_e_high_deg"].get<double>() -
+                a.trace.front().details["predicted_e_low_deg"].get<double>());
+  // The options' scales are not the data's.
+  const ReplayRun given = replay(data_, {kL2}, choice("prior"), 7);
+  EXPECT_NE(given.trace.front().details, a.trace.front().details);
+  // The given scales, the default, are not written: records made before the choice read back.
+  EXPECT_FALSE(learning::resolve_learner(choice("prior")).options.contains("scales"));
+  EXPECT_EQ(learning::resolve_learner(from_data).options.at("scales"), "data");
+  LearnerChoice unknown = choice("prior");
+  unknown.options["scales"] = "both";
+  EXPECT_THROW(learning::resolve_learner(unknown), OptionError);
+}
+
+}  // namespace
+}  // namespace multicpg::testing
