@@ -42,10 +42,10 @@ struct PriorOptions : ModelOptions {
   // What a window of a loss of another number of legs than the one told counts for against one
   // of as many (1: every window alike; docs/learning.md "The quadruped: a small dataset").
   double other_size_weight = 1.0;
-  // Where the GP's scales (noise_deg, intercept_deg, effect_deg, pair_deg) come from: "options"
-  // (as given) or "data" (what the regression misses on the scenarios it learns from, each left
-  // out in turn; docs/learning.md "The prior's scales from its data").
-  std::string scales = "options";
+  // Where the GP's scales (noise_deg, intercept_deg, effect_deg, pair_deg) come from: "data"
+  // (what the regression misses on the scenarios it learns from, each left out in turn) or
+  // "options" (as given); docs/learning.md "The prior's scales from its data".
+  std::string scales = "data";
   PriorOptions() {
     intercept_deg = 8.0;
     effect_deg = 4.0;
@@ -182,6 +182,7 @@ class Regression {
       const ScenarioLandscape& s = *scenario;
       // Told nothing, no scenario loses as many legs as it knows of (none): all weigh alike.
       const double w = s.failed.size() == lost ? 1.0 : o.other_size_weight;
+      weights_.push_back(w);
       NormalEquations part{Eigen::MatrixXd::Zero(keep_parts ? n : 0, keep_parts ? n : 0),
                            Eigen::MatrixXd::Zero(keep_parts ? n : 0, kOutputs)};
       const std::vector<std::size_t> image = robot::mirror(morph_, s.failed);
@@ -202,6 +203,8 @@ class Regression {
   }
 
   const std::vector<const ScenarioLandscape*>& scenarios() const { return scenarios_; }
+  // What a window of scenario `i` counts for in the regression.
+  double weight(std::size_t i) const { return weights_.at(i); }
 
   // The weights learned from every scenario but those in `left_out`, each named once (which
   // needs the parts).
@@ -254,6 +257,7 @@ class Regression {
   const robot::Morphology& morph_;
   Features f_;
   std::vector<const ScenarioLandscape*> scenarios_;
+  std::vector<double> weights_;
   NormalEquations total_;
   std::vector<NormalEquations> parts_;
 };
@@ -292,18 +296,19 @@ AdditiveModelParams data_scales(const Regression& r, const Criterion& criterion)
   struct Moment {
     double sum = 0.0;
     double count = 0.0;
-    void add(double x) {
-      sum += x * x;
-      count += 1.0;
+    void add(double x, double weight = 1.0) {
+      sum += weight * x * x;
+      count += weight;
     }
     double rms() const { return count > 0.0 ? std::sqrt(sum / count) : 0.0; }
   };
-  // Over the scenarios, each counting once: a scale describes the scenario a prior is asked
-  // about, one drawn from among them, whatever its number of combinations.
+  // Over the scenarios, each counting once (as much as its windows count in the regression): a
+  // scale describes the scenario a prior is asked about, one drawn from among them, whatever its
+  // number of combinations.
   Moment intercept, effect, pair, noise;
   for (std::size_t i = 0; i < r.scenarios().size(); ++i) {
     const ScenarioLandscape& s = *r.scenarios()[i];
-    if (s.points.empty()) continue;
+    if (s.points.empty() || r.weight(i) == 0.0) continue;
     Moment s_intercept, s_effect, s_pair, s_noise;
     const std::size_t image = r.mirror_of(i);
     const Eigen::MatrixXd beta =
@@ -377,7 +382,7 @@ AdditiveModelParams data_scales(const Regression& r, const Criterion& criterion)
     }
     for (auto [all, one] : {std::pair{&intercept, &s_intercept}, std::pair{&effect, &s_effect},
                             std::pair{&pair, &s_pair}, std::pair{&noise, &s_noise}}) {
-      if (one->count > 0.0) all->add(one->rms());
+      if (one->count > 0.0) all->add(one->rms(), r.weight(i));
     }
   }
   const auto scale = [](const Moment& m, const Limits<double>& limits) {
@@ -477,11 +482,7 @@ fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
 }  // namespace
 
 nlohmann::json prior_options(const nlohmann::json& asked) {
-  nlohmann::json resolved = read_learner_options<PriorOptions>(asked);
-  // The default, the given scales, is not written: a record without the key ran with them, so
-  // the runs and experiments recorded before there was a choice read back (and resume) unchanged.
-  if (resolved.at("scales") == "options") resolved.erase("scales");
-  return resolved;
+  return read_learner_options<PriorOptions>(asked);
 }
 
 LearnerData prior_data(const nlohmann::json& options, robot::RobotKind robot,

@@ -396,7 +396,7 @@ TEST(CliLearn, RobustReflexAloneHoldsR1) {
 
 // A second fault learns again; a recovery of every leg resynchronises at the master's period.
 TEST(CliLearn, FaultsThatComeAndGo) {
-  const auto two = run_cli("learn --fault R1,R3@0 --fault L2@20000 --seed 1 --json");
+  const auto two = run_cli("learn --fault R1,R3@0 --fault L1@20000 --seed 1 --json");
   ASSERT_EQ(two.exit_code, 0) << two.err;
   const auto a = nlohmann::json::parse(two.out);
   // At least one episode for each fault (monitoring may add one when a held gait drifts later).

@@ -115,12 +115,16 @@ TEST_F(Dataset, APriorsScalesFromTheDataNeverSeeTheScenarioUnderTest) {
                 seen.trace.front().details["predicted_e_low_deg"].get<double>(),
             a.trace.front().details["predicted_e_high_deg"].get<double>() -
                 a.trace.front().details["predicted_e_low_deg"].get<double>());
-  // The options' scales are not the data's.
-  const ReplayRun given = replay(data_, {kL2}, choice("prior"), 7);
-  EXPECT_NE(given.trace.front().details, a.trace.front().details);
-  // The given scales, the default, are not written: records made before the choice read back.
-  EXPECT_FALSE(learning::resolve_learner(choice("prior")).options.contains("scales"));
-  EXPECT_EQ(learning::resolve_learner(from_data).options.at("scales"), "data");
+  // The options' scales are not the data's, which are the default.
+  LearnerChoice given = choice("prior");
+  given.options["scales"] = "options";
+  EXPECT_NE(replay(data_, {kL2}, given, 7).trace.front().details, a.trace.front().details);
+  const ReplayRun by_default = replay(data_, {kL2}, choice("prior"), 7);
+  ASSERT_EQ(by_default.trace.size(), a.trace.size());
+  EXPECT_EQ(by_default.trace.front().details, a.trace.front().details);
+  // Written either way: a record without the key ran before the data's scales were the default.
+  EXPECT_EQ(learning::resolve_learner(choice("prior")).options.at("scales"), "data");
+  EXPECT_EQ(learning::resolve_learner(given).options.at("scales"), "options");
   LearnerChoice unknown = choice("prior");
   unknown.options["scales"] = "both";
   EXPECT_THROW(learning::resolve_learner(unknown), OptionError);
