@@ -31,8 +31,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // The residual around the prior is smaller than a landscape's own spread (the bayes learner's
-// scales), so its GP starts tighter; the ridge keeps the 217 weights of a hexapod regression
-// finite where a lost leg and a period never meet in the data.
+// scales), so its given scales (scales = "options") start its GP tighter; by default it takes them
+// from the data. The ridge keeps the 217 weights of a hexapod regression finite where a lost leg
+// and a period never meet in the data.
 struct PriorOptions : ModelOptions {
   std::string dataset;  // the landscape dataset (learning/landscapes.h); "" = the repository's
   // The scenarios it learns from ("R1+R3", ...); empty = every one but the scenario under test
