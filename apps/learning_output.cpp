@@ -122,8 +122,18 @@ void print_learning_header(std::ostream& out, const experiments::RunSpec& spec, 
         << f.step;
   }
   // Robust mode's learner depends on the robot's data (learning/default_learner.h): always named.
-  if (options.mode == learning::Mode::robust || options.learner.name != learning::kPaperLearner)
+  if (options.mode == learning::Mode::robust || options.learner.name != learning::kPaperLearner) {
     out << ", learner " << options.learner.name;
+    // Its options where they are not its defaults (the annealing's beta has a place of its own).
+    nlohmann::json changed = learning::changed_options(options.learner);
+    if (learning::annealing_beta(options.learner)) changed.erase("beta");
+    std::string listed;
+    for (const auto& [key, value] : changed.items()) {
+      listed += (listed.empty() ? "" : ", ") + key + "=" +
+                (value.is_string() ? value.get<std::string>() : value.dump());
+    }
+    if (!listed.empty()) out << " (" << listed << ")";
+  }
   if (!options.tell_fault) out << " told nothing of the fault";
   if (const std::optional<double> beta = learning::annealing_beta(options.learner))
     out << ", beta " << *beta;

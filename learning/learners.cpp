@@ -151,6 +151,15 @@ LearnerChoice resolve_learner(const LearnerChoice& asked) {
   return out;
 }
 
+nlohmann::json changed_options(const LearnerChoice& choice) {
+  const nlohmann::json defaults = entry(choice.name).options(nlohmann::json::object());
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [key, value] : choice.options.items()) {
+    if (!defaults.contains(key) || defaults.at(key) != value) out[key] = value;
+  }
+  return out;
+}
+
 LearnerData learner_data(const LearnerChoice& choice, robot::RobotKind robot,
                          const Criterion& criterion) {
   const Entry& e = entry(choice.name);

@@ -61,6 +61,10 @@ std::optional<double> annealing_beta(const LearnerChoice& choice);
 // learner (naming the known ones), "options.<key>" for an unknown option or a bad value.
 LearnerChoice resolve_learner(const LearnerChoice& asked);
 
+// The options of a resolved `choice` that differ from its learner's defaults (a run's header names
+// them), keys sorted.
+nlohmann::json changed_options(const LearnerChoice& choice);
+
 // What the prior computed from its data once (learning/prior.cpp).
 class PriorMeans;
 

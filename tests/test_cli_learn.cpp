@@ -73,6 +73,27 @@ TEST(CliLearn, APriorRunSaysWhichDatasetItLearnedFrom) {
       << text.out;
 }
 
+// The header names the learner's options that are not its defaults (they are recorded whole).
+TEST(CliLearn, TheHeaderNamesTheLearnersOptionsThatAreNotItsDefaults) {
+  const auto header = [](const std::string& args) {
+    const auto r = run_cli("learn --disable R1,R3 --max-trials 1 " + args);
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 3) << args << "\n" << r.err;
+    return r.out.substr(0, r.out.find('\n'));
+  };
+  EXPECT_NE(header("--mode paper --learner prior").find(", learner prior, threshold"),
+            std::string::npos);
+  const std::string changed = header(
+      "--mode paper --learner prior --learner-option scales=options --learner-option "
+      "acquisition=ucb --learner-option kappa=3");
+  EXPECT_NE(changed.find(", learner prior (acquisition=ucb, kappa=3.0, scales=options), threshold"),
+            std::string::npos)
+      << changed;
+  // The annealing's beta keeps its own place.
+  const std::string annealing = header("--beta 2 --max-episodes 1");
+  EXPECT_NE(annealing.find(", learner annealing, beta 2, threshold"), std::string::npos)
+      << annealing;
+}
+
 // The learner a run gets when it names none (docs/learning.md "Which learner a run uses"): the
 // prior where the robot's dataset walked as the run walks is, the annealing elsewhere; recorded.
 TEST(CliLearn, TheDefaultLearnerIsThePriorWhereTheRobotsDatasetIsElseTheAnnealing) {
