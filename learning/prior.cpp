@@ -303,13 +303,17 @@ AdditiveModelParams data_scales(const Regression& r, const Criterion& criterion)
     }
     double rms() const { return count > 0.0 ? std::sqrt(sum / count) : 0.0; }
   };
-  // Over the scenarios, each counting once (as much as its windows count in the regression): a
-  // scale describes the scenario a prior is asked about, one drawn from among them, whatever its
-  // number of combinations.
+  // Over the scenarios where some combination holds, each counting once (as much as its windows
+  // count in the regression): a scale describes the scenario a prior is asked about, one drawn
+  // from among those it can win, whatever its number of combinations. Where nothing holds (a
+  // whole side lost) the robot's turn is tens of degrees off any model, and a few such scenarios
+  // would set every scale (the quadruped's six of fourteen: docs/learning.md).
   Moment intercept, effect, pair, noise;
   for (std::size_t i = 0; i < r.scenarios().size(); ++i) {
     const ScenarioLandscape& s = *r.scenarios()[i];
-    if (s.points.empty() || r.weight(i) == 0.0) continue;
+    const bool holds = std::any_of(s.points.begin(), s.points.end(),
+                                   [](const LandscapePoint& p) { return p.holds; });
+    if (!holds || r.weight(i) == 0.0) continue;
     Moment s_intercept, s_effect, s_pair, s_noise;
     const std::size_t image = r.mirror_of(i);
     const Eigen::MatrixXd beta =
