@@ -487,7 +487,20 @@ fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
 }  // namespace
 
 nlohmann::json prior_options(const nlohmann::json& asked) {
-  return read_learner_options<PriorOptions>(asked);
+  nlohmann::json resolved = read_learner_options<PriorOptions>(asked);
+  if (resolved.at("scales") == "data") {
+    // The scales come from the data: a scale given beside them would be silently unused, and a
+    // record that listed them would say what the model did not use.
+    for (const char* key : {"noise_deg", "intercept_deg", "effect_deg", "pair_deg"}) {
+      if (asked.contains(key)) {
+        throw OptionError(key, "is one of the prior's given scales, unused while it takes its "
+                               "scales from its data (scales=data, the default); add "
+                               "scales=options to give them");
+      }
+      resolved.erase(key);
+    }
+  }
+  return resolved;
 }
 
 LearnerData prior_data(const nlohmann::json& options, robot::RobotKind robot,

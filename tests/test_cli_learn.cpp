@@ -85,7 +85,9 @@ TEST(CliLearn, TheHeaderNamesTheLearnersOptionsThatAreNotItsDefaults) {
   const std::string changed = header(
       "--mode paper --learner prior --learner-option scales=options --learner-option "
       "acquisition=ucb --learner-option kappa=3");
-  EXPECT_NE(changed.find(", learner prior (acquisition=ucb, kappa=3.0, scales=options), threshold"),
+  // The given scales are used only with scales=options, which names them all.
+  EXPECT_NE(changed.find(", learner prior (acquisition=ucb, effect_deg=4.0, intercept_deg=8.0, "
+                         "kappa=3.0, noise_deg=3.0, pair_deg=1.5, scales=options), threshold"),
             std::string::npos)
       << changed;
   // The annealing's beta keeps its own place.

@@ -135,6 +135,17 @@ TEST_F(Dataset, APriorsScalesFromTheDataNeverSeeTheScenarioUnderTest) {
   LearnerChoice unknown = choice("prior");
   unknown.options["scales"] = "both";
   EXPECT_THROW(learning::resolve_learner(unknown), OptionError);
+  // A given scale is used only with scales=options: with the data's it is refused, not ignored,
+  // and the record does not list the scales the model did not use.
+  EXPECT_FALSE(learning::resolve_learner(choice("prior")).options.contains("noise_deg"));
+  EXPECT_EQ(learning::resolve_learner(given).options.at("noise_deg"), 3.0);
+  LearnerChoice ignored = choice("prior");
+  ignored.options["noise_deg"] = 5.0;
+  EXPECT_THROW(learning::resolve_learner(ignored), OptionError);
+  ignored.options["scales"] = "options";
+  EXPECT_EQ(learning::resolve_learner(ignored).options.at("noise_deg"), 5.0);
+  const LearnerChoice resolved = learning::resolve_learner(choice("prior"));
+  EXPECT_EQ(learning::resolve_learner(resolved), resolved);
 }
 
 }  // namespace
