@@ -493,9 +493,10 @@ nlohmann::json prior_options(const nlohmann::json& asked) {
     // record that listed them would say what the model did not use.
     for (const char* key : {"noise_deg", "intercept_deg", "effect_deg", "pair_deg"}) {
       if (asked.contains(key)) {
-        throw OptionError(key, "is one of the prior's given scales, unused while it takes its "
-                               "scales from its data (scales=data, the default); add "
-                               "scales=options to give them");
+        throw OptionError(key,
+                          "is one of the prior's given scales, unused while it takes its "
+                          "scales from its data (scales=data, the default); add "
+                          "scales=options to give them");
       }
       resolved.erase(key);
     }
