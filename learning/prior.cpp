@@ -332,54 +332,72 @@ AdditiveModelParams data_scales(const Regression& r, const Criterion& criterion)
       miss.push_back(m);
       digit.push_back(digits(p.periods, r.period_set()));
       if (p.windows.size() < 2) continue;
-      for (std::size_t k : outputs) {
-        double sum = 0.0;
-        double sq = 0.0;
-        for (const body::WindowMeasure& w : p.windows) {
-          const double x = window_outputs(w, criterion)[k];
-          sum += x;
-          sq += x * x;
+      WindowOutputs sum{};
+      WindowOutputs sq{};
+      for (const body::WindowMeasure& w : p.windows) {
+        const WindowOutputs y = window_outputs(w, criterion);
+        for (std::size_t k : outputs) {
+          sum[k] += y[k];
+          sq[k] += y[k] * y[k];
         }
-        const auto n = static_cast<double>(p.windows.size());
-        s_noise.sum += (sq - sum * sum / n) / (n - 1.0);
+      }
+      const auto n = static_cast<double>(p.windows.size());
+      for (std::size_t k : outputs) {
+        s_noise.sum += (sq[k] - sum[k] * sum[k] / n) / (n - 1.0);
         s_noise.count += 1.0;
       }
     }
-    for (std::size_t k : outputs) {
-      // The mean of the misses over the combinations whose legs `legs` walk periods `at`.
-      const auto mean_over = [&](const std::vector<std::size_t>& legs,
-                                 const std::vector<std::size_t>& at) -> std::optional<double> {
-        double sum = 0.0;
-        double n = 0.0;
-        for (std::size_t c = 0; c < miss.size(); ++c) {
-          bool in = true;
-          for (std::size_t j = 0; j < legs.size(); ++j) in = in && digit[c][legs[j]] == at[j];
-          if (!in) continue;
-          sum += miss[c][k];
-          n += 1.0;
-        }
+    // The mean miss of a cell: every combination, those with one working leg at one period, or
+    // two working legs at two periods; each cell summed in one pass in the combinations' order.
+    struct Cell {
+      double sum = 0.0;
+      double n = 0.0;
+      std::optional<double> mean() const {
         if (n == 0.0) return std::nullopt;
         return sum / n;
-      };
-      const double constant = *mean_over({}, {});
-      s_intercept.add(constant);
-      std::vector<std::vector<std::optional<double>>> main(working.size(),
-                                                           std::vector<std::optional<double>>(q));
-      for (std::size_t a = 0; a < working.size(); ++a) {
-        for (std::size_t j = 0; j < q; ++j) {
-          main[a][j] = mean_over({working[a]}, {j});
-          if (main[a][j]) {
-            *main[a][j] -= constant;
-            s_effect.add(*main[a][j]);
+      }
+    };
+    const std::size_t legs = working.size();
+    const auto two = [&](std::size_t a, std::size_t b, std::size_t j, std::size_t l) {
+      return ((a * legs + b) * q + j) * q + l;
+    };
+    for (std::size_t k : outputs) {
+      Cell all;
+      std::vector<Cell> one(legs * q);
+      std::vector<Cell> both(legs * legs * q * q);
+      for (std::size_t c = 0; c < miss.size(); ++c) {
+        const double x = miss[c][k];
+        const auto add = [x](Cell& cell) {
+          cell.sum += x;
+          cell.n += 1.0;
+        };
+        add(all);
+        for (std::size_t a = 0; a < legs; ++a) {
+          add(one[a * q + digit[c][working[a]]]);
+          for (std::size_t b = a + 1; b < legs; ++b) {
+            add(both[two(a, b, digit[c][working[a]], digit[c][working[b]])]);
           }
         }
       }
-      for (std::size_t a = 0; a < working.size(); ++a) {
-        for (std::size_t b = a + 1; b < working.size(); ++b) {
+      const double constant = *all.mean();
+      s_intercept.add(constant);
+      std::vector<std::optional<double>> main(legs * q);
+      for (std::size_t a = 0; a < legs; ++a) {
+        for (std::size_t j = 0; j < q; ++j) {
+          main[a * q + j] = one[a * q + j].mean();
+          if (main[a * q + j]) {
+            *main[a * q + j] -= constant;
+            s_effect.add(*main[a * q + j]);
+          }
+        }
+      }
+      for (std::size_t a = 0; a < legs; ++a) {
+        for (std::size_t b = a + 1; b < legs; ++b) {
           for (std::size_t j = 0; j < q; ++j) {
             for (std::size_t l = 0; l < q; ++l) {
-              const std::optional<double> both = mean_over({working[a], working[b]}, {j, l});
-              if (both) s_pair.add(*both - constant - *main[a][j] - *main[b][l]);
+              if (const std::optional<double> m = both[two(a, b, j, l)].mean()) {
+                s_pair.add(*m - constant - *main[a * q + j] - *main[b * q + l]);
+              }
             }
           }
         }
