@@ -99,8 +99,7 @@ LearnerBenchmark run_learner_benchmark(const LearnerBenchmarkSpec& spec, int job
   }
   // Each learner's data resolved once, checked for every scenario it replays with that scenario
   // withheld, as replay_run withholds it.
-  const learning::Criterion criterion =
-      spec.protocol.yaw_only ? learning::kPaperCriterion : b.dataset.criterion();
+  const learning::Criterion criterion = learning::replay_criterion(b.dataset, spec.protocol);
   std::vector<learning::LearnerData> data;
   for (const learning::LearnerChoice& l : spec.learners) {
     data.push_back(learning::learner_data(l, b.dataset.robot, criterion));

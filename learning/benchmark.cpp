@@ -57,6 +57,13 @@ void check_episodes(const TrialProtocol& protocol) {
   }
 }
 
+Criterion replay_criterion(const LandscapeDataset& dataset, const TrialProtocol& protocol) {
+  if (protocol.yaw_only) return kPaperCriterion;
+  Criterion c = dataset.criterion();
+  c.trial_windows = protocol.hold_windows;
+  return c;
+}
+
 ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& scenario,
                      const LearnerChoice& choice, const LearnerData& data,
                      const SearchBounds& search, const TrialProtocol& protocol, std::uint64_t seed,
@@ -82,7 +89,7 @@ ReplayRun replay_run(const LandscapeDataset& dataset, const ScenarioLandscape& s
                    " up to each combination's first window over the threshold, so its windows "
                    "replay only in the order walked (--window-order walked)");
   }
-  const Criterion criterion = protocol.yaw_only ? kPaperCriterion : dataset.criterion();
+  const Criterion criterion = replay_criterion(dataset, protocol);
   const robot::Morphology& morph = robot::morphology(dataset.robot);
   const Periods start(morph.size(), kStartPeriod);
   const std::optional<std::size_t> c0 = scenario.find(start);

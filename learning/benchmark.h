@@ -32,8 +32,8 @@ WindowOrder parse_window_order(std::string_view text);  // throws BadInput namin
 // reflex off: the paper's one window of |yaw change|, or robust mode's worst error of up to
 // hold_windows windows, stopping at the first over the threshold.
 struct TrialProtocol {
-  bool yaw_only = false;  // paper mode
-  int hold_windows = 3;   // robust mode (kDefaultHoldWindows)
+  bool yaw_only = false;                   // paper mode
+  int hold_windows = kDefaultHoldWindows;  // robust mode
   WindowOrder window_order = WindowOrder::drawn;
   // Episodes a run may have. 1: the first alone, a stop on a combination that does not hold in
   // truth ends the run (a false stop). More: robust mode's monitoring, as a live run has it: the
@@ -42,6 +42,10 @@ struct TrialProtocol {
   // (LearnerSetup::earlier) and seeded as a live run's next episode (walked order only).
   int episodes = 1;
 };
+
+// What judges a replayed trial: the paper's |yaw change| of one window, or the dataset's
+// criterion over the protocol's hold_windows.
+Criterion replay_criterion(const LandscapeDataset& dataset, const TrialProtocol& protocol);
 
 // Throws BadInput for episodes a replay cannot walk: fewer than one, or more than one where no
 // later window follows a trial in order (paper mode, drawn windows).

@@ -54,10 +54,12 @@ long locked_settle_steps(const neural::ControllerModel& model, const Periods& pe
 
 Criterion criterion(const CompensationOptions& options) {
   if (options.mode == Mode::paper) return kPaperCriterion;
-  if (options.steering == Steering::reflex) {
-    return reflex_criterion(options.search.threshold_deg, options.steering_params.max_effort);
-  }
-  return kPeriodsAloneCriterion;
+  Criterion c =
+      options.steering == Steering::reflex
+          ? reflex_criterion(options.search.threshold_deg, options.steering_params.max_effort)
+          : kPeriodsAloneCriterion;
+  c.trial_windows = options.hold_windows;
+  return c;
 }
 
 double robust_deviation(const CompensationOptions& options, const body::WindowMeasure& window) {

@@ -56,8 +56,6 @@ long default_settle_steps(const neural::ControllerModel& model);
 // delay line, so the joints carry only locked signals. Hexapod with a leg at 4: 737 + 126 = 863.
 long locked_settle_steps(const neural::ControllerModel& model, const Periods& periods);
 
-// Robust mode: consecutive windows a combination must hold to be accepted.
-inline constexpr int kDefaultHoldWindows = 3;
 // Robust mode: clean windows after the last fault or learning episode before the run ends.
 inline constexpr long kDefaultMonitorWindows = 6;
 // Robust mode: learning episodes at most in one run (each restarts learning after a deviation).

@@ -13,11 +13,17 @@
 
 namespace multicpg::learning {
 
+// Robust mode: consecutive windows a combination must hold to be accepted.
+inline constexpr int kDefaultHoldWindows = 3;
+
 struct Criterion {
   bool path = true;  // robust mode: the path angle counts
   // With the reflex: its effort `max_effort` reads as `threshold_deg`; max_effort 0 = no reflex.
   double threshold_deg = 0.0;
   double max_effort = 0.0;
+  // The windows a trial walks, each of which must hold: paper mode's one, robust mode's
+  // hold_windows.
+  int trial_windows = kDefaultHoldWindows;
 
   bool steers() const { return max_effort > 0.0; }
   // The reflex's mean swing cut (0..1) in degrees of E; 0 without the reflex.
@@ -44,13 +50,13 @@ struct Criterion {
   bool operator==(const Criterion&) const = default;
 };
 
-// The paper's: |yaw change| alone.
-inline constexpr Criterion kPaperCriterion{false, 0.0, 0.0};
+// The paper's: |yaw change| alone, one window a trial.
+inline constexpr Criterion kPaperCriterion{false, 0.0, 0.0, 1};
 // Robust mode without the reflex: the worst of |yaw change| and |path angle|.
-inline constexpr Criterion kPeriodsAloneCriterion{true, 0.0, 0.0};
+inline constexpr Criterion kPeriodsAloneCriterion{true, 0.0, 0.0, kDefaultHoldWindows};
 // Robust mode with the reflex, its effort limit `max_effort` read as `threshold_deg`.
 inline Criterion reflex_criterion(double threshold_deg, double max_effort) {
-  return {true, threshold_deg, max_effort};
+  return {true, threshold_deg, max_effort, kDefaultHoldWindows};
 }
 
 }  // namespace multicpg::learning

@@ -23,9 +23,9 @@ struct Prediction {
 // Phi(1)): a window's E band, as "E ± sd" reads for a normal.
 inline constexpr double kBandLowQuantile = 0.15865525393145707;
 inline constexpr double kBandHighQuantile = 1.0 - kBandLowQuantile;
-// A combination the model gives at least this probability of holding (one window under the
-// threshold) is one it still believes may hold; under it the model has all but ruled it out (5 %,
-// the conventional level of a test).
+// A combination the model gives at least this chance of holding (Forecast::hold) is one it still
+// believes may hold; under it the model has all but ruled it out (5 %, the conventional level of
+// a test).
 inline constexpr double kMayHoldLevel = 0.05;
 
 // The combinations of a model's map a run keeps after its last trial (LearningResult::forecasts):
@@ -38,7 +38,12 @@ struct Forecast {
   Prediction yaw;      // a window's signed yaw change, degrees
   Prediction path;     // its path angle, degrees
   Prediction effort;   // the reflex's effort in degrees of E (0 without the reflex)
-  double hold = 0.0;   // probability that one window holds (each part under the threshold)
+  // The chance that it holds: every window of its trial under the threshold (each part of E), as
+  // independent windows around its mean, then holding on after the trial (keep).
+  double hold = 0.0;
+  // The chance, from data beside the trials (the prior's), that it keeps holding once its trial
+  // has held; 1 for a model without such data.
+  double keep = 1.0;
   // One window's E with the window noise: its median and the band between kBandLowQuantile and
   // kBandHighQuantile.
   double e_deg = 0.0;
@@ -56,14 +61,16 @@ inline constexpr std::string_view kPredictedPathSdKey = "predicted_path_sd_deg";
 inline constexpr std::string_view kPredictedEffortKey = "predicted_effort_deg";
 inline constexpr std::string_view kPredictedEffortSdKey = "predicted_effort_sd_deg";
 inline constexpr std::string_view kPredictedHoldKey = "predicted_hold";
+inline constexpr std::string_view kPredictedKeepKey = "predicted_keep";
 inline constexpr std::string_view kPredictedEKey = "predicted_e_deg";
 inline constexpr std::string_view kPredictedELowKey = "predicted_e_low_deg";
 inline constexpr std::string_view kPredictedEHighKey = "predicted_e_high_deg";
 inline constexpr std::string_view kMayHoldKey = "may_hold";
 inline constexpr std::string_view kUntriedKey = "untried";
-inline constexpr std::array<std::string_view, 12> kForecastKeys{
-    kPredictedYawKey,    kPredictedYawSdKey,    kPredictedPathKey, kPredictedPathSdKey,
-    kPredictedEffortKey, kPredictedEffortSdKey, kPredictedHoldKey, kPredictedEKey,
-    kPredictedELowKey,   kPredictedEHighKey,    kMayHoldKey,       kUntriedKey};
+inline constexpr std::array<std::string_view, 13> kForecastKeys{
+    kPredictedYawKey,    kPredictedYawSdKey,    kPredictedPathKey,  kPredictedPathSdKey,
+    kPredictedEffortKey, kPredictedEffortSdKey, kPredictedHoldKey,  kPredictedKeepKey,
+    kPredictedEKey,      kPredictedELowKey,     kPredictedEHighKey, kMayHoldKey,
+    kUntriedKey};
 
 }  // namespace multicpg::learning

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "common/enum_names.h"
@@ -40,13 +41,18 @@ ModelLearnerParams model_learner_params(const ModelOptions& o) {
 }
 
 ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
-                           std::vector<std::vector<double>> prior_mean)
+                           std::vector<std::vector<double>> prior_mean, std::vector<double> keep)
     : setup_(setup),
       params_(params),
       space_(setup),
       model_(space_, params.model, std::move(prior_mean)),
+      keep_(std::move(keep)),
       tried_(space_.size(), false),
       best_(setup) {
+  if (!keep_.empty() && keep_.size() != space_.size()) {
+    throw std::invalid_argument("ModelLearner: keep has " + std::to_string(keep_.size()) +
+                                " chances for " + std::to_string(space_.size()) + " combinations");
+  }
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
   for (const body::WindowMeasure& w : setup.start_windows)
@@ -110,9 +116,15 @@ double ModelLearner::e_under(const std::array<Prediction, kOutputs>& p, double l
   return share;
 }
 
+double ModelLearner::chance(std::size_t c, const std::array<Prediction, kOutputs>& p) const {
+  return std::pow(e_under(p, setup_.search.threshold_deg), setup_.criterion.trial_windows) *
+         keep(c);
+}
+
 Forecast ModelLearner::forecast(std::size_t c, const std::array<Prediction, kOutputs>& p) const {
   Forecast f{space_.periods(c), tried_[c], p[kYaw], p[kPath], p[kEffort]};
-  f.hold = e_under(p, setup_.search.threshold_deg);
+  f.keep = keep(c);
+  f.hold = chance(c, p);
   // The quantiles of E by bisection: its distribution is a product of normal CDFs, with no
   // inverse in closed form.
   const double sd = std::sqrt(p[kYaw].sd * p[kYaw].sd + model_.noise_deg() * model_.noise_deg());
@@ -138,7 +150,6 @@ std::optional<Periods> ModelLearner::propose() {
   Predictions predicted;
   model_.predict(predicted);
   const Criterion& judge = setup_.criterion;
-  const double t = setup_.search.threshold_deg;
   double best_score = -std::numeric_limits<double>::infinity();
   bool found = false;
   std::size_t untried = 0;
@@ -148,7 +159,7 @@ std::optional<Periods> ModelLearner::propose() {
     const Prediction& yaw = predicted[kYaw][c];
     const Prediction& path = predicted[kPath][c];
     const Prediction& effort = predicted[kEffort][c];
-    const double hold = e_under({yaw, path, effort}, t);
+    const double hold = chance(c, {yaw, path, effort});
     ++untried;
     if (hold >= kMayHoldLevel) ++may_hold;
     double score = hold;
@@ -182,6 +193,7 @@ std::optional<Periods> ModelLearner::propose() {
     d[kPredictedEffortSdKey] = f.effort.sd;
   }
   d[kPredictedHoldKey] = f.hold;
+  d[kPredictedKeepKey] = f.keep;
   d[kPredictedEKey] = f.e_deg;
   d[kPredictedELowKey] = f.e_low_deg;
   d[kPredictedEHighKey] = f.e_high_deg;
@@ -204,8 +216,7 @@ std::vector<Forecast> ModelLearner::best_forecasts(std::size_t count) const {
   model_.predict(predicted);
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t c = 0; c < space_.size(); ++c) {
-    order.emplace_back(-e_under({predicted[kYaw][c], predicted[kPath][c], predicted[kEffort][c]},
-                                setup_.search.threshold_deg),
+    order.emplace_back(-chance(c, {predicted[kYaw][c], predicted[kPath][c], predicted[kEffort][c]}),
                        c);
   }
   count = std::min(count, order.size());

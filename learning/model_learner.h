@@ -21,7 +21,7 @@
 namespace multicpg::learning {
 
 enum class Acquisition {
-  pi,   // probability of improvement past the threshold: that a window of it holds
+  pi,   // probability of improvement past the threshold: that it holds (ModelLearner::chance)
   ucb,  // lowest confidence bound of the error (upper confidence bound of its negative)
 };
 Acquisition parse_acquisition(std::string_view text);  // throws OptionError("acquisition")
@@ -69,10 +69,11 @@ std::optional<ForecastE> forecast_e(const nlohmann::json& details);
 
 class ModelLearner final : public Learner {
  public:
-  // `prior_mean`: as AdditiveModel's (empty: zero). Throws BadInput for a start outside the
-  // space.
+  // `prior_mean`: as AdditiveModel's (empty: zero). `keep[combination]`: the chance, from data
+  // beside the trials (the prior's), that the combination keeps holding once its trial has held
+  // (empty: 1). Throws BadInput for a start outside the space.
   ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
-               std::vector<std::vector<double>> prior_mean = {});
+               std::vector<std::vector<double>> prior_mean = {}, std::vector<double> keep = {});
 
   std::optional<Periods> propose() override;
   TrialRecord observe(const Measurement& measurement) override;
@@ -88,12 +89,18 @@ class ModelLearner final : public Learner {
   // The probability that one window's E is under `limit`: each part the criterion counts under
   // it, the parts independent as the model has them.
   double e_under(const std::array<Prediction, kOutputs>& p, double limit) const;
+  // The chance that combination `c`, whose outputs the model predicts `p`, holds: every window of
+  // its trial under the threshold (as independent windows around its mean), then holding on
+  // (keep_).
+  double chance(std::size_t c, const std::array<Prediction, kOutputs>& p) const;
+  double keep(std::size_t c) const { return keep_.empty() ? 1.0 : keep_[c]; }
   // The forecast of combination `c` whose outputs the model predicts `p`.
   Forecast forecast(std::size_t c, const std::array<Prediction, kOutputs>& p) const;
   LearnerSetup setup_;
   ModelLearnerParams params_;
   SearchSpace space_;
   AdditiveModel model_;
+  std::vector<double> keep_;
   std::vector<bool> tried_;
   BestSoFar best_;
   std::size_t pending_ = 0;

@@ -5,9 +5,14 @@
 // change and path angle on which legs are lost, each working leg's period, and each lost leg's
 // effect on each working leg's period, mirrored scenarios included as data. The scenario under
 // test and its mirror image are never in it. The trials then correct that prediction through
-// the same GP as the bayes learner (learning/model_learner.h).
+// the same GP as the bayes learner (learning/model_learner.h). Beside the mean, the same regression
+// learns from those landscapes which combinations, once their trial's windows held, held on
+// through every later window, and weighs each combination by that chance: a combination that holds
+// its trial and then drifts is a false stop, which robust mode's monitoring catches only after it
+// has walked on (docs/learning.md "Holding on after the trial").
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -47,6 +52,9 @@ struct PriorOptions : ModelOptions {
   // (what the regression misses on the scenarios it learns from, each left out in turn) or
   // "options" (as given); docs/learning.md "The prior's scales from its data".
   std::string scales = "data";
+  // Whether it weighs each combination by its data's chance that the combination keeps holding
+  // once its trial has held; false: every combination whose trial holds is taken to hold on.
+  bool keeps = true;
   PriorOptions() {
     intercept_deg = 8.0;
     effect_deg = 4.0;
@@ -55,7 +63,7 @@ struct PriorOptions : ModelOptions {
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PriorOptions, acquisition, kappa, noise_deg,
                                                 intercept_deg, effect_deg, pair_deg, dataset,
-                                                scenarios, ridge, other_size_weight, scales)
+                                                scenarios, ridge, other_size_weight, scales, keeps)
 inline constexpr Limits<double> kRidgeLimits{1e-6, 1e6};
 // 0: losses of as many legs alone; above 1 the others count for more.
 inline constexpr Limits<double> kOtherSizeWeightLimits{0.0, 1e6};
@@ -158,6 +166,26 @@ WindowOutputs mean_window(const LandscapePoint& p, const Criterion& criterion) {
   return mean;
 }
 
+// Whether a combination walked in a landscape held its trial as `criterion` judges one (its first
+// trial_windows windows each under `threshold_deg`), and if it did, whether it held on through
+// every window of the dataset's walk; nothing when its trial did not hold.
+std::optional<bool> held_on(const LandscapePoint& p, const Criterion& criterion,
+                            double threshold_deg, int dataset_windows) {
+  const auto trial = static_cast<std::size_t>(criterion.trial_windows);
+  if (p.windows.size() < trial) return std::nullopt;
+  const auto holds = [&](const body::WindowMeasure& w) {
+    return body::holds(criterion.error(w), threshold_deg);
+  };
+  if (!std::all_of(p.windows.begin(), p.windows.begin() + static_cast<std::ptrdiff_t>(trial),
+                   holds)) {
+    return std::nullopt;
+  }
+  // A walk stops at its first window over the dataset's threshold: one that stopped short did not
+  // hold on.
+  return p.windows.size() == static_cast<std::size_t>(dataset_windows) &&
+         std::all_of(p.windows.begin(), p.windows.end(), holds);
+}
+
 // The regression's normal equations X'WX and X'WY, of one scenario or summed over several.
 struct NormalEquations {
   Eigen::MatrixXd xtx;
@@ -167,7 +195,10 @@ struct NormalEquations {
 // The regression over the scenarios a prior learns from (their windows and their mirror images',
 // weighed as `other_size_weight` says), its normal equations summed in the scenarios' order; with
 // `keep_parts`, each scenario's part kept apart too, so that the scales from the data can leave
-// one out.
+// one out. Beside it, on the same features and weights, the regression of whether a combination
+// whose trial held held on (held_on: 1 or 0, a linear probability), over those whose trial held,
+// about their share that held on: where the data say little, the ridge draws a chance to that
+// share, not to 0.
 class Regression {
  public:
   Regression(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o,
@@ -179,6 +210,10 @@ class Regression {
     const std::size_t lost = setup.told.failed().size();
     const auto n = static_cast<Eigen::Index>(f_.size());
     total_ = {Eigen::MatrixXd::Identity(n, n) * o.ridge, Eigen::MatrixXd::Zero(n, kOutputs)};
+    keep_ = {Eigen::MatrixXd::Identity(n, n) * o.ridge, Eigen::MatrixXd::Zero(n, 1)};
+    Eigen::VectorXd keep_rows = Eigen::VectorXd::Zero(n);  // each feature's weight of rows
+    double held = 0.0;
+    double passed = 0.0;
     for (const ScenarioLandscape* scenario : scenarios_) {
       const ScenarioLandscape& s = *scenario;
       // Told nothing, no scenario loses as many legs as it knows of (none): all weigh alike.
@@ -195,12 +230,27 @@ class Regression {
         const Periods mirrored_periods = robot::mirror_periods(morph_, p.periods);
         add(total_, s.failed, p.periods, mean, w);
         add(total_, image, mirrored_periods, mirrored, w);
+        if (const std::optional<bool> kept =
+                held_on(p, setup.criterion, setup.search.threshold_deg, d_.windows)) {
+          const std::array<double, 1> y{*kept ? 1.0 : 0.0};
+          for (const auto& [legs, periods] :
+               {std::pair{&s.failed, &p.periods}, std::pair{&image, &mirrored_periods}}) {
+            add(keep_, *legs, *periods, y, w);
+            for (std::size_t i : f_.active(*legs, digits(*periods, d_.period_set)))
+              keep_rows(static_cast<Eigen::Index>(i)) += w;
+            held += w * y[0];
+            passed += w;
+          }
+        }
         if (!keep_parts) continue;
         add(part, s.failed, p.periods, mean, w);
         add(part, image, mirrored_periods, mirrored, w);
       }
       if (keep_parts) parts_.push_back(std::move(part));
     }
+    // No combination's trial held in the data: nothing says one drifts after it.
+    keep_share_ = passed > 0.0 ? held / passed : 1.0;
+    keep_.xty.col(0) -= keep_share_ * keep_rows;
   }
 
   const std::vector<const ScenarioLandscape*>& scenarios() const { return scenarios_; }
@@ -219,12 +269,17 @@ class Regression {
     return e.xtx.ldlt().solve(e.xty);
   }
 
-  // What weights `beta` predict for `periods` with `lost` legs lost.
-  WindowOutputs predict(const Eigen::MatrixXd& beta, const std::vector<std::size_t>& lost,
-                        const Periods& periods) const {
-    WindowOutputs out{};
+  // The weights of the chance of holding on after a trial that held, about keep_share().
+  Eigen::VectorXd solve_keep() const { return keep_.xtx.ldlt().solve(keep_.xty); }
+  double keep_share() const { return keep_share_; }
+
+  // What weights `beta` (a column per output) predict for `periods` with `lost` legs lost.
+  template <std::size_t N = kOutputs>
+  std::array<double, N> predict(const Eigen::MatrixXd& beta, const std::vector<std::size_t>& lost,
+                                const Periods& periods) const {
+    std::array<double, N> out{};
     for (std::size_t i : f_.active(lost, digits(periods, d_.period_set))) {
-      for (std::size_t k = 0; k < kOutputs; ++k) {
+      for (std::size_t k = 0; k < N; ++k) {
         out[k] += beta(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
       }
     }
@@ -243,14 +298,14 @@ class Regression {
   const std::vector<int>& period_set() const { return d_.period_set; }
 
  private:
+  template <std::size_t N>
   void add(NormalEquations& e, const std::vector<std::size_t>& failed, const Periods& periods,
-           const WindowOutputs& y, double w) const {
+           const std::array<double, N>& y, double w) const {
     const std::vector<std::size_t> a = f_.active(failed, digits(periods, d_.period_set));
     for (std::size_t i : a) {
       const auto ii = static_cast<Eigen::Index>(i);
       for (std::size_t j : a) e.xtx(ii, static_cast<Eigen::Index>(j)) += w;
-      for (std::size_t k = 0; k < kOutputs; ++k)
-        e.xty(ii, static_cast<Eigen::Index>(k)) += w * y[k];
+      for (std::size_t k = 0; k < N; ++k) e.xty(ii, static_cast<Eigen::Index>(k)) += w * y[k];
     }
   }
 
@@ -260,6 +315,8 @@ class Regression {
   std::vector<const ScenarioLandscape*> scenarios_;
   std::vector<double> weights_;
   NormalEquations total_;
+  NormalEquations keep_;     // of held_on less keep_share_, one column
+  double keep_share_ = 1.0;  // the share of the combinations whose trial held that held on
   std::vector<NormalEquations> parts_;
 };
 
@@ -275,6 +332,28 @@ std::vector<std::vector<double>> prior_mean(const Regression& r, const LearnerSe
   for (std::size_t c = 0; c < space.size(); ++c) {
     const WindowOutputs y = r.predict(beta, lost, space.periods(c));
     for (std::size_t k = 0; k < kOutputs; ++k) out[k][c] = y[k];
+  }
+  return out;
+}
+
+// A chance of holding on is a linear probability, which may fall below 0 where the data see none
+// hold on: floored here, such combinations stay in the order of their chance of holding their
+// trial, behind every one the data give a real chance (the replays of docs/learning.md "Holding on
+// after the trial" are the same with a floor of 0.01, 0.05 or 0.1).
+inline constexpr double kKeepFloor = 0.01;
+
+// The chance that each combination of `space` keeps holding once its trial has held, as the
+// scenarios the prior learns from say (for the legs it is told failed, as prior_mean), within
+// [kKeepFloor, 1].
+std::vector<double> keep_chances(const Regression& r, const LearnerSetup& setup,
+                                 const SearchSpace& space) {
+  std::vector<std::size_t> lost = setup.told.failed();
+  std::sort(lost.begin(), lost.end());
+  const Eigen::MatrixXd beta = r.solve_keep();
+  std::vector<double> out(space.size());
+  for (std::size_t c = 0; c < space.size(); ++c) {
+    out[c] =
+        std::clamp(r.keep_share() + r.predict<1>(beta, lost, space.periods(c))[0], kKeepFloor, 1.0);
   }
   return out;
 }
@@ -449,24 +528,27 @@ void check_period_set(const LandscapeDataset& d, const fs::path& path,
 }
 
 // What decides a prior mean besides its data, compared exactly.
-using PriorKey =
-    std::tuple<bool, std::vector<std::size_t>, std::vector<std::vector<std::size_t>>,
-               std::vector<std::string>, double, double, bool, double, double, std::string>;
+using PriorKey = std::tuple<bool, std::vector<std::size_t>, std::vector<std::vector<std::size_t>>,
+                            std::vector<std::string>, double, double, bool, double, double, int,
+                            double, std::string, bool>;
 
 PriorKey prior_key(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o) {
   std::vector<std::size_t> lost = setup.told.failed();
   std::sort(lost.begin(), lost.end());
   const Criterion& c = setup.criterion;
-  return {setup.told.told(),   lost,   data.withheld,   o.scenarios,  o.ridge,
-          o.other_size_weight, c.path, c.threshold_deg, c.max_effort, o.scales};
+  return {setup.told.told(),          lost,     data.withheld,   o.scenarios,  o.ridge,
+          o.other_size_weight,        c.path,   c.threshold_deg, c.max_effort, c.trial_windows,
+          setup.search.threshold_deg, o.scales, o.keeps};
 }
 
 }  // namespace
 
-// A prior's model before any trial: its mean, and its scales where they come from the data.
+// A prior's model before any trial: its mean, its scales where they come from the data, and each
+// combination's chance of holding on after its trial where it weighs by it.
 struct PriorModel {
   std::vector<std::vector<double>> mean;
   std::optional<AdditiveModelParams> scales;
+  std::vector<double> keep;
 };
 
 // Prior models computed once per scenario told, withheld scenarios, options and criterion (the
@@ -482,8 +564,9 @@ class PriorMeans {
       if (it != models_.end()) return it->second;
     }
     const Regression r(data, setup, o, o.scales == "data");
-    PriorModel model{prior_mean(r, setup, space), std::nullopt};
+    PriorModel model{prior_mean(r, setup, space), std::nullopt, {}};
     if (o.scales == "data") model.scales = data_scales(r, setup.criterion);
+    if (o.keeps) model.keep = keep_chances(r, setup, space);
     const std::lock_guard<std::mutex> lock(mutex_);
     return models_.emplace(key, std::move(model)).first->second;
   }
@@ -554,7 +637,8 @@ std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::j
   PriorModel model = data.computed->get(data, setup, space, o);
   ModelLearnerParams params = model_learner_params(o);
   if (model.scales) params.model = *model.scales;
-  return std::make_unique<ModelLearner>(setup, params, std::move(model.mean));
+  return std::make_unique<ModelLearner>(setup, params, std::move(model.mean),
+                                        std::move(model.keep));
 }
 
 }  // namespace multicpg::learning

@@ -88,7 +88,7 @@ class Learner {
   Learner(py::handle name, py::handle options, py::handle seed_value, py::handle robot_value,
           py::handle failed, py::handle start, py::handle windows, py::handle deviation,
           py::handle mode_value, py::handle steering_value, py::handle period_set,
-          py::handle threshold, py::handle max_trials)
+          py::handle threshold, py::handle max_trials, py::handle hold_windows)
       : robot_(robot_arg(robot_value)) {
     const robot::Morphology& morph = robot_->morph();
     learning::AskTellSetup s;
@@ -107,6 +107,9 @@ class Learner {
     // The criterion of the run it stands for (learning/compensation.h): mode and steering as
     // learn() takes them.
     learning::CompensationOptions run = judged_run(mode_value, steering_value, threshold);
+    // Robust mode's trial length: a model-based learner weighs by it (docs/learning.md "Holding
+    // on after the trial").
+    run.hold_windows = whole(hold_windows, "hold_windows", learning::kHoldWindowsLimits);
     if (!period_set.is_none()) {
       s.search.period_set.clear();
       for (const py::handle p : py::iter(period_set)) {
@@ -250,7 +253,8 @@ void register_ask_tell(py::module_& m) {
       "Robot, 'hexapod', 'quadruped' or a robot file). failed: the legs it is told failed\n"
       "(never picked), or None: told nothing, it searches every leg's period. periods: C0,\n"
       "measured as windows=[(yaw_deg, path_deg[, steering_effort]), ...] or deviation_deg=E.\n"
-      "mode and steering: how the run it stands for judges a trial (as learn()'s); period_set\n"
+      "mode, steering and hold_windows (robust mode: the windows a trial walks, each of which\n"
+      "must hold): how the run it stands for judges a trial (as learn()'s); period_set\n"
       "(None: PERIOD_SET), threshold (deg) and max_trials bound the search. With the same\n"
       "seed and the windows our own simulation walks it gives the trials of learn().";
   m.def(
@@ -272,10 +276,11 @@ void register_ask_tell(py::module_& m) {
       .def(py::init([](OptionalStrArg learner, AnyArg options, IntArg seed, RobotArg robot,
                        LegsArg failed, PeriodsArg periods, AnyArg windows,
                        OptionalFloatArg deviation_deg, StrArg mode, StrArg steering,
-                       AnyArg period_set, FloatArg threshold, IntArg max_trials) {
+                       AnyArg period_set, FloatArg threshold, IntArg max_trials,
+                       IntArg hold_windows) {
              return std::make_unique<Learner>(learner, options, seed, robot, failed, periods,
                                               windows, deviation_deg, mode, steering, period_set,
-                                              threshold, max_trials);
+                                              threshold, max_trials, hold_windows);
            }),
            arg("learner") = py::none(), py::kw_only(), arg("options") = py::none(), arg("seed") = 1,
            arg("robot") = "hexapod", arg("failed") = py::none(),
@@ -284,7 +289,8 @@ void register_ask_tell(py::module_& m) {
            arg("mode") = std::string(learning::to_string(learning::Mode::robust)),
            arg("steering") = std::string(learning::to_string(learning::Steering::reflex)),
            arg("period_set") = py::none(), arg("threshold") = learning::kDefaultThresholdDeg,
-           arg("max_trials") = learning::kDefaultMaxTrials)
+           arg("max_trials") = learning::kDefaultMaxTrials,
+           arg("hold_windows") = learning::kDefaultHoldWindows)
       .def("ask", &Learner::ask,
            "The next periods to walk, {leg: period} in leg order, or None when it is done.")
       .def(

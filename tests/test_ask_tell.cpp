@@ -70,7 +70,8 @@ TEST_F(Dataset, AskTellRetracesAReplayOverEpisodesForEveryLearner) {
   monitored.window_order = learning::WindowOrder::walked;
   monitored.hold_windows = 1;  // some combinations hold their first window and drift later
   monitored.episodes = 10;
-  const learning::Criterion judge = data_.criterion();
+  // The replay's judge, its trials of one window (as a run of --hold-windows 1 judges them).
+  const learning::Criterion judge = learning::replay_criterion(data_, monitored);
   const auto over = [&](const body::WindowMeasure& w) {
     return !body::holds(judge.error(w), learning::kDefaultThresholdDeg);
   };

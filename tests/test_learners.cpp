@@ -280,15 +280,16 @@ std::vector<body::WindowMeasure> made_up_windows(const Periods& periods) {
 
 // Each trial's forecast is the model's: rebuilt from the start's and the earlier trials' windows,
 // the model predicts at the chosen combination the recorded means and sds, and the recorded
-// chance to hold, E band and count of combinations that may hold follow from them
-// (docs/learning.md "Inside the model"). Bayes by its name; the prior's path (a prior mean) by
-// the learner they share.
+// chance to hold (each of the trial's windows, then holding on), E band and count of combinations
+// that may hold follow from them (docs/learning.md "Inside the model"). Bayes by its name; the
+// prior's path (a prior mean and chances of holding on) by the learner they share.
 TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
   learning::LearnerSetup setup;
   setup.robot = robot::RobotKind::quadruped;
   setup.start.assign(4, learning::kStartPeriod);
   setup.told = learning::ToldFault::legs({kR2});
   setup.criterion = learning::reflex_criterion(learning::kDefaultThresholdDeg, 0.75);
+  setup.criterion.trial_windows = 2;  // made_up_windows' two
   setup.start_windows = made_up_windows(setup.start);
   setup.start_deviation_deg = setup.criterion.error(setup.start_windows.front());
   setup.search = search(15);
@@ -302,12 +303,14 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
   for (std::size_t c = 0; c < space.size(); ++c) {
     prior_mean[learning::kYaw][c] = 1.5 * static_cast<double>(c % 4);
   }
+  std::vector<double> keep(space.size());
+  for (std::size_t c = 0; c < space.size(); ++c) keep[c] = 1.0 - 0.2 * static_cast<double>(c % 5);
   const auto cdf = [](double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); };
   for (const bool with_prior : {false, true}) {
     SCOPED_TRACE(with_prior ? "a prior mean" : "bayes");
     const std::unique_ptr<learning::Learner> learner =
         with_prior
-            ? std::make_unique<learning::ModelLearner>(setup, params, prior_mean)
+            ? std::make_unique<learning::ModelLearner>(setup, params, prior_mean, keep)
             : learning::make_learner(learning::resolve_learner({"bayes", nlohmann::json::object()}),
                                      setup, learning::LearnerData{});
     std::vector<std::pair<std::size_t, body::WindowMeasure>> told;
@@ -323,14 +326,19 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
       }
       return model;
     };
-    const auto hold = [&](const std::array<learning::Prediction, learning::kOutputs>& p,
-                          double limit) {
+    const auto window_holds = [&](const std::array<learning::Prediction, learning::kOutputs>& p,
+                                  double limit) {
       const double sd = std::hypot(p[0].sd, options.noise_deg);
       const auto within = [&](const learning::Prediction& x) {
         return cdf((limit - x.mean) / sd) - cdf((-limit - x.mean) / sd);
       };
       return within(p[learning::kYaw]) * within(p[learning::kPath]) *
              cdf((limit - p[learning::kEffort].mean) / sd);
+    };
+    // The chance the learner gives combination c: both windows of its trial, then holding on.
+    const auto hold = [&](std::size_t c,
+                          const std::array<learning::Prediction, learning::kOutputs>& p) {
+      return std::pow(window_holds(p, t), 2) * (with_prior ? keep[c] : 1.0);
     };
     std::set<std::size_t> tried{*space.index(setup.start)};
     int trials = 0;
@@ -342,7 +350,8 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
       const std::array<learning::Prediction, learning::kOutputs> p = model->predict(c);
       std::size_t may_hold = 0;
       for (std::size_t other = 0; other < space.size(); ++other) {
-        if (tried.count(other) == 0 && hold(model->predict(other), t) >= learning::kMayHoldLevel)
+        if (tried.count(other) == 0 &&
+            hold(other, model->predict(other)) >= learning::kMayHoldLevel)
           ++may_hold;
       }
       const std::vector<body::WindowMeasure> windows = made_up_windows(*chosen);
@@ -357,7 +366,8 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
       EXPECT_EQ(d.at("predicted_path_sd_deg").get<double>(), p[learning::kPath].sd);
       EXPECT_EQ(d.at("predicted_effort_deg").get<double>(), p[learning::kEffort].mean);
       EXPECT_EQ(d.at("predicted_effort_sd_deg").get<double>(), p[learning::kEffort].sd);
-      EXPECT_NEAR(d.at("predicted_hold").get<double>(), hold(p, t), 1e-12);
+      EXPECT_NEAR(d.at("predicted_hold").get<double>(), hold(c, p), 1e-12);
+      EXPECT_EQ(d.at("predicted_keep").get<double>(), with_prior ? keep[c] : 1.0);
       // The pi acquisition scores by that chance.
       EXPECT_EQ(d.at("predicted_hold").get<double>(), d.at("acquisition").get<double>());
       const double median = d.at("predicted_e_deg").get<double>();
@@ -365,9 +375,10 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
       const double high = d.at("predicted_e_high_deg").get<double>();
       EXPECT_LT(low, median);
       EXPECT_LT(median, high);
-      EXPECT_NEAR(hold(p, median), 0.5, 1e-9);
-      EXPECT_NEAR(hold(p, low), learning::kBandLowQuantile, 1e-9);
-      EXPECT_NEAR(hold(p, high), learning::kBandHighQuantile, 1e-9);
+      // E's band is one window's.
+      EXPECT_NEAR(window_holds(p, median), 0.5, 1e-9);
+      EXPECT_NEAR(window_holds(p, low), learning::kBandLowQuantile, 1e-9);
+      EXPECT_NEAR(window_holds(p, high), learning::kBandHighQuantile, 1e-9);
       EXPECT_EQ(d.at("untried").get<std::size_t>(), space.size() - tried.size());
       EXPECT_EQ(d.at("may_hold").get<std::size_t>(), may_hold);
       tried.insert(c);
@@ -383,13 +394,14 @@ TEST(Learners, AModelLearnersTrialRecordsItsModelsForecastBeforeTheTrial) {
       const std::size_t c = *space.index(best[i].periods);
       EXPECT_EQ(best[i].yaw.mean, model->predict(c)[learning::kYaw].mean);
       EXPECT_EQ(best[i].tried, tried.count(c) == 1);
-      EXPECT_NEAR(best[i].hold, hold(model->predict(c), t), 1e-12);
+      EXPECT_NEAR(best[i].hold, hold(c, model->predict(c)), 1e-12);
+      EXPECT_EQ(best[i].keep, with_prior ? keep[c] : 1.0);
       if (i > 0) {
         EXPECT_GE(best[i - 1].hold, best[i].hold);
       }
     }
     for (std::size_t c = 0; c < space.size(); ++c) {
-      EXPECT_LE(hold(model->predict(c), t), best.front().hold + 1e-12);
+      EXPECT_LE(hold(c, model->predict(c)), best.front().hold + 1e-12);
     }
   }
   // A learner without a model has no forecast.

@@ -1,6 +1,7 @@
 // What the prior learns from (docs/learning.md "Learners", "A learner's data"): never the
 // scenario under test nor its mirror image, losses of another number of legs weighed as asked,
-// and its scales from the data without the scenario under test.
+// its scales from the data without the scenario under test, and each combination's chance of
+// holding on after its trial.
 #include "tests/synthetic_landscapes.h"
 
 namespace multicpg::testing {
@@ -146,6 +147,101 @@ TEST_F(Dataset, APriorsScalesFromTheDataNeverSeeTheScenarioUnderTest) {
   EXPECT_EQ(learning::resolve_learner(ignored).options.at("noise_deg"), 5.0);
   const LearnerChoice resolved = learning::resolve_learner(choice("prior"));
   EXPECT_EQ(learning::resolve_learner(resolved), resolved);
+}
+
+// The prior weighs each combination by the chance, from its data, that it holds on once its trial
+// has held (docs/learning.md "Holding on after the trial"): learned from the scenarios it may see,
+// never from the scenario under test nor its mirror image; every chance 1 with keeps=false.
+TEST_F(Dataset, APriorWeighsACombinationByItsDatasChanceOfHoldingOn) {
+  // Trials of one window: the dataset's later two are what a combination walks on after its trial.
+  learning::Criterion judge = data_.criterion();
+  judge.trial_windows = 1;
+  // The dataset with the scenarios `straight` walking straight in every combination, then, in each
+  // scenario of `lost` legs, every combination whose trial holds while `leg` is not at period 9
+  // drifting after it (yaw 20 deg in its later windows).
+  using Drift = std::pair<std::vector<std::size_t>, std::size_t>;
+  const auto dataset = [&](const std::vector<std::vector<std::size_t>>& straight,
+                           const std::vector<Drift>& drifts, const std::string& name) {
+    LandscapeDataset d = data_;
+    for (ScenarioLandscape& s : d.scenarios) {
+      if (std::find(straight.begin(), straight.end(), s.failed) != straight.end()) {
+        for (learning::LandscapePoint& p : s.points) {
+          for (body::WindowMeasure& w : p.windows) w.yaw_deg = w.path_deg = 0.0;
+          p.worst_deg = 0.0;
+          p.holds = true;
+        }
+      }
+      for (const auto& [lost, leg] : drifts) {
+        if (s.failed != lost) continue;
+        for (learning::LandscapePoint& p : s.points) {
+          if (p.periods[leg] == 9 ||
+              !body::holds(judge.error(p.windows.front()), learning::kDefaultThresholdDeg)) {
+            continue;
+          }
+          for (std::size_t i = 1; i < p.windows.size(); ++i) p.windows[i].yaw_deg = 20.0;
+          p.worst_deg = std::max(p.worst_deg, 20.0);
+          p.holds = false;
+        }
+      }
+    }
+    learning::write_landscape_dataset(d, fs::path(dir_) / name);
+    LearnerChoice c = choice("prior");
+    c.options["dataset"] = dir_ + "/" + name;
+    return c;
+  };
+  // Told L2, before any trial: every combination's forecast (the model's whole map).
+  const auto map = [&](const LearnerChoice& c) {
+    learning::LearnerSetup setup;
+    setup.robot = robot::RobotKind::quadruped;
+    setup.start.assign(4, learning::kStartPeriod);
+    setup.told = learning::ToldFault::legs({kL2});
+    setup.criterion = judge;
+    const ScenarioLandscape& truth = *data_.find({kL2});
+    setup.start_windows = {truth.points[*truth.find(setup.start)].windows.front()};
+    setup.search = search(60);
+    const LearnerChoice resolved = learning::resolve_learner(c);
+    const auto learner = learning::make_learner(
+        resolved, setup, learning::learner_data(resolved, setup.robot, judge));
+    return learner->best_forecasts(truth.points.size());
+  };
+  const auto mean_keep = [](const std::vector<learning::Forecast>& m, bool r2_at_9) {
+    double sum = 0.0;
+    double n = 0.0;
+    for (const learning::Forecast& f : m) {
+      if ((f.periods[kR2] == 9) != r2_at_9) continue;
+      sum += f.keep;
+      n += 1.0;
+    }
+    return sum / n;
+  };
+  // R1 and its mirror image L1 walking straight: every combination holds on.
+  const std::vector<learning::Forecast> straight = map(dataset({{0}, {2}}, {}, "straight"));
+  ASSERT_EQ(straight.size(), 125u);
+  EXPECT_GT(mean_keep(straight, true), 0.9);
+  EXPECT_GT(mean_keep(straight, false), 0.9);
+  // The same, but drifting after the trial wherever R2 (in L1's, the mirror image: L2) is not at
+  // 9: R2 at 9 is the better bet.
+  const std::vector<learning::Forecast> seen =
+      map(dataset({{0}, {2}}, {{{0}, kR2}, {{2}, kL2}}, "drift-seen"));
+  EXPECT_GT(mean_keep(seen, true), mean_keep(seen, false) + 0.3);
+  // L2 is under test, R2 its mirror image: whatever they do changes nothing.
+  const std::vector<learning::Forecast> plain = map(choice("prior"));
+  const std::vector<learning::Forecast> unseen =
+      map(dataset({{kL2}, {kR2}}, {{{kL2}, kR2}, {{kR2}, kL2}}, "drift-unseen"));
+  ASSERT_EQ(unseen.size(), plain.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(unseen[i].periods, plain[i].periods) << i;
+    EXPECT_EQ(unseen[i].keep, plain[i].keep) << i;
+    EXPECT_EQ(unseen[i].hold, plain[i].hold) << i;
+  }
+  // keeps=false: a combination whose trial holds is taken to hold on.
+  LearnerChoice off = dataset({{0}, {2}}, {{{0}, kR2}, {{2}, kL2}}, "drift-off");
+  off.options["keeps"] = false;
+  for (const learning::Forecast& f : map(off)) EXPECT_EQ(f.keep, 1.0);
+  EXPECT_EQ(learning::resolve_learner(choice("prior")).options.at("keeps"), true);
+  LearnerChoice wrong = choice("prior");
+  wrong.options["keeps"] = "yes";
+  EXPECT_THROW(learning::resolve_learner(wrong), OptionError);
 }
 
 }  // namespace

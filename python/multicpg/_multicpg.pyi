@@ -315,7 +315,8 @@ class Learner:
                  robot: Union[Robot, str] = "hexapod", failed: Legs = None, periods: Periods = 4,
                  windows: Any = None, deviation_deg: Optional[float] = None,
                  mode: str = "robust", steering: str = "reflex", period_set: Any = None,
-                 threshold: float = 8.0, max_trials: int = 200) -> None: ...
+                 threshold: float = 8.0, max_trials: int = 200,
+                 hold_windows: int = 3) -> None: ...
     def ask(self) -> Optional[Dict[str, int]]:
         """The next periods, {leg: period} in leg order, or None when it is done."""
     def tell(self, *, windows: Any = None,

@@ -99,6 +99,22 @@ def test_tell_judges_windows_as_the_run_does_and_refuses_misuse():
     assert prior.dataset.endswith("hexapod")
 
 
+def test_the_trial_a_learner_is_told_of_sets_the_chance_its_model_gives():
+    # A model's chance that a combination holds counts every window of the run's trial, and the
+    # prior's chance that it holds on after it (docs/learning.md "Holding on after the trial").
+    start = [(12.0, 3.0, 0.3)]
+    records = {}
+    for windows in (1, 3):
+        agent = multicpg.Learner("prior", failed="R1,R3", windows=start, hold_windows=windows)
+        agent.ask()
+        records[windows] = agent.tell(windows=[(1.0, 1.0, 0.2)] * windows)
+    one, three = records[1], records[3]
+    assert 0.0 < three["predicted_keep"] <= 1.0
+    assert one["predicted_hold"] != three["predicted_hold"]
+    with pytest.raises(ValueError, match="hold_windows"):
+        multicpg.Learner("prior", failed="R1", windows=start, hold_windows=0)
+
+
 def test_window_error_judges_a_window_as_the_learner_and_each_mode_do():
     # With the reflex its effort counts, read so that the most it may ask is the threshold.
     window = {"yaw_deg": -2.0, "path_deg": 3.0, "steering_effort": STEERING_MAX_EFFORT / 2}
