@@ -83,17 +83,18 @@ py::dict trace_arrays(std::string_view learner, const learning::LearningResult& 
 
 // A model-based learner's map after its last trial (docs/learning.md "Inside the model"): the
 // combinations its model gives the best chance to hold, best first, as arrays: periods
-// [rows, legs], hold, e_deg, e_low_deg, e_high_deg, yaw_deg, yaw_sd_deg, path_deg, path_sd_deg,
-// effort_deg, effort_sd_deg and tried.
+// [rows, legs], hold, keep, e_deg, e_low_deg, e_high_deg, yaw_deg, yaw_sd_deg, path_deg,
+// path_sd_deg, effort_deg, effort_sd_deg and tried.
 py::dict model_arrays(const std::vector<learning::Forecast>& forecasts, std::size_t legs) {
   const auto n = static_cast<py::ssize_t>(forecasts.size());
   std::vector<int> periods;
-  std::vector<double> hold, e, low, high, yaw, yaw_sd, path, path_sd, effort, effort_sd;
+  std::vector<double> hold, keep, e, low, high, yaw, yaw_sd, path, path_sd, effort, effort_sd;
   py::array_t<bool> tried(n);
   for (std::size_t i = 0; i < forecasts.size(); ++i) {
     const learning::Forecast& f = forecasts[i];
     periods.insert(periods.end(), f.periods.begin(), f.periods.end());
     hold.push_back(f.hold);
+    keep.push_back(f.keep);
     e.push_back(f.e_deg);
     low.push_back(f.e_low_deg);
     high.push_back(f.e_high_deg);
@@ -108,6 +109,7 @@ py::dict model_arrays(const std::vector<learning::Forecast>& forecasts, std::siz
   py::dict out;
   out["periods"] = array(periods, {n, static_cast<py::ssize_t>(legs)});
   out["hold"] = array(hold, {n});
+  out["keep"] = array(keep, {n});
   out["e_deg"] = array(e, {n});
   out["e_low_deg"] = array(low, {n});
   out["e_high_deg"] = array(high, {n});

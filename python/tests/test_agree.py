@@ -58,7 +58,7 @@ def test_a_model_learners_forecasts_come_as_arrays():
     arrays = result["trace_arrays"]
     for key in ("predicted_e_deg", "predicted_e_low_deg", "predicted_e_high_deg",
                 "predicted_yaw_deg", "predicted_yaw_sd_deg", "predicted_path_deg",
-                "predicted_hold", "may_hold", "untried"):
+                "predicted_hold", "predicted_keep", "may_hold", "untried"):
         assert np.isnan(arrays[key][0]), key
         assert list(arrays[key][1:]) == [t[key] for t in result["trace"]], key
     # Paper mode has no reflex: no effort forecast.
@@ -72,6 +72,7 @@ def test_a_model_learners_forecasts_come_as_arrays():
     assert np.all(model["periods"][:, 0] == 4)  # R1 failed: its period never changes
     assert np.all(np.diff(model["hold"]) <= 0)
     assert model["tried"].dtype == np.bool_
+    assert np.all(model["keep"] == 1.0)  # bayes has no data of holding on after a trial
     assert np.all(model["e_low_deg"] < model["e_deg"]) and np.all(model["e_deg"] < model["e_high_deg"])
     tried = {tuple(t["periods"][leg] for leg in ("R1", "R2", "R3", "L1", "L2", "L3"))
              for t in result["trace"]}
