@@ -231,7 +231,8 @@ class Regression {
         add(total_, s.failed, p.periods, mean, w);
         add(total_, image, mirrored_periods, mirrored, w);
         if (const std::optional<bool> kept =
-                held_on(p, setup.criterion, setup.search.threshold_deg, d_.windows)) {
+                o.keeps ? held_on(p, setup.criterion, setup.search.threshold_deg, d_.windows)
+                        : std::nullopt) {
           const std::array<double, 1> y{*kept ? 1.0 : 0.0};
           for (const auto& [legs, periods] :
                {std::pair{&s.failed, &p.periods}, std::pair{&image, &mirrored_periods}}) {
