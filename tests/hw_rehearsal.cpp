@@ -59,12 +59,18 @@ bool Rehearsal::finish() {
 
 std::vector<nlohmann::json> Rehearsal::events(const std::string& kind) const {
   std::vector<nlohmann::json> out;
-  std::istringstream lines(read_file(log_));
+  std::string text = read_file(log_);
+  text.erase(text.find_last_of('\n') + 1);  // npos + 1 == 0: no whole line yet
+  std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);) {
     nlohmann::json e = nlohmann::json::parse(line);
     if (e.at("event") == kind) out.push_back(std::move(e));
   }
   return out;
+}
+
+bool Rehearsal::wait_walking(std::chrono::seconds limit) const {
+  return wait_until([&] { return !events("inject").empty(); }, limit);
 }
 
 }  // namespace multicpg::testing

@@ -3,6 +3,7 @@
 // commands use (--hardware), and the emulator's log.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -15,6 +16,10 @@ namespace multicpg::testing {
 
 class Rehearsal {
  public:
+  // An injection that changes nothing (a yaw drift of 0 deg/s from step 20): its "inject" event,
+  // logged when the host sends step 21, tells a test the robot has walked.
+  static constexpr const char* kWalkingMark = "drift=0@20";
+
   // `example`: a file of examples/hardware; every `timeout_ms = ` in it becomes `timeout_ms`;
   // `edits` then replace text in it (from, to); `args`: more emulator flags (--inject ...). It
   // serves one run unless `args` say --runs.
@@ -30,8 +35,11 @@ class Rehearsal {
   int exit_code() const { return emulator_->exit_code(); }
   std::string out() const { return emulator_->out(); }
   std::string err() const { return emulator_->err(); }
-  // The log's events of `kind` ("posture", "torque_off", "inject", ...).
+  // The log's events of `kind` ("posture", "torque_off", "inject", ...), the line being written
+  // left out.
   std::vector<nlohmann::json> events(const std::string& kind) const;
+  // Waits until the host has walked past kWalkingMark (given in `args`); false if it never does.
+  bool wait_walking(std::chrono::seconds limit) const;
 
  private:
   std::string dir_;

@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <thread>
 
 #include "tests/cli_process.h"
 #include "tests/cli_runner.h"
@@ -128,9 +127,9 @@ TEST(HardwareFaults, AmosiiFramesCarryNoChecksum) {
 }
 
 TEST(HardwareFaults, SigintStopsTheRobotInItsSafePosture) {
-  Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs);
+  Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs, {"--inject", Rehearsal::kWalkingMark});
   CliProcess host({"walk", "--steps", "1000000", "--hardware", r.file(), "--lock-step", "--json"});
-  std::this_thread::sleep_for(std::chrono::seconds(2));
+  ASSERT_TRUE(r.wait_walking(std::chrono::seconds(60))) << host.err();
   host.signal(SIGINT);
   ASSERT_TRUE(host.wait(std::chrono::seconds(30)));
   ASSERT_TRUE(r.finish());

@@ -127,7 +127,7 @@ TEST(HardwarePorts, AKilledEmulatorEndsTheWalkWithTheStopLine) {
 }
 
 TEST(HardwarePorts, ASecondProgramOnARobotsPortIsRefusedBeforeItWritesAByte) {
-  Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs);
+  Rehearsal r("dynamixel-hexapod.toml", kTimeoutMs, {"--inject", Rehearsal::kWalkingMark});
   const std::string port = bus_port(r);
   CliProcess first({"walk", "--steps", "1000000", "--hardware", r.file(), "--lock-step"});
   ASSERT_TRUE(wait_until([&] { return holds(first.pid(), port); }, kHang)) << first.err();
@@ -137,7 +137,9 @@ TEST(HardwarePorts, ASecondProgramOnARobotsPortIsRefusedBeforeItWritesAByte) {
   EXPECT_NE(second.err.find("port " + port + " is in use by pid " + std::to_string(first.pid())),
             std::string::npos)
       << second.err;
-  // The first walks on, its link untouched: not a byte of the second reached the emulator.
+  // The first walks on, its link untouched: not a byte of the second reached the emulator. (It
+  // may have held the port before its first step; a robot stopped then is not commanded.)
+  ASSERT_TRUE(r.wait_walking(kHang)) << first.err();
   first.signal(SIGINT);
   ASSERT_TRUE(first.wait(kHang));
   EXPECT_EQ(first.exit_code(), 130) << first.err();
