@@ -6,6 +6,7 @@
 #include "common/user_text.h"
 #include "learning/annealing.h"
 #include "learning/forecast.h"
+#include "learning/model_learner.h"
 
 namespace multicpg::learning {
 
@@ -38,6 +39,14 @@ namespace {
 std::vector<std::string_view> model_details() {
   std::vector<std::string_view> keys{"acquisition"};
   keys.insert(keys.end(), kForecastKeys.begin(), kForecastKeys.end());
+  return keys;
+}
+
+// The prior's: a model-based learner's and what its priors let a loss of another number of legs
+// count for.
+std::vector<std::string_view> prior_details() {
+  std::vector<std::string_view> keys = model_details();
+  keys.push_back(kOtherSizeWeightKey);
   return keys;
 }
 
@@ -77,7 +86,7 @@ const std::vector<Entry>& table() {
       {{"prior",
         "a GP whose prior mean is what the other leg losses' landscapes predict "
         "(Intelligent Trial and Error)",
-        model_details()},
+        prior_details()},
        prior_options,
        make_prior,
        prior_data,

@@ -138,8 +138,14 @@ nlohmann::json read_learner_options(const nlohmann::json& asked) {
     try {
       (void)probe.get<Options>();
     } catch (const nlohmann::json::exception&) {
+      const nlohmann::json& wanted = defaults.at(key);
+      const std::string type = wanted.type_name();
+      if (value.type() == wanted.type()) {
+        throw OptionError(key, "holds a value of the wrong type: got " + value.dump());
+      }
+      const bool vowel = type == "array" || type == "object";
       throw OptionError(
-          key, "must be a " + std::string(defaults.at(key).type_name()) + ", got " + value.dump());
+          key, std::string(vowel ? "must be an " : "must be a ") + type + ", got " + value.dump());
     }
   }
   const Options options = asked.get<Options>();

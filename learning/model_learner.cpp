@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -42,27 +43,32 @@ ModelLearnerParams model_learner_params(const ModelOptions& o) {
 
 ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
                            std::vector<std::vector<double>> prior_mean, std::vector<double> keep)
-    : setup_(setup),
-      params_(params),
-      space_(setup),
-      model_(space_, params.model, std::move(prior_mean)),
-      keep_(std::move(keep)),
-      tried_(space_.size(), false),
-      best_(setup) {
-  if (!keep_.empty() && keep_.size() != space_.size()) {
-    throw std::invalid_argument("ModelLearner: keep has " + std::to_string(keep_.size()) +
-                                " chances for " + std::to_string(space_.size()) + " combinations");
+    : ModelLearner(setup, params,
+                   {ModelPrior{params.model, std::move(prior_mean), std::move(keep), {}}}) {}
+
+ModelLearner::ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
+                           std::vector<ModelPrior> priors)
+    : setup_(setup), params_(params), space_(setup), tried_(space_.size(), false), best_(setup) {
+  if (priors.empty()) throw std::invalid_argument("ModelLearner: no prior");
+  components_.reserve(priors.size());
+  for (ModelPrior& p : priors) {
+    if (!p.keep.empty() && p.keep.size() != space_.size()) {
+      throw std::invalid_argument("ModelLearner: keep has " + std::to_string(p.keep.size()) +
+                                  " chances for " + std::to_string(space_.size()) +
+                                  " combinations");
+    }
+    components_.push_back({AdditiveModel(space_, p.scales, std::move(p.mean)), std::move(p.keep),
+                           p.other_size_weight});
   }
   const std::size_t start = *space_.index(setup.start);
   tried_[start] = true;
   for (const body::WindowMeasure& w : setup.start_windows)
-    model_.observe(start, window_outputs(w, setup_.criterion));
+    observe(start, window_outputs(w, setup_.criterion));
   for (const EarlierTrial& t : setup.earlier) {
     const std::optional<std::size_t> c = space_.index(t.periods);
     if (!c) continue;  // a combination outside this episode's space tells it nothing
     tried_[*c] = true;
-    for (const body::WindowMeasure& w : t.windows)
-      model_.observe(*c, window_outputs(w, setup_.criterion));
+    for (const body::WindowMeasure& w : t.windows) observe(*c, window_outputs(w, setup_.criterion));
   }
 }
 
@@ -98,45 +104,136 @@ double normal_cdf(double z) {
 
 }  // namespace
 
-double ModelLearner::window_under(const Prediction& p, double limit) const {
-  const double sd = std::sqrt(p.sd * p.sd + params_.model.noise_deg * params_.model.noise_deg);
+double ModelLearner::window_under(const Prediction& p, double limit, double noise) {
+  const double sd = std::sqrt(p.sd * p.sd + noise * noise);
   return normal_cdf((limit - p.mean) / sd) - normal_cdf((-limit - p.mean) / sd);
 }
 
-double ModelLearner::effort_under(const Prediction& p, double limit) const {
+double ModelLearner::effort_under(const Prediction& p, double limit, double noise) {
   // The effort is never negative: only its upper side can fail.
-  const double sd = std::sqrt(p.sd * p.sd + params_.model.noise_deg * params_.model.noise_deg);
+  const double sd = std::sqrt(p.sd * p.sd + noise * noise);
   return normal_cdf((limit - p.mean) / sd);
 }
 
-double ModelLearner::e_under(const std::array<Prediction, kOutputs>& p, double limit) const {
+double ModelLearner::e_under(std::size_t k, const Outputs& p, double limit) const {
   const Criterion& judge = setup_.criterion;
-  double share = window_under(p[kYaw], limit) * (judge.path ? window_under(p[kPath], limit) : 1.0);
-  if (judge.steers()) share *= effort_under(p[kEffort], limit);
+  const double noise = components_[k].model.noise_deg();
+  double share = window_under(p[kYaw], limit, noise) *
+                 (judge.path ? window_under(p[kPath], limit, noise) : 1.0);
+  if (judge.steers()) share *= effort_under(p[kEffort], limit, noise);
   return share;
 }
 
-double ModelLearner::chance(std::size_t c, const std::array<Prediction, kOutputs>& p) const {
-  return std::pow(e_under(p, setup_.search.threshold_deg), setup_.criterion.trial_windows) *
-         keep(c);
+double ModelLearner::chance(std::size_t k, std::size_t c, const Outputs& p) const {
+  return std::pow(e_under(k, p, setup_.search.threshold_deg), setup_.criterion.trial_windows) *
+         keep(k, c);
 }
 
-Forecast ModelLearner::forecast(std::size_t c, const std::array<Prediction, kOutputs>& p) const {
+std::vector<double> ModelLearner::weights() const {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Component& k : components_) top = std::max(top, k.log_evidence);
+  std::vector<double> w;
+  double sum = 0.0;
+  for (const Component& k : components_) {
+    w.push_back(std::exp(k.log_evidence - top));
+    sum += w.back();
+  }
+  for (double& x : w) x /= sum;
+  return w;
+}
+
+std::vector<Predictions> ModelLearner::predict() const {
+  std::vector<Predictions> out(components_.size());
+  for (std::size_t k = 0; k < components_.size(); ++k) components_[k].model.predict(out[k]);
+  return out;
+}
+
+namespace {
+
+std::array<Prediction, kOutputs> outputs(const Predictions& p, std::size_t c) {
+  return {p[kYaw][c], p[kPath][c], p[kEffort][c]};
+}
+
+}  // namespace
+
+ModelLearner::Outputs ModelLearner::mixed(const std::vector<double>& w,
+                                          const std::vector<Predictions>& pk, std::size_t c) const {
+  // One prior's own sd, not one through its square's rounding.
+  if (components_.size() == 1) return outputs(pk[0], c);
+  Outputs p;
+  for (std::size_t o = 0; o < kOutputs; ++o) {
+    double mean = 0.0;
+    double second = 0.0;
+    for (std::size_t k = 0; k < components_.size(); ++k) {
+      const Prediction& x = pk[k][o][c];
+      mean += w[k] * x.mean;
+      second += w[k] * (x.sd * x.sd + x.mean * x.mean);
+    }
+    p[o] = {mean, std::sqrt(std::max(second - mean * mean, 0.0))};
+  }
+  return p;
+}
+
+double ModelLearner::chance(const std::vector<double>& w, const std::vector<Predictions>& p,
+                            std::size_t c) const {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < components_.size(); ++k) sum += w[k] * chance(k, c, outputs(p[k], c));
+  return sum;
+}
+
+void ModelLearner::observe(std::size_t c, const WindowOutputs& window) {
+  const Criterion& judge = setup_.criterion;
+  for (Component& k : components_) {
+    if (components_.size() > 1) {
+      // The window's density under the model before it is told: the outputs the criterion
+      // counts, independent as the model has them.
+      const Outputs p = k.model.predict(c);
+      const double noise = k.model.noise_deg();
+      const auto log_density = [&](std::size_t o) {
+        const double var = p[o].sd * p[o].sd + noise * noise;
+        const double z = window[o] - p[o].mean;
+        return -0.5 * (z * z / var + std::log(2.0 * std::numbers::pi * var));
+      };
+      k.log_evidence += log_density(kYaw);
+      if (judge.path) k.log_evidence += log_density(kPath);
+      if (judge.steers()) k.log_evidence += log_density(kEffort);
+    }
+    k.model.observe(c, window);
+  }
+}
+
+Forecast ModelLearner::forecast(const std::vector<double>& w, const std::vector<Predictions>& pk,
+                                std::size_t c) const {
+  const std::size_t n = components_.size();
+  const Outputs p = mixed(w, pk, c);
   Forecast f{space_.periods(c), tried_[c], p[kYaw], p[kPath], p[kEffort]};
-  f.keep = keep(c);
-  f.hold = chance(c, p);
-  // The quantiles of E by bisection: its distribution is a product of normal CDFs, with no
-  // inverse in closed form.
-  const double sd = std::sqrt(p[kYaw].sd * p[kYaw].sd + model_.noise_deg() * model_.noise_deg());
-  double top = std::abs(p[kYaw].mean);
-  if (setup_.criterion.path) top = std::max(top, std::abs(p[kPath].mean));
-  if (setup_.criterion.steers()) top = std::max(top, p[kEffort].mean);
+  // One prior's weight is 1: these are its own numbers, exactly.
+  f.keep = 0.0;
+  for (std::size_t k = 0; k < n; ++k) f.keep += w[k] * keep(k, c);
+  f.hold = chance(w, pk, c);
+  const auto under = [&](double limit) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k) sum += w[k] * e_under(k, outputs(pk[k], c), limit);
+    return sum;
+  };
+  // The quantiles of E by bisection: its distribution is a product of normal CDFs (a mixture of
+  // them over the priors), with no inverse in closed form.
+  double top = 0.0;
+  double sd = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Prediction& yaw = pk[k][kYaw][c];
+    const double noise = components_[k].model.noise_deg();
+    sd = std::max(sd, std::sqrt(yaw.sd * yaw.sd + noise * noise));
+    top = std::max(top, std::abs(yaw.mean));
+    if (setup_.criterion.path) top = std::max(top, std::abs(pk[k][kPath][c].mean));
+    if (setup_.criterion.steers()) top = std::max(top, pk[k][kEffort][c].mean);
+  }
   const auto quantile = [&](double q) {
     double lo = 0.0;
     double hi = top + kQuantileBracketSds * sd;
     for (int i = 0; i < kQuantileHalvings; ++i) {
       const double mid = 0.5 * (lo + hi);
-      (e_under(p, mid) < q ? lo : hi) = mid;
+      (under(mid) < q ? lo : hi) = mid;
     }
     return 0.5 * (lo + hi);
   };
@@ -147,8 +244,8 @@ Forecast ModelLearner::forecast(std::size_t c, const std::array<Prediction, kOut
 }
 
 std::optional<Periods> ModelLearner::propose() {
-  Predictions predicted;
-  model_.predict(predicted);
+  const std::vector<Predictions> predicted = predict();
+  const std::vector<double> w = weights();
   const Criterion& judge = setup_.criterion;
   double best_score = -std::numeric_limits<double>::infinity();
   bool found = false;
@@ -156,18 +253,16 @@ std::optional<Periods> ModelLearner::propose() {
   std::size_t may_hold = 0;
   for (std::size_t c = 0; c < space_.size(); ++c) {
     if (tried_[c]) continue;
-    const Prediction& yaw = predicted[kYaw][c];
-    const Prediction& path = predicted[kPath][c];
-    const Prediction& effort = predicted[kEffort][c];
-    const double hold = chance(c, {yaw, path, effort});
+    const double hold = chance(w, predicted, c);
     ++untried;
     if (hold >= kMayHoldLevel) ++may_hold;
     double score = hold;
     if (params_.acquisition == Acquisition::ucb) {
-      double error = std::abs(yaw.mean);
-      if (judge.path) error = std::max(error, std::abs(path.mean));
-      if (judge.steers()) error = std::max(error, effort.mean);
-      score = -(error - params_.kappa * yaw.sd);
+      const Outputs p = mixed(w, predicted, c);
+      double error = std::abs(p[kYaw].mean);
+      if (judge.path) error = std::max(error, std::abs(p[kPath].mean));
+      if (judge.steers()) error = std::max(error, p[kEffort].mean);
+      score = -(error - params_.kappa * p[kYaw].sd);
     }
     // Ties go to the first combination in order: deterministic without a draw.
     if (score > best_score) {
@@ -180,8 +275,7 @@ std::optional<Periods> ModelLearner::propose() {
     best_.exhausted();
     return std::nullopt;
   }
-  const Forecast f = forecast(pending_, {predicted[kYaw][pending_], predicted[kPath][pending_],
-                                         predicted[kEffort][pending_]});
+  const Forecast f = forecast(w, predicted, pending_);
   nlohmann::json& d = pending_details_;
   d = {{"acquisition", best_score}};
   d[kPredictedYawKey] = f.yaw.mean;
@@ -199,34 +293,37 @@ std::optional<Periods> ModelLearner::propose() {
   d[kPredictedEHighKey] = f.e_high_deg;
   d[kMayHoldKey] = may_hold;
   d[kUntriedKey] = untried;
+  if (components_.front().other_size_weight) {
+    double other = 0.0;
+    for (std::size_t k = 0; k < components_.size(); ++k) {
+      other += w[k] * components_[k].other_size_weight.value();
+    }
+    d[kOtherSizeWeightKey] = other;
+  }
   tried_[pending_] = true;
   return space_.periods(pending_);
 }
 
 TrialRecord ModelLearner::observe(const Measurement& m) {
   for (const body::WindowMeasure& w : m.windows)
-    model_.observe(pending_, window_outputs(w, setup_.criterion));
+    observe(pending_, window_outputs(w, setup_.criterion));
   const Periods periods = space_.periods(pending_);
   const bool accepted = best_.record(periods, m.deviation_deg);
   return {best_.trials(), periods, m.deviation_deg, accepted, pending_details_};
 }
 
 std::vector<Forecast> ModelLearner::best_forecasts(std::size_t count) const {
-  Predictions predicted;
-  model_.predict(predicted);
+  const std::vector<Predictions> predicted = predict();
+  const std::vector<double> w = weights();
   std::vector<std::pair<double, std::size_t>> order;
   for (std::size_t c = 0; c < space_.size(); ++c) {
-    order.emplace_back(-chance(c, {predicted[kYaw][c], predicted[kPath][c], predicted[kEffort][c]}),
-                       c);
+    order.emplace_back(-chance(w, predicted, c), c);
   }
   count = std::min(count, order.size());
   // Ties in the order of the grid, as propose() breaks them.
   std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count), order.end());
   std::vector<Forecast> out;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::size_t c = order[i].second;
-    out.push_back(forecast(c, {predicted[kYaw][c], predicted[kPath][c], predicted[kEffort][c]}));
-  }
+  for (std::size_t i = 0; i < count; ++i) out.push_back(forecast(w, predicted, order[i].second));
   return out;
 }
 

@@ -1,7 +1,8 @@
 // A learner that picks each trial by a model of every combination's windows
 // (learning/additive_model.h): the combination most likely to hold, or the one with the lowest
 // optimistic error; the model-based learners (bayes: a GP alone; prior: a GP around what other
-// scenarios predict) differ only in the model's prior mean.
+// scenarios predict) differ only in the model's prior mean. Given several priors, it averages
+// them by their evidence.
 #pragma once
 
 #include <array>
@@ -67,6 +68,21 @@ struct ForecastE {
 };
 std::optional<ForecastE> forecast_e(const nlohmann::json& details);
 
+// One prior of a model-based learner: its GP's scales, its prior mean (as AdditiveModel's; empty:
+// zero), each combination's chance, from data beside the trials, of holding on once its trial has
+// held (empty: 1), and, for the prior learner's, what a loss of another number of legs counted
+// for in its data (learning/prior_model.h).
+struct ModelPrior {
+  AdditiveModelParams scales;
+  std::vector<std::vector<double>> mean;
+  std::vector<double> keep;
+  std::optional<double> other_size_weight;
+};
+
+// The detail of a trial of priors that say what a loss of another number of legs counted for
+// (ModelPrior::other_size_weight): theirs, averaged by the priors' weights before the trial.
+inline constexpr std::string_view kOtherSizeWeightKey = "other_size_weight";
+
 class ModelLearner final : public Learner {
  public:
   // `prior_mean`: as AdditiveModel's (empty: zero). `keep[combination]`: the chance, from data
@@ -74,6 +90,12 @@ class ModelLearner final : public Learner {
   // (empty: 1). Throws BadInput for a start outside the space.
   ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
                std::vector<std::vector<double>> prior_mean = {}, std::vector<double> keep = {});
+  // Several priors, averaged (Bayesian model averaging, equal odds before the first window): each
+  // weighed by its evidence, the probability its model gave the windows seen so far, each window
+  // before it was told (docs/learning.md "The quadruped: a small dataset"). `params.model` is
+  // unused: each prior has its scales. Throws std::invalid_argument without a prior.
+  ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
+               std::vector<ModelPrior> priors);
 
   std::optional<Periods> propose() override;
   TrialRecord observe(const Measurement& measurement) override;
@@ -82,25 +104,47 @@ class ModelLearner final : public Learner {
   std::vector<Forecast> best_forecasts(std::size_t count) const override;
 
  private:
+  // A prior and what the trials made of it.
+  struct Component {
+    AdditiveModel model;
+    std::vector<double> keep;
+    std::optional<double> other_size_weight;
+    double log_evidence = 0.0;  // ln of the probability density it gave the windows told
+  };
+  using Outputs = std::array<Prediction, kOutputs>;
   // P(|x| < limit) for x ~ N(mean, sd^2 + noise^2): one window of the output is under `limit`.
-  double window_under(const Prediction& p, double limit) const;
+  static double window_under(const Prediction& p, double limit, double noise);
   // P(x < limit): the reflex's effort, never negative, is under `limit`.
-  double effort_under(const Prediction& p, double limit) const;
-  // The probability that one window's E is under `limit`: each part the criterion counts under
-  // it, the parts independent as the model has them.
-  double e_under(const std::array<Prediction, kOutputs>& p, double limit) const;
-  // The chance that combination `c`, whose outputs the model predicts `p`, holds: every window of
-  // its trial under the threshold (as independent windows around its mean), then holding on
-  // (keep_).
-  double chance(std::size_t c, const std::array<Prediction, kOutputs>& p) const;
-  double keep(std::size_t c) const { return keep_.empty() ? 1.0 : keep_[c]; }
-  // The forecast of combination `c` whose outputs the model predicts `p`.
-  Forecast forecast(std::size_t c, const std::array<Prediction, kOutputs>& p) const;
+  static double effort_under(const Prediction& p, double limit, double noise);
+  // The probability that one window's E is under `limit`, prior `k`'s model predicting `p`: each
+  // part the criterion counts under it, the parts independent as the model has them.
+  double e_under(std::size_t k, const Outputs& p, double limit) const;
+  // The chance that combination `c`, whose outputs prior `k`'s model predicts `p`, holds: every
+  // window of its trial under the threshold (as independent windows around its mean), then
+  // holding on (its keep).
+  double chance(std::size_t k, std::size_t c, const Outputs& p) const;
+  double keep(std::size_t k, std::size_t c) const {
+    return components_[k].keep.empty() ? 1.0 : components_[k].keep[c];
+  }
+  // Each prior's weight: its evidence, normalised.
+  std::vector<double> weights() const;
+  // Each prior's predictions of every combination.
+  std::vector<Predictions> predict() const;
+  // Combination `c`'s outputs over the priors by their weights `w`: their mixture's mean and sd.
+  Outputs mixed(const std::vector<double>& w, const std::vector<Predictions>& p,
+                std::size_t c) const;
+  // The chance that combination `c` holds, over the priors by their weights `w`.
+  double chance(const std::vector<double>& w, const std::vector<Predictions>& p,
+                std::size_t c) const;
+  // Tells every prior one window of combination `c`, after it said how likely it found it.
+  void observe(std::size_t c, const WindowOutputs& window);
+  // The forecast of combination `c`: over the priors by their weights `w`.
+  Forecast forecast(const std::vector<double>& w, const std::vector<Predictions>& p,
+                    std::size_t c) const;
   LearnerSetup setup_;
   ModelLearnerParams params_;
   SearchSpace space_;
-  AdditiveModel model_;
-  std::vector<double> keep_;
+  std::vector<Component> components_;
   std::vector<bool> tried_;
   BestSoFar best_;
   std::size_t pending_ = 0;

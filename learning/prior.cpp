@@ -4,9 +4,10 @@
 // leg losses predict for this one (learning/prior_model.h): the scenario under test and its
 // mirror image are never in it. The trials then correct that prediction through the same GP as
 // the bayes learner (learning/model_learner.h), each combination weighed by its data's chance of
-// holding on after its trial (docs/learning.md "Holding on after the trial"). This file: the
-// prior's options, which scenarios it may learn from, its dataset's checks, and its models
-// computed once per run setup.
+// holding on after its trial (docs/learning.md "Holding on after the trial"); with several
+// weights of the losses of another number of legs, one prior for each, averaged by their
+// evidence ("Averaged by their evidence"). This file: the prior's options, which scenarios it may
+// learn from, its dataset's checks, and its models computed once per run setup.
 #include <algorithm>
 #include <filesystem>
 #include <map>
@@ -42,6 +43,9 @@ struct PriorOptions : ModelOptions {
   // What a window of a loss of another number of legs than the one told counts for against one
   // of as many (1: every window alike; docs/learning.md "The quadruped: a small dataset").
   double other_size_weight = 1.0;
+  // Instead of one such weight, several: a prior for each, averaged by their evidence (empty: the
+  // one weight; docs/learning.md "The quadruped: a small dataset").
+  std::vector<double> other_size_weights;
   // Where the GP's scales (noise_deg, intercept_deg, effect_deg, pair_deg) come from: "data"
   // (what the regression misses on the scenarios it learns from, each left out in turn) or
   // "options" (as given); docs/learning.md "The prior's scales from its data".
@@ -57,7 +61,8 @@ struct PriorOptions : ModelOptions {
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE_WITH_DEFAULT(PriorOptions, acquisition, kappa, noise_deg,
                                                 intercept_deg, effect_deg, pair_deg, dataset,
-                                                scenarios, ridge, other_size_weight, scales, keeps)
+                                                scenarios, ridge, other_size_weight,
+                                                other_size_weights, scales, keeps)
 inline constexpr Limits<double> kRidgeLimits{1e-6, 1e6};
 // 0: losses of as many legs alone; above 1 the others count for more.
 inline constexpr Limits<double> kOtherSizeWeightLimits{0.0, 1e6};
@@ -66,6 +71,15 @@ void validate(const PriorOptions& o) {
   validate(static_cast<const ModelOptions&>(o));
   require_in("ridge", o.ridge, kRidgeLimits);
   require_in("other_size_weight", o.other_size_weight, kOtherSizeWeightLimits);
+  for (double w : o.other_size_weights) require_in("other_size_weights", w, kOtherSizeWeightLimits);
+  std::vector<double> sorted = o.other_size_weights;
+  std::sort(sorted.begin(), sorted.end());
+  if (o.other_size_weights.size() == 1 ||
+      std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+    throw OptionError("other_size_weights",
+                      "must list at least two different weights to average over (one weight: "
+                      "other_size_weight)");
+  }
   if (o.scales != "options" && o.scales != "data") {
     throw OptionError("scales", "must be options or data, got '" + o.scales + "'");
   }
@@ -201,6 +215,17 @@ fs::path prior_dataset_path(const PriorOptions& o, robot::RobotKind robot,
 
 nlohmann::json prior_options(const nlohmann::json& asked) {
   nlohmann::json resolved = read_learner_options<PriorOptions>(asked);
+  // The record names the weights the priors used: one, or the list (and a list given empty is
+  // the one weight, as a run recorded before the list existed says).
+  if (resolved.at("other_size_weights").empty()) {
+    resolved.erase("other_size_weights");
+  } else {
+    if (asked.contains("other_size_weight")) {
+      throw OptionError("other_size_weight",
+                        "is unused beside other_size_weights (give one of them)");
+    }
+    resolved.erase("other_size_weight");
+  }
   if (resolved.at("scales") == "data") {
     // The scales come from the data: a scale given beside them would be silently unused, and a
     // record that listed them would say what the model did not use.
@@ -246,11 +271,17 @@ std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::j
   check_dataset(*data.landscapes, data.source, setup.robot, setup.criterion);
   check_period_set(*data.landscapes, data.source, setup.search.period_set);
   const SearchSpace space(setup);
-  PriorModel model = data.computed->get(data, setup, space, o);
-  ModelLearnerParams params = model_learner_params(o);
-  if (model.scales) params.model = *model.scales;
-  return std::make_unique<ModelLearner>(setup, params, std::move(model.mean),
-                                        std::move(model.keep));
+  const ModelLearnerParams params = model_learner_params(o);
+  std::vector<ModelPrior> priors;
+  for (double weight : o.other_size_weights.empty() ? std::vector<double>{o.other_size_weight}
+                                                    : o.other_size_weights) {
+    PriorOptions one = o;
+    one.other_size_weight = weight;
+    PriorModel model = data.computed->get(data, setup, space, one);
+    priors.push_back({model.scales.value_or(params.model), std::move(model.mean),
+                      std::move(model.keep), weight});
+  }
+  return std::make_unique<ModelLearner>(setup, params, std::move(priors));
 }
 
 }  // namespace multicpg::learning

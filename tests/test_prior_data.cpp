@@ -58,7 +58,13 @@ TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
   ASSERT_EQ(a.trace.size(), b.trace.size());
   for (std::size_t i = 0; i < a.trace.size(); ++i) {
     EXPECT_EQ(a.trace[i].periods, b.trace[i].periods) << i;
-    EXPECT_EQ(a.trace[i].details, b.trace[i].details) << i;
+    // Each trial says what the other losses counted for: 0, and 1 (the default) beside a list
+    // that has none.
+    nlohmann::json details = a.trace[i].details;
+    EXPECT_EQ(details.at(learning::kOtherSizeWeightKey), 0.0);
+    EXPECT_EQ(b.trace[i].details.at(learning::kOtherSizeWeightKey), 1.0);
+    details[learning::kOtherSizeWeightKey] = 1.0;
+    EXPECT_EQ(details, b.trace[i].details) << i;
   }
   // R1+R2 (nothing holds there) is in the default prior's mean, so it forecasts otherwise.
   const ReplayRun every = replay(data_, {kL2}, choice("prior"), 7);
@@ -66,6 +72,91 @@ TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
   LearnerChoice negative = choice("prior");
   negative.options["other_size_weight"] = -1.0;
   EXPECT_THROW(learning::resolve_learner(negative), OptionError);
+}
+
+// Several weights (docs/learning.md "The quadruped: a small dataset"): a prior for each, averaged
+// by how likely each found the windows seen. Where the losses of another number of legs mislead,
+// the trials turn to the prior without them, and the other way round; priors alike average to
+// the one.
+TEST_F(Dataset, APriorOfSeveralWeightsTrustsTheOneTheWindowsBearOut) {
+  LearnerChoice both = choice("prior");
+  both.options["other_size_weights"] = {1.0, 0.0};
+  const nlohmann::json resolved = learning::resolve_learner(both).options;
+  EXPECT_FALSE(resolved.contains("other_size_weight")) << resolved;
+  EXPECT_EQ(resolved.at("other_size_weights"), nlohmann::json({1.0, 0.0}));
+  EXPECT_FALSE(learning::resolve_learner(choice("prior")).options.contains("other_size_weights"));
+  // L2 told, R2 never seen: R1+R2 (nothing holds there, every window at about 100 deg) misleads
+  // the prior that counts it.
+  const ReplayRun misled = replay(data_, {kL2}, both, 7);
+  ASSERT_FALSE(misled.trace.empty());
+  for (const learning::TrialRecord& t : misled.trace) {
+    EXPECT_LT(t.details.at(learning::kOtherSizeWeightKey).get<double>(), 0.5) << t.trial;
+  }
+  // R1+R2 walking as every one-leg loss does, and R1 and L1 (the one-leg losses it may see)
+  // turned by 30 deg: now the losses of as many legs mislead.
+  LandscapeDataset turned = data_;
+  for (ScenarioLandscape& s : turned.scenarios) {
+    if (s.failed == std::vector<std::size_t>{0, 1}) s = synthetic_scenario({0, 1}, false);
+    if (s.failed.size() != 1 || s.failed.front() == kL2 || s.failed.front() == kR2) continue;
+    for (learning::LandscapePoint& p : s.points) {
+      p.worst_deg = 0.0;
+      for (body::WindowMeasure& w : p.windows) {
+        w.yaw_deg += 30.0;
+        p.worst_deg = std::max(p.worst_deg, turned.criterion().error(w));
+      }
+      p.holds = p.worst_deg < learning::kDefaultThresholdDeg;
+    }
+  }
+  learning::write_landscape_dataset(turned, fs::path(dir_) / "turned");
+  both.options["dataset"] = dir_ + "/turned";
+  const ReplayRun other = replay(data_, {kL2}, both, 7);
+  ASSERT_FALSE(other.trace.empty());
+  for (const learning::TrialRecord& t : other.trace) {
+    EXPECT_GT(t.details.at(learning::kOtherSizeWeightKey).get<double>(), 0.5) << t.trial;
+  }
+  // Two priors alike: the one prior's choices and chances.
+  learning::LearnerSetup setup;
+  setup.robot = robot::RobotKind::quadruped;
+  setup.start.assign(4, learning::kStartPeriod);
+  setup.told = learning::ToldFault::legs({kL2});
+  setup.criterion = data_.criterion();
+  setup.search = search(10);
+  const learning::ModelLearnerParams params = learning::model_learner_params({});
+  learning::ModelLearner one(setup, params);
+  learning::ModelLearner two(setup, params,
+                             {{params.model, {}, {}, {}}, {params.model, {}, {}, {}}});
+  const ScenarioLandscape& truth = *data_.find({kL2});
+  while (true) {
+    const std::optional<Periods> a = one.propose();
+    ASSERT_EQ(a, two.propose());
+    if (!a) break;
+    learning::Measurement m;
+    m.windows = truth.points[*truth.find(*a)].windows;
+    for (const body::WindowMeasure& w : m.windows) {
+      m.deviation_deg = std::max(m.deviation_deg, setup.criterion.error(w));
+    }
+    const learning::TrialRecord ta = one.observe(m);
+    const learning::TrialRecord tb = two.observe(m);
+    EXPECT_EQ(ta.details.at(learning::kPredictedHoldKey),
+              tb.details.at(learning::kPredictedHoldKey));
+    EXPECT_NEAR(ta.details.at(learning::kPredictedYawSdKey).get<double>(),
+                tb.details.at(learning::kPredictedYawSdKey).get<double>(), 1e-9);
+    if (one.stop() != StopReason::running) break;
+  }
+  EXPECT_EQ(one.answer().periods, two.answer().periods);
+  // Bad lists: one weight (that is other_size_weight), a weight twice, one out of range, one not
+  // a number; both keys.
+  for (const nlohmann::json& bad :
+       {nlohmann::json({0.5}), nlohmann::json({1.0, 1.0}), nlohmann::json({1.0, -1.0}),
+        nlohmann::json::array({1.0, "a"})}) {
+    LearnerChoice c = choice("prior");
+    c.options["other_size_weights"] = bad;
+    EXPECT_THROW(learning::resolve_learner(c), OptionError) << bad;
+  }
+  LearnerChoice twice = choice("prior");
+  twice.options["other_size_weights"] = {1.0, 0.1};
+  twice.options["other_size_weight"] = 1.0;
+  EXPECT_THROW(learning::resolve_learner(twice), OptionError);
 }
 
 // With scales = "data" the prior's GP scales come from what its regression misses on the

@@ -115,6 +115,26 @@ def test_the_trial_a_learner_is_told_of_sets_the_chance_its_model_gives():
         multicpg.Learner("prior", failed="R1", windows=start, hold_windows=0)
 
 
+def test_a_prior_of_several_weights_says_how_far_the_trials_find_the_other_losses_carry():
+    # docs/learning.md "Averaged by their evidence": each trial records the priors' weight of
+    # the losses of another number of legs, averaged by how well each foretold the windows.
+    start = [(20.0, 6.0)] * 3
+    agent = multicpg.Learner("prior", options={"other_size_weights": [1, 0.3, 0.1, 0.03, 0]},
+                             robot="quadruped", failed="R1", steering="off", windows=start)
+    weights = []
+    while len(weights) < 3 and agent.ask() is not None:
+        weights.append(agent.tell(windows=[(15.0, 5.0)] * 3)["other_size_weight"])
+    assert len(weights) == 3
+    assert all(0.0 <= w <= 1.0 for w in weights)
+    assert len(set(weights)) > 1  # each trial's windows move the average
+    one = multicpg.Learner("prior", robot="quadruped", failed="R1", steering="off", windows=start)
+    one.ask()
+    assert one.tell(windows=[(15.0, 5.0)] * 3)["other_size_weight"] == 1.0
+    with pytest.raises(ValueError, match="other_size_weight"):
+        multicpg.Learner("prior", options={"other_size_weights": [1, 0], "other_size_weight": 1},
+                         robot="quadruped", failed="R1", steering="off", windows=start)
+
+
 def test_window_error_judges_a_window_as_the_learner_and_each_mode_do():
     # With the reflex its effort counts, read so that the most it may ask is the threshold.
     window = {"yaw_deg": -2.0, "path_deg": 3.0, "steering_effort": STEERING_MAX_EFFORT / 2}
