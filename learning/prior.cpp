@@ -126,6 +126,18 @@ std::vector<const ScenarioLandscape*> prior_scenarios(
   if (out.empty()) {
     throw BadInput("the prior's dataset has no scenario other than the one under test");
   }
+  // A weight of 0 learns from the losses of as many legs alone: there must be one.
+  const std::vector<double>& weights = o.other_size_weights;
+  const bool zero = weights.empty()
+                        ? o.other_size_weight == 0.0
+                        : std::find(weights.begin(), weights.end(), 0.0) != weights.end();
+  if (told.told() && zero && std::none_of(out.begin(), out.end(), [&](const ScenarioLandscape* s) {
+        return s->failed.size() == lost.size();
+      })) {
+    throw BadInput("the prior's dataset has no loss of " + std::to_string(lost.size()) +
+                   " legs it may learn from besides the one under test, so a weight of 0 for the "
+                   "others (other_size_weight or other_size_weights) leaves it nothing");
+  }
   return out;
 }
 
@@ -273,8 +285,13 @@ std::unique_ptr<Learner> make_prior(const LearnerSetup& setup, const nlohmann::j
   const SearchSpace space(setup);
   const ModelLearnerParams params = model_learner_params(o);
   std::vector<ModelPrior> priors;
-  for (double weight : o.other_size_weights.empty() ? std::vector<double>{o.other_size_weight}
-                                                    : o.other_size_weights) {
+  // Told nothing, every loss counts alike (learning/prior_model.h): one prior, of weight 1.
+  std::vector<double> weights{1.0};
+  if (setup.told.told()) {
+    weights = o.other_size_weights.empty() ? std::vector<double>{o.other_size_weight}
+                                           : o.other_size_weights;
+  }
+  for (double weight : weights) {
     PriorOptions one = o;
     one.other_size_weight = weight;
     PriorModel model = data.computed->get(data, setup, space, one);

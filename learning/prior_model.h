@@ -20,7 +20,8 @@ namespace multicpg::learning {
 // How a prior learns from its scenarios, besides which they are.
 struct PriorFit {
   double ridge = 1.0;  // weight decay of the regression, in windows
-  // What a window of a loss of another number of legs than the one told counts for.
+  // What a window of a loss of another number of legs than the one told counts for (told
+  // nothing, every loss is another's: learning/prior.cpp fits it at 1 then).
   double other_size_weight = 1.0;
   bool scales = false;  // estimate the GP's scales from the data
   bool keeps = false;   // learn each combination's chance of holding on after its trial

@@ -72,6 +72,37 @@ TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
   LearnerChoice negative = choice("prior");
   negative.options["other_size_weight"] = -1.0;
   EXPECT_THROW(learning::resolve_learner(negative), OptionError);
+  // R1+R2 is the only loss of two legs: at 0 nothing is left to learn from, refused before a run.
+  for (const nlohmann::json& zero : {nlohmann::json{{"other_size_weight", 0.0}},
+                                     nlohmann::json{{"other_size_weights", {1.0, 0.0}}}}) {
+    LearnerChoice c = choice("prior");
+    c.options.update(zero);
+    EXPECT_THROW(learning::check_learner(learning::resolve_learner(c), robot::RobotKind::quadruped,
+                                         learning::ToldFault::legs({0, 1}),
+                                         learning::kPeriodsAloneCriterion),
+                 BadInput)
+        << zero;
+  }
+  // Told nothing, it knows no number of lost legs to weigh the others against: the weight
+  // changes nothing.
+  learning::LearnerSetup setup;
+  setup.robot = robot::RobotKind::quadruped;
+  setup.start.assign(4, learning::kStartPeriod);
+  setup.criterion = learning::kPeriodsAloneCriterion;
+  setup.search = search(60);
+  const auto first = [&](const LearnerChoice& c) {
+    const LearnerChoice resolved = learning::resolve_learner(c);
+    return learning::make_learner(resolved, setup,
+                                  learning::learner_data(resolved, setup.robot, setup.criterion))
+        ->best_forecasts(5);
+  };
+  const std::vector<learning::Forecast> plain = first(choice("prior"));
+  const std::vector<learning::Forecast> zero = first(alone);
+  ASSERT_EQ(plain.size(), zero.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(plain[i].periods, zero[i].periods) << i;
+    EXPECT_EQ(plain[i].hold, zero[i].hold) << i;
+  }
 }
 
 // Several weights (docs/learning.md "The quadruped: a small dataset"): a prior for each, averaged
