@@ -92,7 +92,7 @@ class ModelLearner final : public Learner {
                std::vector<std::vector<double>> prior_mean = {}, std::vector<double> keep = {});
   // Several priors, averaged (Bayesian model averaging, equal odds before the first window): each
   // weighed by its evidence, the probability its model gave the windows seen so far, each window
-  // before it was told (docs/learning.md "The quadruped: a small dataset"). `params.model` is
+  // before it was told (docs/learning.md "Averaged by their evidence"). `params.model` is
   // unused: each prior has its scales. Throws std::invalid_argument without a prior.
   ModelLearner(const LearnerSetup& setup, const ModelLearnerParams& params,
                std::vector<ModelPrior> priors);

@@ -44,7 +44,7 @@ struct PriorOptions : ModelOptions {
   // of as many (1: every window alike; docs/learning.md "The quadruped: a small dataset").
   double other_size_weight = 1.0;
   // Instead of one such weight, several: a prior for each, averaged by their evidence (empty: the
-  // one weight; docs/learning.md "The quadruped: a small dataset").
+  // one weight; docs/learning.md "Averaged by their evidence").
   std::vector<double> other_size_weights;
   // Where the GP's scales (noise_deg, intercept_deg, effect_deg, pair_deg) come from: "data"
   // (what the regression misses on the scenarios it learns from, each left out in turn) or
