@@ -19,7 +19,9 @@ robot file (`FILE.toml`, its legs read from the file) in a tunnel scaled to it (
 `--scenarios` takes leg sets and faults ("R1+R3", "R1.TC:locked") or the groups `leg-losses`
 (every loss of one leg up to half the legs, at most three: the hexapod's 41, the quadruped's 10,
 the octopod's 92) and `faults` (the 16 below, the hexapod's legs); `--seeds N` runs seeds 1..N
-(default 10).
+(default 10). `--learner-option LEARNER.KEY=VALUE` (repeatable, as `learner-benchmark` takes it)
+gives that learner's runs `--learner-option KEY=VALUE`. The robot and the learner options are
+recorded in OUT/check.json; a resume with others is refused (exit 2).
 """
 
 import argparse
@@ -71,7 +73,7 @@ SEEDS = 10
 WITHIN = 10  # trials: the bound docs/learning.md "The default run in the tunnel" sets a first episode
 
 
-def run(exe, out, scenario, learner, seed, robot):
+def run(exe, out, scenario, learner, seed, robot, options):
     path = out / f"{scenario}_{learner}_{seed}.json"
     if path.exists():
         return
@@ -80,8 +82,9 @@ def run(exe, out, scenario, learner, seed, robot):
     # built-in robot the paper's.
     body = (["--robot", robot] + ([] if robot in ROBOT_LEGS else ["--scale-tunnel"])
             if robot else [])
+    given = [a for o in options for a in ("--learner-option", o)]
     result = subprocess.run([exe, "tunnel", *body, *fault, "--learn", "--learner", learner,
-                             "--seed", str(seed), "--json"], capture_output=True, text=True)
+                             *given, "--seed", str(seed), "--json"], capture_output=True, text=True)
     if result.returncode != 0:
         sys.exit(f"tunnel_check: {scenario} {learner} {seed}: {result.stderr.strip()}")
     tmp = path.with_suffix(".tmp")
@@ -127,6 +130,9 @@ def main():
     parser.add_argument("--scenarios", default="leg-losses,faults",
                         help="comma-separated leg sets and faults, or the groups "
                              "leg-losses and faults")
+    parser.add_argument("--learner-option", action="append", default=[],
+                        metavar="LEARNER.KEY=VALUE",
+                        help="an option of one learner's runs (repeatable)")
     args = parser.parse_args()
     if args.seeds < 1:
         parser.error(f"--seeds must be at least 1, got {args.seeds}")
@@ -144,11 +150,30 @@ def main():
             parser.error(f"unknown scenario '{s}' (leg sets of {', '.join(legs)} such as "
                          f"{legs[0]}+{legs[-1]}, faults such as R1.TC:locked, or the groups "
                          "leg-losses and faults)")
+    options = {l: [] for l in learners}
+    for given in args.learner_option:
+        name, dot, rest = given.partition(".")
+        if not dot or "=" not in rest or not rest.split("=", 1)[0]:
+            parser.error(f"--learner-option must be LEARNER.KEY=VALUE, got '{given}'")
+        if name not in learners:
+            parser.error(f"--learner-option '{given}' names '{name}', which is not among "
+                         f"--learners ({', '.join(learners)})")
+        options[name].append(rest)
     out = pathlib.Path(args.out)
     runs_dir = out / "runs"
     runs_dir.mkdir(parents=True, exist_ok=True)
+    # What decides a run besides its scenario, learner and seed: a resume must keep it.
+    check = {"robot": args.robot, "learner_options": {l: o for l, o in options.items() if o}}
+    record = out / "check.json"
+    if record.exists():
+        kept = json.loads(record.read_text())
+        if kept != check:
+            parser.error(f"{record} records {json.dumps(kept)}; these runs would be "
+                         f"{json.dumps(check)} (another --out, or the same options)")
+    else:
+        record.write_text(json.dumps(check, indent=1) + "\n")
     with ThreadPoolExecutor(args.jobs) as pool:
-        for f in [pool.submit(run, args.multicpg, runs_dir, s, l, k, args.robot)
+        for f in [pool.submit(run, args.multicpg, runs_dir, s, l, k, args.robot, options[l])
                   for s in scenarios for l in learners for k in range(1, args.seeds + 1)]:
             f.result()
 
