@@ -105,7 +105,7 @@ TEST_F(Dataset, APriorWeighsLossesOfAnotherNumberOfLegsAsAsked) {
   }
 }
 
-// Several weights (docs/learning.md "The quadruped: a small dataset"): a prior for each, averaged
+// Several weights (docs/learning.md "Averaged by their evidence"): a prior for each, averaged
 // by how likely each found the windows seen. Where the losses of another number of legs mislead,
 // the trials turn to the prior without them, and the other way round; priors alike average to
 // the one.
