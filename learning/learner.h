@@ -19,6 +19,7 @@
 // Every command, experiment file, the Python API and the benchmark take it by its name.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -48,10 +49,13 @@ class ToldFault {
   ToldFault() = default;
   static ToldFault nothing() { return {}; }
   // Told that `legs` (morphology indices) failed.
-  static ToldFault legs(std::vector<std::size_t> legs) { return ToldFault(std::move(legs)); }
+  static ToldFault legs(std::vector<std::size_t> legs) {
+    std::sort(legs.begin(), legs.end());
+    return ToldFault(std::move(legs));
+  }
 
   bool told() const { return told_; }
-  // The legs it is told failed, which it never picks; none when told nothing.
+  // The legs it is told failed, in leg order, which it never picks; none when told nothing.
   const std::vector<std::size_t>& failed() const { return failed_; }
   bool operator==(const ToldFault&) const = default;
 

@@ -94,8 +94,7 @@ std::vector<const ScenarioLandscape*> prior_scenarios(
     const LandscapeDataset& d, const PriorOptions& o, const ToldFault& told,
     const std::vector<std::vector<std::size_t>>& withheld) {
   const robot::Morphology& morph = robot::morphology(d.robot);
-  std::vector<std::size_t> lost = told.failed();
-  std::sort(lost.begin(), lost.end());
+  const std::vector<std::size_t>& lost = told.failed();
   std::vector<std::vector<std::size_t>> unseen;
   if (told.told()) unseen = {lost, robot::mirror(morph, lost)};
   for (const std::vector<std::size_t>& legs : withheld) {
@@ -180,8 +179,7 @@ using PriorKey = std::tuple<bool, std::vector<std::size_t>, std::vector<std::vec
                             double, std::string, bool>;
 
 PriorKey prior_key(const LearnerData& data, const LearnerSetup& setup, const PriorOptions& o) {
-  std::vector<std::size_t> lost = setup.told.failed();
-  std::sort(lost.begin(), lost.end());
+  const std::vector<std::size_t>& lost = setup.told.failed();
   const Criterion& c = setup.criterion;
   return {setup.told.told(),          lost,     data.withheld,   o.scenarios,  o.ridge,
           o.other_size_weight,        c.path,   c.threshold_deg, c.max_effort, c.trial_windows,

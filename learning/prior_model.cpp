@@ -222,8 +222,7 @@ class Regression {
 // shares (each leg's period), no leg lost.
 std::vector<std::vector<double>> prior_mean(const Regression& r, const LearnerSetup& setup,
                                             const SearchSpace& space) {
-  std::vector<std::size_t> lost = setup.told.failed();
-  std::sort(lost.begin(), lost.end());
+  const std::vector<std::size_t>& lost = setup.told.failed();
   const Eigen::MatrixXd beta = r.solve();
   std::vector<std::vector<double>> out(kOutputs, std::vector<double>(space.size()));
   for (std::size_t c = 0; c < space.size(); ++c) {
@@ -244,8 +243,7 @@ inline constexpr double kKeepFloor = 0.01;
 // [kKeepFloor, 1].
 std::vector<double> keep_chances(const Regression& r, const LearnerSetup& setup,
                                  const SearchSpace& space) {
-  std::vector<std::size_t> lost = setup.told.failed();
-  std::sort(lost.begin(), lost.end());
+  const std::vector<std::size_t>& lost = setup.told.failed();
   const Eigen::MatrixXd beta = r.solve_keep();
   std::vector<double> out(space.size());
   for (std::size_t c = 0; c < space.size(); ++c) {
